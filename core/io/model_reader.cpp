@@ -1,0 +1,44 @@
+#include "io/model_reader.h"
+
+#include "common/error.h"
+#include "io/gocad_reader.h"
+#include "io/surface_mesh_reader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace stratamesh {
+
+namespace {
+
+std::string lowerExtension(const std::string &path)
+{
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+} // namespace
+
+bool isReadableModelFile(const std::string &path)
+{
+    const std::string ext = lowerExtension(path);
+    return ext == ".ml" || ext == ".ts" || ext == ".obj" || ext == ".off";
+}
+
+Model readModel(const std::string &path)
+{
+    const std::string ext = lowerExtension(path);
+    if (!isReadableModelFile(path))
+        throw FileError(path, 0, "unknown model file extension '" + ext +
+                                     "' (expected .ml, .ts, .obj or .off)");
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw FileError(path, 0, "cannot open the file (missing or not a regular file)");
+    if (ext == ".ml" || ext == ".ts")
+        return readGocadFile(path);
+    return readSurfaceMesh(path);
+}
+
+} // namespace stratamesh
