@@ -1,0 +1,63 @@
+// Validity of a B-Rep model (thesis §3.2: "elements must intersect only along their boundaries and
+// elements of the same dimension must have the same geometry on these boundaries"; the input
+// requirement of chapter 4 is a valid model with conformal surface meshes). The checks follow the
+// spirit of RINGMesh's geomodel_validity (formats.md §3.4) but are exact: vertices are merged by
+// exact position and intersections use CGAL's exact predicates, no tolerance anywhere.
+#pragma once
+
+#include "common/progress.h"
+#include "model/model.h"
+
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace stratamesh {
+
+// Check names, as they appear in ValidityProblem::check.
+namespace validity_check {
+// A surface border edge that touches no other surface (nor the same surface elsewhere) on a
+// surface that does not lie inside one region (listed with both signs by one region).
+inline constexpr const char *notSealed = "not_sealed";
+// A local edge with more than two triangles of one surface around it.
+inline constexpr const char *nonManifoldEdge = "non_manifold_edge";
+// A triangle with a repeated vertex (id or position) or zero area (exactly collinear corners).
+inline constexpr const char *degenerateTriangle = "degenerate_triangle";
+// Two triangles on the same three points, in one surface or in two.
+inline constexpr const char *duplicateTriangle = "duplicate_triangle";
+// Two triangles of one surface running their common edge the same way.
+inline constexpr const char *inconsistentOrientation = "inconsistent_orientation";
+// Two triangles meeting elsewhere than along the vertices and edge they share.
+inline constexpr const char *surfaceIntersection = "surface_intersection";
+// A region boundary that is not closed or whose sides disagree with the surface normals.
+inline constexpr const char *regionBoundary = "region_boundary";
+} // namespace validity_check
+
+struct ValidityProblem {
+    std::string check;                 // one of validity_check::*
+    std::vector<std::string> entities; // names of the surfaces/lines/regions involved
+    Vec3 position = Vec3::Zero();      // where to look (z-up model coordinates)
+    std::string message;
+};
+
+struct ValidityReport {
+    bool valid = true;
+    // At most kMaxListedPerCheck problems of each check are listed ...
+    std::vector<ValidityProblem> problems;
+    // ... but all are counted here (only checks that found something have an entry).
+    std::map<std::string, std::size_t> counts;
+
+    std::size_t count(const std::string &check) const
+    {
+        auto it = counts.find(check);
+        return it == counts.end() ? 0 : it->second;
+    }
+    static constexpr std::size_t kMaxListedPerCheck = 100;
+};
+
+// Runs every check. Works on a model with or without topology (recovered on a copy if needed).
+// Throws Cancelled when progress is cancelled, InputError when topology cannot be recovered.
+ValidityReport checkValidity(const Model &model, Progress &progress = Progress::none());
+
+} // namespace stratamesh

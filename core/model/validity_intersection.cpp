@@ -1,0 +1,164 @@
+// surface_intersection: triangles may meet only along the vertices and edge they share (thesis
+// §3.2). Candidate pairs come from CGAL's box intersection; each pair is decided with exact
+// predicates on the stored doubles. With exact vertex merging, two triangles share a point only
+// through a shared global vertex, which gives the three cases below.
+#include "model/validity_checks.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/intersections.h>
+
+#include <algorithm>
+
+namespace stratamesh::validity_detail {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Segment = Kernel::Segment_3;
+using Tri = Kernel::Triangle_3;
+using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
+
+struct Face {
+    std::array<int, 3> v; // global vertex ids
+    int surface;
+    int triangle;
+};
+
+Point toPoint(const Vec3 &p) { return {p.x(), p.y(), p.z()}; }
+Vec3 toVec(const Point &p) { return {p.x(), p.y(), p.z()}; }
+
+// A point of an intersection result, for the report only (not used in any decision).
+struct Representative : boost::static_visitor<Vec3> {
+    Vec3 operator()(const Point &p) const { return toVec(p); }
+    Vec3 operator()(const Segment &s) const { return toVec(CGAL::midpoint(s.source(), s.target())); }
+    Vec3 operator()(const Tri &t) const { return toVec(CGAL::centroid(t)); }
+    Vec3 operator()(const std::vector<Point> &ps) const
+    {
+        Vec3 c = Vec3::Zero();
+        for (const Point &p : ps)
+            c += toVec(p);
+        return ps.empty() ? c : Vec3(c / static_cast<double>(ps.size()));
+    }
+};
+
+template <class A, class B>
+std::optional<Vec3> intersectionPoint(const A &a, const B &b)
+{
+    const auto result = CGAL::intersection(a, b);
+    if (!result)
+        return std::nullopt;
+    return boost::apply_visitor(Representative(), *result);
+}
+
+class PairTester {
+public:
+    explicit PairTester(const Model &model) : m_model(model) {}
+
+    // Where the two faces meet outside what they share, or nothing when they do not.
+    std::optional<Vec3> test(const Face &f, const Face &g, bool wantPosition) const
+    {
+        int sharedF[3], sharedG[3], n = 0;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                if (f.v[i] == g.v[j]) {
+                    sharedF[n] = i;
+                    sharedG[n] = j;
+                    ++n;
+                }
+        if (n == 3)
+            return std::nullopt; // a duplicate triangle, reported by duplicate_triangle
+        const Tri tf = triangle(f), tg = triangle(g);
+        if (n == 0) {
+            if (!CGAL::do_intersect(tf, tg))
+                return std::nullopt;
+            return wantPosition ? intersectionPoint(tf, tg).value_or(centre(f, g)) : Vec3::Zero();
+        }
+        if (n == 1) {
+            // Sharing vertex p, T1 ∩ T2 ≠ {p} exactly when the edge of one opposite p meets the
+            // other: along any direction leaving p inside both, the nearer opposite edge is reached
+            // inside the other triangle (convexity), coplanar or not.
+            const Segment sf(point(f.v[(sharedF[0] + 1) % 3]), point(f.v[(sharedF[0] + 2) % 3]));
+            const Segment sg(point(g.v[(sharedG[0] + 1) % 3]), point(g.v[(sharedG[0] + 2) % 3]));
+            if (CGAL::do_intersect(sf, tg))
+                return wantPosition ? intersectionPoint(sf, tg).value_or(centre(f, g)) : Vec3::Zero();
+            if (CGAL::do_intersect(sg, tf))
+                return wantPosition ? intersectionPoint(sg, tf).value_or(centre(f, g)) : Vec3::Zero();
+            return std::nullopt;
+        }
+        // Sharing edge uv: if the opposite corners a, b are off each other's plane the triangles
+        // meet along uv only; coplanar, they overlap when a and b are on the same side of uv.
+        const int a = f.v[3 - sharedF[0] - sharedF[1]];
+        const int b = g.v[3 - sharedG[0] - sharedG[1]];
+        const Point pu = point(f.v[sharedF[0]]), pv = point(f.v[sharedF[1]]), pa = point(a), pb = point(b);
+        if (CGAL::orientation(pu, pv, pa, pb) != CGAL::COPLANAR)
+            return std::nullopt;
+        if (CGAL::coplanar_orientation(pu, pv, pa, pb) != CGAL::POSITIVE)
+            return std::nullopt;
+        return centre(f, g);
+    }
+
+    Tri triangle(const Face &f) const { return {point(f.v[0]), point(f.v[1]), point(f.v[2])}; }
+
+private:
+    Point point(int v) const { return toPoint(m_model.vertices[v]); }
+    Vec3 centre(const Face &f, const Face &g) const
+    {
+        Vec3 c = Vec3::Zero();
+        for (int i = 0; i < 3; ++i)
+            c += m_model.vertices[f.v[i]] + m_model.vertices[g.v[i]];
+        return c / 6.0;
+    }
+
+    const Model &m_model;
+};
+
+} // namespace
+
+void checkIntersections(const CheckInput &in, ProblemSink &sink, Progress &progress)
+{
+    const Model &model = in.model;
+    std::vector<Face> faces;
+    faces.reserve(model.triangleCount());
+    for (std::size_t si = 0; si < model.surfaces.size(); ++si) {
+        const std::vector<int> &g = model.surfaceVertexToGlobal[si];
+        const auto &tris = model.surfaces[si].triangles;
+        for (std::size_t ti = 0; ti < tris.size(); ++ti) {
+            const Face f{{g[tris[ti][0]], g[tris[ti][1]], g[tris[ti][2]]}, static_cast<int>(si), static_cast<int>(ti)};
+            if (f.v[0] == f.v[1] || f.v[1] == f.v[2] || f.v[0] == f.v[2])
+                continue; // degenerate: reported by degenerate_triangle, meaningless here
+            if (CGAL::collinear(toPoint(model.vertices[f.v[0]]), toPoint(model.vertices[f.v[1]]),
+                                toPoint(model.vertices[f.v[2]])))
+                continue;
+            faces.push_back(f);
+        }
+    }
+    std::vector<Box> boxes;
+    boxes.reserve(faces.size());
+    const PairTester tester(model);
+    for (std::size_t i = 0; i < faces.size(); ++i)
+        boxes.emplace_back(tester.triangle(faces[i]).bbox(), static_cast<int>(i));
+
+    std::size_t pairs = 0;
+    auto callback = [&](const Box &x, const Box &y) {
+        if (++pairs % 65536 == 0)
+            progress.tick(0.2 + 0.7 * std::min(1.0, static_cast<double>(pairs) / (20.0 * faces.size() + 1)),
+                          "validity: intersections");
+        const Face &f = faces[x.info()], &g = faces[y.info()];
+        const bool list = !sink.full(validity_check::surfaceIntersection);
+        const std::optional<Vec3> where = tester.test(f, g, list);
+        if (!where)
+            return;
+        const Surface &sf = model.surfaces[f.surface], &sg = model.surfaces[g.surface];
+        std::vector<std::string> names{sf.name};
+        if (f.surface != g.surface)
+            names.push_back(sg.name);
+        sink.add(validity_check::surfaceIntersection, names, *where,
+                 "triangle " + std::to_string(f.triangle) + " of " + sf.name + " and triangle "
+                     + std::to_string(g.triangle) + " of " + sg.name + " intersect near " + pointText(*where));
+    };
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), callback);
+}
+
+} // namespace stratamesh::validity_detail
