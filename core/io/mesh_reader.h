@@ -1,0 +1,22 @@
+// Reading the exchange meshes by extension: Gocad TSolid (.so), Gmsh (.msh), VTK (.vtu, .vtk,
+// .vtp). Surface-only files give a mesh without cells; readMeshAsModel() turns any of them into a
+// surface model (for readModel()).
+#pragma once
+
+#include "mesh/volume_mesh.h"
+#include "model/model.h"
+
+#include <string>
+
+namespace stratamesh {
+
+// True for .so, .msh, .vtu, .vtk, .vtp (case-insensitive).
+bool isVolumeMeshFile(const std::string &path);
+
+// Throws FileError for an unknown extension or unreadable content (file, line and cause).
+VolumeMesh readVolumeMesh(const std::string &path);
+
+// The surfaces and regions of such a file as a Model (modelFromMesh): no topology, cells dropped.
+Model readMeshAsModel(const std::string &path);
+
+} // namespace stratamesh

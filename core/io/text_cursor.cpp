@@ -1,0 +1,84 @@
+#include "io/text_cursor.h"
+
+#include "io/number_text.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+
+namespace stratamesh {
+
+TextCursor::TextCursor(std::string path) : m_path(std::move(path))
+{
+    std::FILE *f = std::fopen(m_path.c_str(), "rb");
+    if (!f)
+        throw FileError(m_path, 0, std::string("cannot open: ") + std::strerror(errno));
+    char buffer[1 << 16];
+    std::size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0)
+        m_text.append(buffer, n);
+    const bool failed = std::ferror(f) != 0;
+    std::fclose(f);
+    if (failed)
+        throw FileError(m_path, 0, "cannot read the file");
+}
+
+bool TextCursor::next()
+{
+    if (m_pos >= m_text.size())
+        return false;
+    std::size_t end = m_text.find('\n', m_pos);
+    if (end == std::string::npos)
+        end = m_text.size();
+    m_line = std::string_view(m_text).substr(m_pos, end - m_pos);
+    if (!m_line.empty() && m_line.back() == '\r')
+        m_line.remove_suffix(1);
+    m_pos = end + 1;
+    ++m_lineNumber;
+    return true;
+}
+
+void TextCursor::nextNonBlank(const char *expected)
+{
+    while (next())
+        if (m_line.find_first_not_of(" \t") != std::string_view::npos)
+            return;
+    ++m_lineNumber;
+    fail(std::string("unexpected end of file (expected ") + expected + ")");
+}
+
+std::vector<std::string_view> TextCursor::tokens() const
+{
+    std::vector<std::string_view> out;
+    std::size_t i = 0;
+    while (i < m_line.size()) {
+        while (i < m_line.size() && (m_line[i] == ' ' || m_line[i] == '\t'))
+            ++i;
+        std::size_t j = i;
+        while (j < m_line.size() && m_line[j] != ' ' && m_line[j] != '\t')
+            ++j;
+        if (j > i)
+            out.push_back(m_line.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
+int TextCursor::toInt(std::string_view token, const char *what) const
+{
+    long long v = 0;
+    if (!parseInt(token, v) || v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+        fail(std::string("expected ") + what + ", found \"" + std::string(token) + "\"");
+    return static_cast<int>(v);
+}
+
+double TextCursor::toDouble(std::string_view token, const char *what) const
+{
+    double v = 0;
+    if (!parseDouble(token, v))
+        fail(std::string("expected ") + what + ", found \"" + std::string(token) + "\"");
+    return v;
+}
+
+} // namespace stratamesh
