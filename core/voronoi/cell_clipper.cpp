@@ -1,0 +1,289 @@
+#include "voronoi/cell_clipper.h"
+
+#include "voronoi/rvd_predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace stratamesh::rvd {
+namespace {
+
+constexpr double kUnit = 0x1p-53;
+
+Vec3 absolute(const Vec3 &v) { return v.cwiseAbs(); }
+
+// Power difference |q − pb|² − |q − pa|² and the magnitude bounding its rounding error.
+inline double powerDifference(const Vec3 &q, const Vec3 &pa, const Vec3 &pb, double &magnitude)
+{
+    const Vec3 s = absolute(pa) + absolute(pb);
+    magnitude = s.dot(2.0 * absolute(q) + s);
+    return (pa - pb).dot((q - pa) + (q - pb));
+}
+
+} // namespace
+
+ComputedPoint edgeVertexPoint(const std::vector<Vec3> &points, const std::vector<Vec3> &sites, int a, int b,
+                              int s0, int s1)
+{
+    if (a > b)
+        std::swap(a, b);
+    if (s0 > s1)
+        std::swap(s0, s1);
+    const Vec3 &q0 = points[a], &q1 = points[b];
+    const Vec3 &ps = sites[s0], &pt = sites[s1];
+    double m0 = 0, m1 = 0;
+    const double g0 = powerDifference(q0, ps, pt, m0);
+    const double g1 = powerDifference(q1, ps, pt, m1);
+    const double den = g0 - g1;
+    const Vec3 d = q1 - q0;
+    const double length = d.norm();
+    ComputedPoint r;
+    // g0 and g1 have opposite exact signs, so g0 − g1 has no cancellation.
+    double dt = 1.0;
+    r.t = 0.5;
+    if (den != 0) {
+        r.t = std::clamp(g0 / den, 0.0, 1.0);
+        dt = std::min(1.0, 6.2 * kUnit * (m0 + m1) / std::fabs(den) + 4 * kUnit);
+    }
+    r.position = q0 + r.t * d;
+    const double rounding = 4 * kUnit * (q0.norm() + length);
+    r.error = std::min(1.01 * length * dt, length) + rounding;
+    return r;
+}
+
+ComputedPoint faceVertexPoint(const Vec3 &q0, const Vec3 &q1, const Vec3 &q2, const std::vector<Vec3> &sites,
+                              int s0, int s1, int s2, double &u, double &v)
+{
+    int s[3] = {s0, s1, s2};
+    std::sort(s, s + 3);
+    const Vec3 &pa = sites[s[0]];
+    const Vec3 e1 = q1 - q0, e2 = q2 - q0;
+    double A[2], B[2], C[2], eA[2], eB[2], eC[2];
+    for (int m = 0; m < 2; ++m) {
+        const Vec3 &pm = sites[s[m + 1]];
+        const Vec3 n = pa - pm;
+        double mag = 0;
+        A[m] = powerDifference(q0, pa, pm, mag);
+        eA[m] = 6.2 * kUnit * mag;
+        const Vec3 sn = absolute(pa) + absolute(pm);
+        B[m] = 2 * n.dot(e1);
+        C[m] = 2 * n.dot(e2);
+        eB[m] = 2 * 5.2 * kUnit * sn.dot(absolute(q1) + absolute(q0));
+        eC[m] = 2 * 5.2 * kUnit * sn.dot(absolute(q2) + absolute(q0));
+    }
+    // Products x·y − z·w with first-order error propagation.
+    const auto cross2 = [](double x, double ex, double y, double ey, double z, double ez, double w, double ew,
+                           double &err) {
+        const double r = x * y - z * w;
+        err = std::fabs(x) * ey + ex * std::fabs(y) + ex * ey + std::fabs(z) * ew + ez * std::fabs(w) + ez * ew +
+              3 * kUnit * (std::fabs(x * y) + std::fabs(z * w));
+        return r;
+    };
+    double eD = 0, eNu = 0, eNv = 0;
+    const double D = cross2(B[0], eB[0], C[1], eC[1], B[1], eB[1], C[0], eC[0], eD);
+    const double Nu = cross2(A[1], eA[1], C[0], eC[0], A[0], eA[0], C[1], eC[1], eNu);
+    const double Nv = cross2(B[1], eB[1], A[0], eA[0], B[0], eB[0], A[1], eA[1], eNv);
+    const double diameter = std::max({e1.norm(), e2.norm(), (q2 - q1).norm()});
+    const double rounding = 6 * kUnit * (q0.norm() + e1.norm() + e2.norm());
+    ComputedPoint r;
+    double error = diameter;
+    if (std::fabs(D) > 2 * eD) {
+        u = Nu / D;
+        v = Nv / D;
+        const double du = (eNu + std::fabs(u) * eD) / (std::fabs(D) - eD) + 2 * kUnit * std::fabs(u);
+        const double dv = (eNv + std::fabs(v) * eD) / (std::fabs(D) - eD) + 2 * kUnit * std::fabs(v);
+        error = 1.01 * (e1.norm() * du + e2.norm() * dv);
+    } else {
+        u = v = 1.0 / 3.0;
+    }
+    const Vec3 raw = q0 + u * e1 + v * e2;
+    // The exact point is inside the triangle: clamping can only bring us within its diameter.
+    u = std::max(u, 0.0);
+    v = std::max(v, 0.0);
+    if (u + v > 1) {
+        const double sum = u + v;
+        u /= sum;
+        v /= sum;
+    }
+    r.position = q0 + u * e1 + v * e2;
+    r.error = std::min(error + (r.position - raw).norm(), diameter) + rounding;
+    return r;
+}
+
+CellClipper::CellClipper(const RestrictionDomain &domain, const SiteDelaunay &delaunay)
+    : m_domain(domain), m_delaunay(delaunay)
+{
+    m_polygon.reserve(16);
+    m_next.reserve(16);
+    m_visited.reserve(16);
+}
+
+void CellClipper::wholeTriangle(int t, std::vector<ClipVertex> &polygon) const
+{
+    const Triangle &tri = m_domain.triangles[t];
+    polygon.resize(3);
+    for (int c = 0; c < 3; ++c) {
+        ClipVertex &v = polygon[c];
+        v.position = m_domain.points[tri[c]];
+        v.error = 0;
+        v.u = c == 1 ? 1.0 : 0.0;
+        v.v = c == 2 ? 1.0 : 0.0;
+        v.out = inputEdgeSupport(c);
+    }
+}
+
+int CellClipper::sideOfPolygonVertex(int t, int site, const std::vector<ClipVertex> &polygon, int k, int l) const
+{
+    const std::vector<Vec3> &sites = m_delaunay.sites();
+    const Vec3 &pi = sites[site], &pl = sites[l];
+    const ClipVertex &v = polygon[k];
+    // Filter on the computed position: rounding of the expression plus the position's error.
+    double magnitude = 0;
+    const double value = powerDifference(v.position, pi, pl, magnitude);
+    const double bound = 6.2 * kUnit * magnitude + 2.02 * (pi - pl).norm() * v.error;
+    if (value > bound)
+        return 1;
+    if (value < -bound)
+        return -1;
+
+    const Triangle &tri = m_domain.triangles[t];
+    const std::vector<Vec3> &pts = m_domain.points;
+    const int n = static_cast<int>(polygon.size());
+    const int in = polygon[(k + n - 1) % n].out, out = v.out;
+    if (in < 0 && out < 0)
+        return sideOfInputVertex(pts[tri[inputEdgeOf(out)]], pi, site, pl, l);
+    if (in < 0 || out < 0) {
+        const int e = inputEdgeOf(in < 0 ? in : out);
+        const int j = in < 0 ? out : in;
+        return sideOfEdgeVertex(pts[tri[e]], pts[tri[(e + 1) % 3]], pi, site, sites[j], j, pl, l);
+    }
+    return sideOfFaceVertex(pts[tri[0]], pts[tri[1]], pts[tri[2]], pi, site, sites[in], in, sites[out], out, pl, l);
+}
+
+ClipVertex CellClipper::cutVertex(int t, int site, const ClipVertex &from, const ClipVertex &, int l) const
+{
+    const Triangle &tri = m_domain.triangles[t];
+    const std::vector<Vec3> &pts = m_domain.points;
+    ClipVertex x;
+    if (from.out < 0) {
+        const int e = inputEdgeOf(from.out);
+        const int ca = e, cb = (e + 1) % 3;
+        const ComputedPoint p = edgeVertexPoint(pts, m_delaunay.sites(), tri[ca], tri[cb], site, l);
+        const double tau = tri[ca] < tri[cb] ? p.t : 1.0 - p.t; // from corner ca to corner cb
+        double lambda[3] = {0, 0, 0};
+        lambda[ca] = 1.0 - tau;
+        lambda[cb] = tau;
+        x.position = p.position;
+        x.error = p.error;
+        x.u = lambda[1];
+        x.v = lambda[2];
+    } else {
+        const ComputedPoint p = faceVertexPoint(pts[tri[0]], pts[tri[1]], pts[tri[2]], m_delaunay.sites(), site,
+                                                from.out, l, x.u, x.v);
+        x.position = p.position;
+        x.error = p.error;
+    }
+    return x;
+}
+
+void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon)
+{
+    wholeTriangle(t, polygon);
+    const Vec3 &pi = m_delaunay.site(site);
+    const auto radius = [&] {
+        double r = 0;
+        for (const ClipVertex &v : polygon)
+            r = std::max(r, (v.position - pi).norm() + v.error);
+        return 2.0 * r * (1.0 + 1e-12);
+    };
+    double limit = radius();
+    const int *nb = m_delaunay.neighboursBegin(site);
+    const double *dist = m_delaunay.neighbourDistances(site);
+    const int count = m_delaunay.neighbourCount(site);
+    for (int q = 0; q < count && dist[q] <= limit; ++q) {
+        const int l = nb[q];
+        const int n = static_cast<int>(polygon.size());
+        m_sides.resize(n);
+        int positive = 0;
+        for (int k = 0; k < n; ++k) {
+            m_sides[k] = sideOfPolygonVertex(t, site, polygon, k, l);
+            positive += m_sides[k] > 0;
+        }
+        if (positive == n)
+            continue;
+        if (positive == 0) {
+            polygon.clear();
+            return;
+        }
+        m_next.clear();
+        for (int k = 0; k < n; ++k) {
+            const ClipVertex &a = polygon[k];
+            const ClipVertex &b = polygon[(k + 1) % n];
+            if (m_sides[k] > 0)
+                m_next.push_back(a);
+            if (m_sides[k] != m_sides[(k + 1) % n]) {
+                ClipVertex x = cutVertex(t, site, a, b, l);
+                if (m_sides[k] > 0) {
+                    x.out = l; // leaving the cell: the polygon follows the bisector
+                } else {
+                    x.out = a.out; // entering: back on the support we were cutting
+                }
+                m_next.push_back(x);
+            }
+        }
+        // The vertex kept before a leaving cut now runs along the cut support to it: unchanged.
+        polygon.swap(m_next);
+        limit = radius();
+    }
+}
+
+void CellClipper::clipSegment(int s, int site, SegmentEnd &first, SegmentEnd &second)
+{
+    const std::vector<Vec3> &sites = m_delaunay.sites();
+    const std::vector<Vec3> &pts = m_domain.points;
+    const auto &seg = m_domain.segments[s];
+    const Vec3 &pi = sites[site];
+    const auto side = [&](const SegmentEnd &e, int l) {
+        const Vec3 &pl = sites[l];
+        double magnitude = 0;
+        const double value = powerDifference(e.position, pi, pl, magnitude);
+        const double bound = 6.2 * kUnit * magnitude + 2.02 * (pi - pl).norm() * e.error;
+        if (value > bound)
+            return 1;
+        if (value < -bound)
+            return -1;
+        if (e.site < 0)
+            return sideOfInputVertex(e.t == 0 ? pts[seg[0]] : pts[seg[1]], pi, site, pl, l);
+        return sideOfEdgeVertex(pts[seg[0]], pts[seg[1]], pi, site, sites[e.site], e.site, pl, l);
+    };
+    const auto cut = [&](int l) {
+        const ComputedPoint p = edgeVertexPoint(pts, sites, seg[0], seg[1], site, l);
+        return SegmentEnd{p.position, p.error, seg[0] < seg[1] ? p.t : 1.0 - p.t, l};
+    };
+    const int *nb = m_delaunay.neighboursBegin(site);
+    const double *dist = m_delaunay.neighbourDistances(site);
+    const int count = m_delaunay.neighbourCount(site);
+    double limit = 2.0 * std::max((first.position - pi).norm() + first.error,
+                                  (second.position - pi).norm() + second.error) * (1.0 + 1e-12);
+    for (int q = 0; q < count && dist[q] <= limit; ++q) {
+        const int l = nb[q];
+        const int a = side(first, l), b = side(second, l);
+        if (a < 0)
+            throwInconsistent(s);
+        if (b > 0)
+            continue;
+        second = cut(l);
+        limit = 2.0 * std::max((first.position - pi).norm() + first.error,
+                               (second.position - pi).norm() + second.error) * (1.0 + 1e-12);
+    }
+}
+
+void CellClipper::throwInconsistent(int segment) const
+{
+    throw std::logic_error("restricted Voronoi diagram: inconsistent cells along line segment " +
+                           std::to_string(segment));
+}
+
+} // namespace stratamesh::rvd

@@ -1,0 +1,129 @@
+// Intersection of one input triangle (or line segment) with the Voronoi cells it meets
+// (thesis §1.2.2; Yan et al. 2009, "Isotropic remeshing with fast and exact computation of
+// restricted Voronoi diagram", and Lévy & Bonneel 2013 for the propagation over
+// triangle–site pairs and the security radius).
+//
+// The triangle is clipped by the bisectors of the site's Voronoi neighbours in order of
+// distance, stopping when the next neighbour is farther than twice the farthest polygon vertex
+// (no bisector beyond can cut it). Every side decision goes through rvd_predicates.h on the
+// vertex's symbol; computed positions only serve a filter that carries a proven error bound.
+// Neighbouring cells are reached through the bisectors that bound the clipped polygon, so each
+// triangle–site pair is clipped once.
+#pragma once
+
+#include "voronoi/restriction_domain.h"
+#include "voronoi/site_delaunay.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <vector>
+
+namespace stratamesh::rvd {
+
+// Support of a polygon edge: a site index ≥ 0 (the bisector with that neighbour) or −1 − e
+// for edge e of the input triangle (from corner e to corner (e + 1) % 3).
+inline int inputEdgeSupport(int e) { return -1 - e; }
+inline int inputEdgeOf(int support) { return -1 - support; }
+
+struct ClipVertex {
+    Vec3 position;
+    double error = 0;   // proven bound on |position − exact point|
+    double u = 0, v = 0; // barycentric weights of corners 1 and 2 of the input triangle
+    int out = 0;        // support of the edge from this vertex to the next one
+};
+
+// A piece of a line segment inside one cell: its ends are the segment's endpoints (site −1)
+// or its crossings with bisector(cell, site).
+struct SegmentEnd {
+    Vec3 position;
+    double error = 0;
+    double t = 0;       // parameter along the segment, 0 at its first point, 1 at its second
+    int site = -1;      // other site of the bisector, −1 for an endpoint of the segment
+};
+
+// Exact position data of an RVD vertex computed from its symbol in a canonical order, so that
+// every cell and every triangle sharing the vertex gets bit-identical coordinates.
+struct ComputedPoint {
+    Vec3 position;
+    double error = 0;
+    double t = 0; // edge vertex: parameter from the lower to the higher point index
+};
+ComputedPoint edgeVertexPoint(const std::vector<Vec3> &points, const std::vector<Vec3> &sites, int a,
+                              int b, int s0, int s1);
+// Face vertex on triangle (q0, q1, q2) with sites {s0, s1, s2}; u, v barycentric of q1, q2.
+ComputedPoint faceVertexPoint(const Vec3 &q0, const Vec3 &q1, const Vec3 &q2, const std::vector<Vec3> &sites,
+                              int s0, int s1, int s2, double &u, double &v);
+
+// One per thread: holds scratch buffers.
+class CellClipper {
+public:
+    CellClipper(const RestrictionDomain &domain, const SiteDelaunay &delaunay);
+
+    // Intersection of triangle t with the cell of site; empty when they do not meet.
+    void clipTriangle(int t, int site, std::vector<ClipVertex> &polygon);
+
+    // Calls emit(site, polygon) for every cell meeting triangle t, each once, in a
+    // deterministic order. owners are the exact owners of the triangle's three points.
+    template <class Emit> void forEachTrianglePart(int t, const int owners[3], Emit &&emit)
+    {
+        if (owners[0] == owners[1] && owners[1] == owners[2]) {
+            wholeTriangle(t, m_polygon);
+            emit(owners[0], m_polygon);
+            return;
+        }
+        m_visited.assign(1, owners[0]);
+        for (std::size_t q = 0; q < m_visited.size(); ++q) {
+            const int site = m_visited[q];
+            clipTriangle(t, site, m_polygon);
+            if (m_polygon.empty())
+                continue;
+            for (const ClipVertex &v : m_polygon)
+                if (v.out >= 0 && std::find(m_visited.begin(), m_visited.end(), v.out) == m_visited.end())
+                    m_visited.push_back(v.out);
+            emit(site, m_polygon);
+        }
+    }
+
+    // Calls emit(site, first, second) for the pieces of segment s in line order (from its
+    // first point to its second). owners are the exact owners of its two points.
+    template <class Emit> void forEachSegmentPart(int s, const int owners[2], Emit &&emit)
+    {
+        const auto &seg = m_domain.segments[s];
+        SegmentEnd first{m_domain.points[seg[0]], 0, 0, -1};
+        const SegmentEnd last{m_domain.points[seg[1]], 0, 1, -1};
+        if (owners[0] == owners[1]) {
+            emit(owners[0], first, last);
+            return;
+        }
+        int site = owners[0];
+        for (int step = 0; step <= m_delaunay.siteCount(); ++step) {
+            SegmentEnd second = last;
+            clipSegment(s, site, first, second);
+            emit(site, first, second);
+            if (second.site < 0)
+                return;
+            const int next = second.site;
+            second.site = site; // the same point seen from the next cell
+            first = second;
+            site = next;
+        }
+        throwInconsistent(s);
+    }
+
+private:
+    void wholeTriangle(int t, std::vector<ClipVertex> &polygon) const;
+    // Clips [first, second] of segment s by the cell of site; first must stay.
+    void clipSegment(int s, int site, SegmentEnd &first, SegmentEnd &second);
+    int sideOfPolygonVertex(int t, int site, const std::vector<ClipVertex> &polygon, int k, int l) const;
+    ClipVertex cutVertex(int t, int site, const ClipVertex &from, const ClipVertex &to, int l) const;
+    [[noreturn]] void throwInconsistent(int segment) const;
+
+    const RestrictionDomain &m_domain;
+    const SiteDelaunay &m_delaunay;
+    std::vector<ClipVertex> m_polygon, m_next;
+    std::vector<int> m_visited;
+    std::vector<int> m_sides;
+};
+
+} // namespace stratamesh::rvd

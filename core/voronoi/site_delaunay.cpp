@@ -1,0 +1,294 @@
+#include "voronoi/site_delaunay.h"
+
+#include "common/error.h"
+#include "voronoi/rvd_predicates.h"
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <nanoflann.hpp>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace stratamesh {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
+using Cb = CGAL::Delaunay_triangulation_cell_base_3<K>;
+using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
+using Dt = CGAL::Delaunay_triangulation_3<K, Tds>;
+using CellHandle = Dt::Cell_handle;
+
+K::Point_3 toPoint(const Vec3 &v) { return {v.x(), v.y(), v.z()}; }
+
+// Pairs of Delaunay cells (or hull facets) lying on one sphere (or one plane): their vertices
+// form a cluster whose triangulation is not unique.
+struct DegenerateClusters {
+    std::vector<std::pair<CellHandle, CellHandle>> links;
+
+    // Every pair of sites inside each cluster.
+    void addPairs(const Dt &dt, std::vector<std::pair<int, int>> &pairs) const
+    {
+        if (links.empty())
+            return;
+        std::map<CellHandle, int> id;
+        for (const auto &[a, b] : links) {
+            id.emplace(a, static_cast<int>(id.size()));
+            id.emplace(b, static_cast<int>(id.size()));
+        }
+        std::vector<int> parent(id.size());
+        std::iota(parent.begin(), parent.end(), 0);
+        const auto find = [&](int x) {
+            while (parent[x] != x)
+                x = parent[x] = parent[parent[x]];
+            return x;
+        };
+        for (const auto &[a, b] : links)
+            parent[find(id[a])] = find(id[b]);
+        std::map<int, std::vector<int>> members;
+        for (const auto &[cell, index] : id)
+            for (int v = 0; v <= dt.dimension(); ++v)
+                if (!dt.is_infinite(cell->vertex(v)))
+                    members[find(index)].push_back(cell->vertex(v)->info());
+        for (auto &[root, sites] : members) {
+            std::sort(sites.begin(), sites.end());
+            sites.erase(std::unique(sites.begin(), sites.end()), sites.end());
+            for (std::size_t a = 0; a < sites.size(); ++a)
+                for (std::size_t b = a + 1; b < sites.size(); ++b)
+                    pairs.emplace_back(sites[a], sites[b]);
+        }
+    }
+};
+
+void collectDimension3(const Dt &dt, std::vector<std::pair<int, int>> &pairs, DegenerateClusters &clusters)
+{
+    const K::Side_of_oriented_sphere_3 sideOfSphere = dt.geom_traits().side_of_oriented_sphere_3_object();
+    const K::Orientation_3 orientation = dt.geom_traits().orientation_3_object();
+    for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
+        const CellHandle ch = c;
+        const bool infinite = dt.is_infinite(ch);
+        if (!infinite)
+            for (int a = 0; a < 4; ++a)
+                for (int b = a + 1; b < 4; ++b)
+                    pairs.emplace_back(c->vertex(a)->info(), c->vertex(b)->info());
+        for (int f = 0; f < 4; ++f) {
+            const CellHandle n = c->neighbor(f);
+            if (!(ch < n))
+                continue; // each adjacency once
+            const bool nInfinite = dt.is_infinite(n);
+            const auto opposite = n->vertex(n->index(ch));
+            if (!infinite && !nInfinite) {
+                if (sideOfSphere(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                 c->vertex(3)->point(), opposite->point()) == CGAL::ON_ORIENTED_BOUNDARY)
+                    clusters.links.emplace_back(ch, n);
+            } else if (infinite && nInfinite && !dt.is_infinite(c->vertex(f))) {
+                // Two hull facets sharing an edge: degenerate when their four sites are coplanar.
+                std::vector<K::Point_3> p;
+                for (int v = 0; v < 4; ++v)
+                    if (!dt.is_infinite(c->vertex(v)))
+                        p.push_back(c->vertex(v)->point());
+                if (p.size() == 3 && orientation(p[0], p[1], p[2], opposite->point()) == CGAL::COPLANAR)
+                    clusters.links.emplace_back(ch, n);
+            }
+        }
+    }
+}
+
+void collectDimension2(const Dt &dt, std::vector<std::pair<int, int>> &pairs, DegenerateClusters &clusters)
+{
+    const auto sideOfCircle = dt.geom_traits().coplanar_side_of_bounded_circle_3_object();
+    for (auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f) {
+        const CellHandle c = f->first;
+        for (int a = 0; a < 3; ++a) {
+            pairs.emplace_back(c->vertex(a)->info(), c->vertex((a + 1) % 3)->info());
+            const CellHandle n = c->neighbor(a);
+            if (!(c < n) || dt.is_infinite(n))
+                continue;
+            const auto opposite = n->vertex(n->index(c));
+            if (sideOfCircle(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                             opposite->point()) == CGAL::ON_BOUNDARY)
+                clusters.links.emplace_back(c, n);
+        }
+    }
+}
+
+} // namespace
+
+struct SiteDelaunay::KdTree {
+    struct Cloud {
+        const Vec3 *points = nullptr;
+        std::vector<int> ids; // visible sites
+        std::size_t kdtree_get_point_count() const { return ids.size(); }
+        double kdtree_get_pt(std::size_t i, std::size_t dim) const { return points[ids[i]][static_cast<int>(dim)]; }
+        template <class B> bool kdtree_get_bbox(B &) const { return false; }
+    };
+    using Index = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3>;
+    Cloud cloud;
+    std::unique_ptr<Index> index;
+};
+
+SiteDelaunay::SiteDelaunay() : m_kdOnce(std::make_unique<std::once_flag>()) {}
+SiteDelaunay::~SiteDelaunay() = default;
+SiteDelaunay::SiteDelaunay(SiteDelaunay &&) noexcept = default;
+SiteDelaunay &SiteDelaunay::operator=(SiteDelaunay &&) noexcept = default;
+
+SiteDelaunay::SiteDelaunay(std::vector<Vec3> sites)
+    : m_sites(std::move(sites)), m_kdOnce(std::make_unique<std::once_flag>())
+{
+    const int n = siteCount();
+    for (int i = 0; i < n; ++i)
+        if (!m_sites[i].allFinite())
+            throw InputError("site " + std::to_string(i) + " has a non-finite coordinate");
+
+    // Exact duplicates: the lowest index keeps the point (it wins ties under the perturbation).
+    std::vector<int> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    const auto lexLess = [&](int a, int b) {
+        const Vec3 &p = m_sites[a], &q = m_sites[b];
+        if (p.x() != q.x())
+            return p.x() < q.x();
+        if (p.y() != q.y())
+            return p.y() < q.y();
+        if (p.z() != q.z())
+            return p.z() < q.z();
+        return a < b;
+    };
+    std::sort(order.begin(), order.end(), lexLess);
+    m_hidden.assign(n, 0);
+    std::vector<std::pair<K::Point_3, int>> points;
+    points.reserve(n);
+    for (int k = 0; k < n; ++k) {
+        const int s = order[k];
+        if (k > 0 && m_sites[order[k - 1]] == m_sites[s]) {
+            m_hidden[s] = 1;
+            continue;
+        }
+        points.emplace_back(toPoint(m_sites[s]), s);
+    }
+    if (!points.empty())
+        m_firstVisible = std::min_element(points.begin(), points.end(),
+                                          [](const auto &a, const auto &b) { return a.second < b.second; })->second;
+
+    const Dt dt(points.begin(), points.end());
+    m_dimension = dt.dimension();
+
+    std::vector<std::pair<int, int>> pairs;
+    DegenerateClusters clusters;
+    if (m_dimension == 3) {
+        pairs.reserve(dt.number_of_finite_cells() * 6);
+        collectDimension3(dt, pairs, clusters);
+    } else if (m_dimension == 2) {
+        collectDimension2(dt, pairs, clusters);
+    } else if (m_dimension == 1) {
+        for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
+            pairs.emplace_back(e->first->vertex(e->second)->info(), e->first->vertex(e->third)->info());
+    }
+    clusters.addPairs(dt, pairs);
+
+    // Both directions into a CSR with duplicates, then de-duplicated per site with a stamp.
+    std::vector<int> rawOffsets(n + 1, 0);
+    for (const auto &[a, b] : pairs) {
+        ++rawOffsets[a + 1];
+        ++rawOffsets[b + 1];
+    }
+    std::partial_sum(rawOffsets.begin(), rawOffsets.end(), rawOffsets.begin());
+    std::vector<int> raw(rawOffsets.back());
+    {
+        std::vector<int> fill(rawOffsets.begin(), rawOffsets.end() - 1);
+        for (const auto &[a, b] : pairs) {
+            raw[fill[a]++] = b;
+            raw[fill[b]++] = a;
+        }
+    }
+    std::vector<int> stamp(n, -1);
+    m_offsets.assign(n + 1, 0);
+    m_neighbours.clear();
+    m_neighbours.reserve(raw.size() / 3 + 16);
+    for (int i = 0; i < n; ++i) {
+        for (int k = rawOffsets[i]; k < rawOffsets[i + 1]; ++k) {
+            const int j = raw[k];
+            if (j != i && stamp[j] != i) {
+                stamp[j] = i;
+                m_neighbours.push_back(j);
+            }
+        }
+        m_offsets[i + 1] = static_cast<int>(m_neighbours.size());
+    }
+
+    m_distances.resize(m_neighbours.size());
+    tbb::parallel_for(tbb::blocked_range<int>(0, n, 256), [&](const tbb::blocked_range<int> &r) {
+        std::vector<std::pair<double, int>> tmp;
+        for (int i = r.begin(); i < r.end(); ++i) {
+            tmp.clear();
+            for (int k = m_offsets[i]; k < m_offsets[i + 1]; ++k)
+                tmp.emplace_back((m_sites[m_neighbours[k]] - m_sites[i]).norm(), m_neighbours[k]);
+            std::sort(tmp.begin(), tmp.end());
+            for (std::size_t k = 0; k < tmp.size(); ++k) {
+                m_distances[m_offsets[i] + k] = tmp[k].first;
+                m_neighbours[m_offsets[i] + k] = tmp[k].second;
+            }
+        }
+    });
+}
+
+std::vector<std::array<int, 2>> SiteDelaunay::neighbourPairs() const
+{
+    std::vector<std::array<int, 2>> result;
+    for (int i = 0; i < siteCount(); ++i)
+        for (const int *j = neighboursBegin(i); j != neighboursEnd(i); ++j)
+            if (i < *j)
+                result.push_back({i, *j});
+    std::sort(result.begin(), result.end());
+    return result;
+}
+
+int SiteDelaunay::approximateNearest(const Vec3 &q) const
+{
+    std::call_once(*m_kdOnce, [this] {
+        m_kdTree = std::make_unique<KdTree>();
+        m_kdTree->cloud.points = m_sites.data();
+        for (int i = 0; i < siteCount(); ++i)
+            if (!m_hidden[i])
+                m_kdTree->cloud.ids.push_back(i);
+        m_kdTree->index = std::make_unique<KdTree::Index>(3, m_kdTree->cloud,
+                                                          nanoflann::KDTreeSingleIndexAdaptorParams(10));
+        m_kdTree->index->buildIndex();
+    });
+    unsigned int index = 0;
+    double distance = 0;
+    const double query[3] = {q.x(), q.y(), q.z()};
+    m_kdTree->index->knnSearch(query, 1, &index, &distance);
+    return m_kdTree->cloud.ids[index];
+}
+
+int SiteDelaunay::owner(const Vec3 &q, int hint) const
+{
+    if (m_firstVisible < 0)
+        return -1;
+    int c = (hint >= 0 && hint < siteCount() && !m_hidden[hint]) ? hint : approximateNearest(q);
+    for (;;) {
+        const Vec3 &pc = m_sites[c];
+        // Beyond twice the distance to q, no neighbour can be closer to q (security radius).
+        const double limit = 2.0 * (q - pc).norm() * (1.0 + 1e-12);
+        const int *nb = neighboursBegin(c);
+        const double *dist = neighbourDistances(c);
+        const int count = neighbourCount(c);
+        int next = -1;
+        for (int k = 0; k < count && dist[k] <= limit; ++k) {
+            if (rvd::sideOfInputVertex(q, pc, c, m_sites[nb[k]], nb[k]) < 0) {
+                next = nb[k];
+                break;
+            }
+        }
+        if (next < 0)
+            return c;
+        c = next;
+    }
+}
+
+} // namespace stratamesh
