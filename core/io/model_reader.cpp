@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "io/gocad_reader.h"
+#include "io/mesh_reader.h"
 #include "io/surface_mesh_reader.h"
 
 #include <algorithm>
@@ -24,7 +25,7 @@ std::string lowerExtension(const std::string &path)
 bool isReadableModelFile(const std::string &path)
 {
     const std::string ext = lowerExtension(path);
-    return ext == ".ml" || ext == ".ts" || ext == ".obj" || ext == ".off";
+    return ext == ".ml" || ext == ".ts" || ext == ".obj" || ext == ".off" || isVolumeMeshFile(path);
 }
 
 Model readModel(const std::string &path)
@@ -32,13 +33,15 @@ Model readModel(const std::string &path)
     const std::string ext = lowerExtension(path);
     if (!isReadableModelFile(path))
         throw FileError(path, 0, "unknown model file extension '" + ext +
-                                     "' (expected .ml, .ts, .obj or .off)");
+                                     "' (expected .ml, .ts, .obj, .off, .so, .msh, .vtu, .vtk or .vtp)");
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw FileError(path, 0, "cannot open the file (missing or not a regular file)");
     if (ext == ".ml" || ext == ".ts")
         return readGocadFile(path);
-    return readSurfaceMesh(path);
+    if (ext == ".obj" || ext == ".off")
+        return readSurfaceMesh(path);
+    return readMeshAsModel(path); // volume meshes: their surfaces and regions, cells dropped
 }
 
 } // namespace stratamesh

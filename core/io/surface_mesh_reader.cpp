@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "io/gocad_model_builder.h"
+#include "io/number_text.h"
 
 // GCC 12 reports a false -Wmaybe-uninitialized inside OpenMesh's property containers (a
 // value-initialized VectorT); it is raised while inlining, so it is silenced for this file.
@@ -10,18 +11,144 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
 
 namespace stratamesh {
 
 namespace {
 
 struct DoubleTraits : public OpenMesh::DefaultTraits {
-    // Gocad-scale coordinates (1 600 649.31) lose digits in float.
     typedef OpenMesh::Vec3d Point;
 };
 using ReaderMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
+
+// What the file itself says, read alongside OpenMesh: its OBJ/OFF readers parse coordinates as
+// float (1 600 649.31 comes back as 1 600 649.25) and skip unparsable vertex lines, shifting
+// every later index. The scan keeps the exact doubles and the counts to check OpenMesh against.
+struct FileScan {
+    std::vector<Vec3> points;
+    std::size_t triangles = 0; // a polygon of k corners gives k - 2 triangles
+};
+
+std::vector<std::string_view> splitWords(std::string_view line)
+{
+    std::vector<std::string_view> words;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i])))
+            ++i;
+        const std::size_t start = i;
+        while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i])))
+            ++i;
+        if (i > start)
+            words.push_back(line.substr(start, i - start));
+    }
+    return words;
+}
+
+// The line without its comment and end-of-line characters.
+std::string_view content(const std::string &line)
+{
+    std::string_view s(line);
+    s = s.substr(0, s.find('#'));
+    while (!s.empty() && (s.back() == '\r' || s.back() == '\n'))
+        s.remove_suffix(1);
+    return s;
+}
+
+Vec3 readPoint(const std::vector<std::string_view> &w, std::size_t first, const std::string &path, int line)
+{
+    if (w.size() < first + 3)
+        throw FileError(path, line, "a vertex needs three coordinates");
+    Vec3 p;
+    for (int k = 0; k < 3; ++k) {
+        const std::string_view token = w[first + k];
+        if (!parseDouble(token, p[k]))
+            throw FileError(path, line, "coordinate '" + std::string(token) + "' is not a number");
+        if (!std::isfinite(p[k]))
+            throw FileError(path, line, "coordinate '" + std::string(token) + "' is not finite (non-finite vertex)");
+    }
+    return p;
+}
+
+FileScan scanObj(std::istream &in, const std::string &path)
+{
+    FileScan scan;
+    std::string text;
+    for (int line = 1; std::getline(in, text); ++line) {
+        const auto w = splitWords(content(text));
+        if (w.empty())
+            continue;
+        if (w[0] == "v")
+            scan.points.push_back(readPoint(w, 1, path, line));
+        else if (w[0] == "f" && w.size() >= 4)
+            scan.triangles += w.size() - 3;
+    }
+    return scan;
+}
+
+FileScan scanOff(std::istream &in, const std::string &path)
+{
+    FileScan scan;
+    int line = 0;
+    std::vector<std::string_view> w;
+    std::string keep; // backing store for w
+    auto nextWords = [&]() {
+        while (std::getline(in, keep)) {
+            ++line;
+            w = splitWords(content(keep));
+            if (!w.empty())
+                return true;
+        }
+        return false;
+    };
+    if (!nextWords())
+        throw FileError(path, 0, "empty file");
+    std::string header(w[0]);
+    std::transform(header.begin(), header.end(), header.begin(), [](unsigned char c) { return char(std::toupper(c)); });
+    if (header.size() < 3 || header.compare(header.size() - 3, 3, "OFF") != 0)
+        throw FileError(path, line, "not an OFF file: the first word is not OFF");
+    if (header.find('4') != std::string::npos)
+        throw FileError(path, line, "only 3D OFF files are supported");
+    std::size_t countsAt = 1;
+    if (w.size() > 1 && (w[1] == "BINARY" || w[1] == "binary"))
+        throw FileError(path, line, "binary OFF files are not supported");
+    if (w.size() < 3) {
+        if (!nextWords())
+            throw FileError(path, line, "file ends before the vertex and face counts");
+        countsAt = 0;
+    }
+    long long nv = 0, nf = 0;
+    if (!parseInt(w[countsAt], nv) || !parseInt(w[countsAt + 1], nf) || nv < 0 || nf < 0)
+        throw FileError(path, line, "invalid vertex and face counts");
+    for (long long i = 0; i < nv; ++i) {
+        if (!nextWords())
+            throw FileError(path, line, "file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
+        scan.points.push_back(readPoint(w, 0, path, line));
+    }
+    for (long long i = 0; i < nf; ++i) {
+        if (!nextWords())
+            throw FileError(path, line, "file ends after " + std::to_string(i) + " of " + std::to_string(nf) + " faces");
+        long long k = 0;
+        if (!parseInt(w[0], k) || k < 3)
+            throw FileError(path, line, "a face needs at least three vertices");
+        scan.triangles += std::size_t(k - 2);
+    }
+    return scan;
+}
+
+std::string lowerExtension(const std::string &path)
+{
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
 
 } // namespace
 
@@ -30,20 +157,37 @@ Model readSurfaceMesh(const std::string &path)
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw FileError(path, 0, "cannot open the file (missing or not a regular file)");
+    const std::string ext = lowerExtension(path);
+    if (ext != ".obj" && ext != ".off")
+        throw FileError(path, 0, "not an OBJ or OFF file");
+
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw FileError(path, 0, "cannot open the file");
+    const FileScan scan = ext == ".obj" ? scanObj(in, path) : scanOff(in, path);
+    if (scan.triangles == 0)
+        throw FileError(path, 0, "no triangle in the file");
 
     ReaderMesh mesh;
     OpenMesh::IO::Options options;
     if (!OpenMesh::IO::read_mesh(mesh, path, options))
         throw FileError(path, 0, "OpenMesh could not read this file as a surface mesh");
-    if (mesh.n_faces() == 0)
-        throw FileError(path, 0, "no triangle in the file");
+    // OpenMesh drops degenerate faces and duplicates vertices around non-manifold ones: either
+    // would change the surface silently.
+    if (mesh.n_vertices() != scan.points.size())
+        throw FileError(path, 0, "non-manifold faces: " + std::to_string(scan.points.size()) +
+                                     " vertices in the file, " + std::to_string(mesh.n_vertices()) +
+                                     " after reading");
+    if (mesh.n_faces() != scan.triangles)
+        throw FileError(path, 0, std::to_string(scan.triangles - std::min<std::size_t>(scan.triangles, mesh.n_faces())) +
+                                     " triangle(s) could not be added (degenerate or non-manifold faces)");
 
     Surface s;
     s.name = gocadFileStem(path);
     s.featureName = s.name;
     s.sourceObject = s.name;
     // Only the vertices used by faces, in file order, so isolated points do not become surface
-    // vertices.
+    // vertices. OpenMesh numbers vertices in file order; the float values it read must agree.
     std::vector<int> index(mesh.n_vertices(), -1);
     for (const auto f : mesh.faces())
         for (const auto v : mesh.fv_range(f))
@@ -51,11 +195,14 @@ Model readSurfaceMesh(const std::string &path)
     for (const auto v : mesh.vertices()) {
         if (index[v.idx()] < 0)
             continue;
-        const auto &p = mesh.point(v);
-        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-            throw FileError(path, 0, "vertex " + std::to_string(v.idx() + 1) + " has a non-finite coordinate");
+        const Vec3 &p = scan.points[v.idx()];
+        const auto &q = mesh.point(v);
+        const double tolerance = 1e-6 * (1.0 + p.cwiseAbs().maxCoeff());
+        if (std::abs(q[0] - p.x()) > tolerance || std::abs(q[1] - p.y()) > tolerance ||
+            std::abs(q[2] - p.z()) > tolerance)
+            throw FileError(path, 0, "vertex " + std::to_string(v.idx() + 1) + " was read differently by OpenMesh");
         index[v.idx()] = int(s.vertices.size());
-        s.vertices.emplace_back(p[0] + 0.0, p[1] + 0.0, p[2] + 0.0);
+        s.vertices.emplace_back(p.x() + 0.0, p.y() + 0.0, p.z() + 0.0);
     }
     s.triangles.reserve(mesh.n_faces());
     for (const auto f : mesh.faces()) {
