@@ -1,0 +1,46 @@
+// Input vs output of a remeshing, as the rows of thesis Table 4.2 (§4.5): sizes, entity counts,
+// smallest angle, % of triangles with an angle < 30°, mean quality Q, area, Hausdorff distance in
+// % of the bounding-box diagonal, and the timings of sampling and mesh building; plus histograms
+// of min angle and Q over the same bins for both sides.
+#pragma once
+
+#include "common/progress.h"
+#include "model/model.h"
+#include "model/model_counts.h"
+#include "quality/hausdorff.h"
+#include "quality/histogram.h"
+#include "quality/mesh_statistics.h"
+
+#include <string>
+#include <vector>
+
+namespace stratamesh {
+
+struct ComparisonRow {
+    std::string label;       // model name
+    std::string resolution;  // "Input" or the number of sites
+    MeshStatistics mesh;
+    EntityCounts counts;     // box excluded, as Table 3.1 (thesis Table 4.2 counts components)
+    double samplingSeconds = 0.0;
+    double meshSeconds = 0.0;
+    double hausdorffPctBbox = -1.0; // -1 for the input row
+};
+
+struct ModelComparison {
+    ComparisonRow input;
+    ComparisonRow output;
+    HausdorffResult hausdorff;
+    Histogram inputMinAngle{minAngleBinEdges()};
+    Histogram outputMinAngle{minAngleBinEdges()};
+    Histogram inputQuality{qualityBinEdges()};
+    Histogram outputQuality{qualityBinEdges()};
+};
+
+// Both models need topology (for the counts). Throws InputError otherwise.
+ModelComparison compareModels(const Model &input, const Model &output, const HausdorffParams &hausdorff = {},
+                              Progress &progress = Progress::none());
+
+// A plain-text table in the layout of Table 4.2, one line per row (Markdown pipes).
+std::string formatTable42(const std::vector<ComparisonRow> &rows);
+
+} // namespace stratamesh

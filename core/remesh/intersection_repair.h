@@ -1,0 +1,29 @@
+// Resolution of intersecting output triangles by edge flips or vertex moves (thesis §4.4.5:
+// "they must be identified and the intersections must be resolved by vertex displacements or
+// edge flipping"). What stays unresolved is reported as intersection_unresolved records.
+#pragma once
+
+#include "remesh/editable_soup.h"
+#include "remesh/simplification_ledger.h"
+
+namespace stratamesh {
+
+struct IntersectionRepairParams {
+    int maxRounds = 5;
+    double minQuality = 0.05; // moves and flips may not create worse triangles than this
+};
+
+struct IntersectionRepairResult {
+    int found = 0;      // intersecting pairs before repair
+    int resolved = 0;
+    int unresolved = 0; // pairs left, each a ledger record
+};
+
+IntersectionRepairResult repairIntersections(EditableSoup &soup, const Model &input,
+                                             const IntersectionRepairParams &params,
+                                             SimplificationLedger &ledger);
+
+// Pairs of alive triangles of the soup that intersect (triangle ids of the soup).
+std::vector<std::pair<int, int>> soupIntersections(const EditableSoup &soup);
+
+} // namespace stratamesh

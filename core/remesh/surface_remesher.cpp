@@ -1,0 +1,126 @@
+#include "remesh/surface_remesher.h"
+
+#include "common/error.h"
+#include "model/topology.h"
+#include "remesh/cell_components.h"
+#include "remesh/editable_soup.h"
+#include "remesh/output_model_builder.h"
+#include "remesh/output_points.h"
+#include "remesh/site_sampling.h"
+#include "voronoi/restricted_voronoi.h"
+#include "voronoi/restriction_domain.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace stratamesh {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Model withTopology(const Model &input)
+{
+    if (input.surfaces.empty() || input.triangleCount() == 0)
+        throw InputError("remesh: the model has no triangle");
+    return input.hasTopology() ? input : recoverTopology(input);
+}
+
+// ρ(y) = max(floor, (1 − d(y)/d_max)^exponent), d the distance to the nearest corner (or line
+// vertex when there is no corner), per global vertex (thesis Fig 4.19).
+std::vector<double> adaptiveDensity(const Model &model, const RemeshParams &params)
+{
+    std::vector<Vec3> features;
+    for (const Corner &c : model.corners)
+        features.push_back(model.vertices[c.vertex]);
+    if (features.empty())
+        for (const Line &l : model.lines)
+            for (int v : l.vertices)
+                features.push_back(model.vertices[v]);
+    if (features.empty())
+        return {};
+    std::vector<double> d(model.vertices.size(), std::numeric_limits<double>::max());
+    double dMax = 0.0;
+    for (std::size_t v = 0; v < model.vertices.size(); ++v) {
+        for (const Vec3 &f : features)
+            d[v] = std::min(d[v], (model.vertices[v] - f).norm());
+        dMax = std::max(dMax, d[v]);
+    }
+    std::vector<double> rho(d.size(), 1.0);
+    if (dMax > 0.0)
+        for (std::size_t v = 0; v < d.size(); ++v)
+            rho[v] = std::max(params.adaptiveFloor, std::pow(1.0 - d[v] / dMax, params.adaptiveExponent));
+    return rho;
+}
+
+} // namespace
+
+int sitesForEdgeLength(double area, double edgeLength)
+{
+    if (!(edgeLength > 0.0))
+        throw InputError("remesh: the target edge length must be positive");
+    const double n = area / (std::sqrt(3.0) / 2.0 * edgeLength * edgeLength);
+    return std::max(4, static_cast<int>(std::lround(n)));
+}
+
+RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &sites, const RemeshParams &params,
+                             Progress &progress)
+{
+    const auto start = std::chrono::steady_clock::now();
+    const Model input = withTopology(inputModel);
+    RemeshResult result;
+    result.sites = sites;
+    result.siteCount = static_cast<int>(sites.size());
+    const RestrictionDomain domain = makeRestrictionDomain(input);
+    progress.tick(0.0, "restricted Voronoi diagram");
+    const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(domain, sites);
+    progress.tick(0.3, "cell components");
+    const CellComponents components = computeCellComponents(domain, rvd);
+    const CellPoints points = computeCellPoints(input, domain, rvd, components, params.dResolution, result.ledger);
+    OutputMesh mesh;
+    mesh.points = points.points;
+    mesh.triangles = buildDualFaces(domain, rvd, components, points, result.faces);
+    progress.tick(0.5, "post-processing");
+    EditableSoup soup(std::move(mesh));
+    const CleanupCounts v3 = removeValence3Vertices(soup, input, result.ledger);
+    result.cleanup = removeDegenerateTriangles(soup, input, params.cleanup, result.ledger);
+    result.cleanup.valence3 = v3.valence3;
+    if (params.flips)
+        result.cleanup.flips += improveByFlips(soup);
+    progress.tick(0.7, "intersections");
+    result.intersections = repairIntersections(soup, input, params.repair, result.ledger);
+    progress.tick(0.9, "output model");
+    result.model = buildOutputModel(input, soup.result(), result.ledger);
+    result.timings.meshSeconds = secondsSince(start);
+    result.timings.totalSeconds = result.timings.meshSeconds;
+    progress.tick(1.0, "done");
+    return result;
+}
+
+RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Progress &progress)
+{
+    const auto start = std::chrono::steady_clock::now();
+    const Model input = withTopology(inputModel);
+    if (params.iterations < 0)
+        throw InputError("remesh: the number of iterations cannot be negative");
+    if (params.dResolution < 0.0)
+        throw InputError("remesh: d_resolution cannot be negative");
+    const RestrictionDomain domain =
+        makeRestrictionDomain(input, params.adaptive ? adaptiveDensity(input, params) : std::vector<double>{});
+    const int n = params.sites > 0 ? params.sites : sitesForEdgeLength(domain.surfaceArea(), params.edgeLength);
+    Progress &p = progress;
+    const LloydResult optimised = lloydRelaxation(domain, sampleSites(domain, n, params.seed), params.iterations, p);
+    const double sampling = secondsSince(start);
+    RemeshResult result = remeshWithSites(input, optimised.sites, params, p);
+    result.energy = optimised.energy;
+    result.timings.samplingSeconds = sampling;
+    result.timings.totalSeconds = secondsSince(start);
+    return result;
+}
+
+} // namespace stratamesh

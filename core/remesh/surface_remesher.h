@@ -1,0 +1,65 @@
+// Remeshing of all the surfaces of a structural model at once, at a chosen resolution, with
+// topology control and simplification of the features below it (thesis chapter 4; Pellerin,
+// Lévy, Caumon & Botella 2014, "Automatic surface remeshing of 3D structural models at specified
+// resolution: A method based on Voronoi diagrams", Computers & Geosciences 62, 103–116).
+//
+//   sites (Alg 4.1) → restricted Voronoi diagram → cell components (Alg 4.3 step 1) → points
+//   (Alg 4.2, merges) → dual faces (Alg 4.3 step 3) → post-processing (§4.4.5, Alg 4.4) →
+//   intersection repair → new model (names kept, lines/corners/regions rebuilt) + ledger.
+//
+// The input is never changed; every simplification is a ledger record.
+#pragma once
+
+#include "common/progress.h"
+#include "remesh/dual_faces.h"
+#include "remesh/intersection_repair.h"
+#include "remesh/mesh_cleanup.h"
+#include "remesh/simplification_ledger.h"
+
+#include <vector>
+
+namespace stratamesh {
+
+struct RemeshParams {
+    int sites = 0;           // number of sites; when 0, derived from edgeLength
+    double edgeLength = 0.0; // target edge length: sites = area / (√3/2 · L²), a hexagonal packing
+    double dResolution = 0.0; // Alg 4.2 step 4; 0 disables the merge of close features
+    int iterations = 100;    // CVT iterations (thesis: 100)
+    unsigned seed = 1;       // initial random sampling
+    bool adaptive = false;   // density ρ = (1 − d/d_max)^exponent from the distance d to corners (Fig 4.19)
+    double adaptiveExponent = 4.0;
+    double adaptiveFloor = 0.05; // smallest density, so that far surfaces still get sites
+    CleanupParams cleanup;
+    bool flips = true;       // quality-improving flips inside surfaces after the thesis steps
+    IntersectionRepairParams repair;
+};
+
+struct RemeshTimings {
+    double samplingSeconds = 0.0; // sampling + CVT optimisation
+    double meshSeconds = 0.0;     // RVD, mesh building, post-processing, output model
+    double totalSeconds = 0.0;
+};
+
+struct RemeshResult {
+    Model model;                  // new model, with topology
+    SimplificationLedger ledger;
+    std::vector<double> energy;   // optimisation energy per iteration
+    std::vector<Vec3> sites;      // optimised sites
+    int siteCount = 0;
+    RemeshTimings timings;
+    DualFaceCounts faces;
+    CleanupCounts cleanup;
+    IntersectionRepairResult intersections;
+};
+
+// Number of sites for a target edge length over a total surface area.
+int sitesForEdgeLength(double area, double edgeLength);
+
+// Throws InputError on bad parameters or an empty model, Cancelled when cancelled.
+RemeshResult remeshModel(const Model &input, const RemeshParams &params, Progress &progress = Progress::none());
+
+// The mesh-building half alone, from given sites (tests and benchmarks): `input` with topology.
+RemeshResult remeshWithSites(const Model &input, const std::vector<Vec3> &sites, const RemeshParams &params,
+                             Progress &progress = Progress::none());
+
+} // namespace stratamesh

@@ -1,0 +1,96 @@
+#include "remesh/triangle_intersections.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/intersections.h>
+
+#include <algorithm>
+
+namespace stratamesh {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using P3 = K::Point_3;
+using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
+
+P3 toCgal(const Vec3 &v) { return P3(v.x(), v.y(), v.z()); }
+
+bool isDegenerate(const std::vector<Vec3> &pts, const Triangle &t)
+{
+    return CGAL::collinear(toCgal(pts[t[0]]), toCgal(pts[t[1]]), toCgal(pts[t[2]]));
+}
+
+} // namespace
+
+bool trianglesIntersect(const std::vector<Vec3> &pts, const Triangle &a, const Triangle &b)
+{
+    std::array<int, 3> sharedA{-1, -1, -1}; // for each corner of a, its index in b or -1
+    int shared = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (a[i] == b[j]) {
+                sharedA[i] = j;
+                ++shared;
+            }
+    const K::Triangle_3 ta(toCgal(pts[a[0]]), toCgal(pts[a[1]]), toCgal(pts[a[2]]));
+    const K::Triangle_3 tb(toCgal(pts[b[0]]), toCgal(pts[b[1]]), toCgal(pts[b[2]]));
+    if (shared == 0)
+        return CGAL::do_intersect(ta, tb);
+    if (shared == 3)
+        return true;
+    if (shared == 1) {
+        // They meet beyond the common vertex iff the edge opposite it in one crosses the other.
+        int i = 0;
+        while (sharedA[i] < 0)
+            ++i;
+        const int j = sharedA[i];
+        const K::Segment_3 oppA(toCgal(pts[a[(i + 1) % 3]]), toCgal(pts[a[(i + 2) % 3]]));
+        const K::Segment_3 oppB(toCgal(pts[b[(j + 1) % 3]]), toCgal(pts[b[(j + 2) % 3]]));
+        return CGAL::do_intersect(oppA, tb) || CGAL::do_intersect(oppB, ta);
+    }
+    // A common edge: only coplanar triangles folded onto the same side overlap.
+    int i = 0;
+    while (sharedA[i] >= 0)
+        ++i;
+    int j = 0;
+    while (j == sharedA[0] || j == sharedA[1] || j == sharedA[2])
+        ++j;
+    const P3 p = toCgal(pts[a[(i + 1) % 3]]), q = toCgal(pts[a[(i + 2) % 3]]);
+    const P3 ra = toCgal(pts[a[i]]), rb = toCgal(pts[b[j]]);
+    if (!CGAL::coplanar(p, q, ra, rb))
+        return false;
+    return CGAL::coplanar_orientation(p, q, ra, rb) == CGAL::POSITIVE;
+}
+
+std::vector<std::pair<int, int>> findIntersectingTriangles(const std::vector<Vec3> &pts,
+                                                           const std::vector<Triangle> &tris,
+                                                           std::vector<int> *degenerate)
+{
+    std::vector<Box> boxes;
+    boxes.reserve(tris.size());
+    for (int t = 0; t < static_cast<int>(tris.size()); ++t) {
+        if (isDegenerate(pts, tris[t])) {
+            if (degenerate)
+                degenerate->push_back(t);
+            continue;
+        }
+        const auto bb = toCgal(pts[tris[t][0]]).bbox() + toCgal(pts[tris[t][1]]).bbox() +
+                        toCgal(pts[tris[t][2]]).bbox();
+        boxes.emplace_back(bb, t);
+    }
+    std::vector<std::pair<int, int>> candidates;
+    auto report = [&](const Box &a, const Box &b) {
+        candidates.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info()));
+    };
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), report);
+    std::vector<std::pair<int, int>> result;
+    for (const auto &c : candidates)
+        if (trianglesIntersect(pts, tris[c.first], tris[c.second]))
+            result.push_back(c);
+    std::sort(result.begin(), result.end());
+    result.erase(std::unique(result.begin(), result.end()), result.end());
+    return result;
+}
+
+} // namespace stratamesh

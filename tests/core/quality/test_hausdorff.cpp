@@ -1,0 +1,80 @@
+// Hausdorff distance (thesis Table 4.2) on shapes whose distance is known exactly.
+#include "quality/hausdorff.h"
+
+#include "common/error.h"
+
+#include <QtTest>
+
+using namespace stratamesh;
+
+namespace {
+
+// Axis-aligned rectangle [x0, x1] × [y0, y1] at height z, two triangles.
+Surface rectangle(double x0, double x1, double y0, double y1, double z)
+{
+    Surface s;
+    s.name = "rect";
+    s.vertices = {Vec3(x0, y0, z), Vec3(x1, y0, z), Vec3(x1, y1, z), Vec3(x0, y1, z)};
+    s.triangles = {{0, 1, 2}, {0, 2, 3}};
+    return s;
+}
+
+Model modelOf(std::vector<Surface> surfaces)
+{
+    Model m;
+    m.name = "m";
+    m.surfaces = std::move(surfaces);
+    return m;
+}
+
+} // namespace
+
+class TestHausdorff : public QObject {
+    Q_OBJECT
+private slots:
+    void parallelSquares()
+    {
+        const Model a = modelOf({rectangle(0, 1, 0, 1, 0)});
+        const Model b = modelOf({rectangle(0, 1, 0, 1, 0.25)});
+        const HausdorffResult r = hausdorffDistance(a, b, HausdorffParams{2000});
+        QVERIFY(std::abs(r.aToB - 0.25) < 1e-12);
+        QVERIFY(std::abs(r.bToA - 0.25) < 1e-12);
+        QVERIFY(std::abs(r.meanAToB - 0.25) < 1e-12);
+        QVERIFY(std::abs(r.bboxDiagonal - std::sqrt(2.0)) < 1e-12);
+        QVERIFY(std::abs(r.symmetricPctBbox - 25.0 / std::sqrt(2.0)) < 1e-9);
+        QCOMPARE(r.vertexDistanceBToA.size(), std::size_t(1));
+        for (double d : r.vertexDistanceBToA[0])
+            QVERIFY(std::abs(d - 0.25) < 1e-12);
+    }
+
+    void asymmetricCover()
+    {
+        // B covers the left half of A: every point of B is on A, A's right edge is 0.5 from B.
+        const Model a = modelOf({rectangle(0, 1, 0, 1, 0)});
+        const Model b = modelOf({rectangle(0, 0.5, 0, 1, 0)});
+        const HausdorffResult r = hausdorffDistance(a, b, HausdorffParams{5000});
+        QVERIFY(std::abs(r.aToB - 0.5) < 1e-12);
+        QVERIFY(r.bToA < 1e-12);
+        QVERIFY(std::abs(r.symmetric - 0.5) < 1e-12);
+        QVERIFY(r.meanAToB > 0.1 && r.meanAToB < 0.15); // ≈ 1/8 for uniform samples
+    }
+
+    void distanceToTriangleInterior()
+    {
+        // A point above the middle of a big triangle is closer to its interior than to any vertex:
+        // the distance must be exact, not a sample-to-sample distance.
+        const Model a = modelOf({rectangle(-10, 10, -10, 10, 0)});
+        const std::vector<double> d = distancesToModel(a, {Vec3(0.3, -0.7, 2.0), Vec3(12, 0, 0)});
+        QVERIFY(std::abs(d[0] - 2.0) < 1e-12);
+        QVERIFY(std::abs(d[1] - 2.0) < 1e-12);
+    }
+
+    void emptyModelRefused()
+    {
+        const Model a = modelOf({rectangle(0, 1, 0, 1, 0)});
+        QVERIFY_THROWS_EXCEPTION(InputError, hausdorffDistance(a, Model{}));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestHausdorff)
+#include "test_hausdorff.moc"

@@ -1,0 +1,236 @@
+// The remesher on models built in code (thesis ch. 4): topology of the output, borders, lines,
+// corners and contacts, and the d_resolution simplification (Fig 4.3, 4.5, 4.7).
+#include "remesh/surface_remesher.h"
+
+#include "model/model_counts.h"
+#include "model/synthetic_models.h"
+#include "model/topology.h"
+#include "model/validity.h"
+#include "remesh/output_model_builder.h"
+
+#include <Eigen/Geometry>
+#include <QtTest>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+using namespace stratamesh;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Euler characteristic V − E + F of one surface (local ids).
+int eulerCharacteristic(const Surface &s)
+{
+    std::set<std::pair<int, int>> edges;
+    std::set<int> vertices;
+    for (const Triangle &t : s.triangles)
+        for (int k = 0; k < 3; ++k) {
+            vertices.insert(t[k]);
+            edges.insert({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
+        }
+    return static_cast<int>(vertices.size()) - static_cast<int>(edges.size()) + static_cast<int>(s.triangles.size());
+}
+
+// Edge → number of triangles of the surface around it.
+std::map<std::pair<int, int>, int> edgeUse(const Surface &s)
+{
+    std::map<std::pair<int, int>, int> use;
+    for (const Triangle &t : s.triangles)
+        for (int k = 0; k < 3; ++k)
+            ++use[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
+    return use;
+}
+
+int borderEdgeCount(const Surface &s)
+{
+    int n = 0;
+    for (const auto &[e, count] : edgeUse(s))
+        n += count == 1 ? 1 : 0;
+    return n;
+}
+
+double area(const Surface &s)
+{
+    double a = 0;
+    for (const Triangle &t : s.triangles)
+        a += 0.5 * (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]).norm();
+    return a;
+}
+
+// A flat square [0, n·h]² at z = 0, optionally with a square hole in its middle.
+Model squareModel(int n, double h, bool hole)
+{
+    Surface s;
+    s.name = hole ? "holed" : "square";
+    s.featureName = s.name;
+    s.type = FeatureType::Horizon;
+    std::map<std::pair<int, int>, int> id;
+    auto vertex = [&](int i, int j) {
+        auto [it, inserted] = id.emplace(std::make_pair(i, j), static_cast<int>(s.vertices.size()));
+        if (inserted)
+            s.vertices.push_back(Vec3(i * h, j * h, 0.0));
+        return it->second;
+    };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            if (hole && i >= n / 3 && i < n - n / 3 && j >= n / 3 && j < n - n / 3)
+                continue;
+            s.triangles.push_back({vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1)});
+            s.triangles.push_back({vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+        }
+    Model m;
+    m.name = s.name;
+    m.surfaces.push_back(s);
+    return recoverTopology(m);
+}
+
+const Surface *surfaceNamed(const Model &m, const std::string &name)
+{
+    for (const Surface &s : m.surfaces)
+        if (s.name == name)
+            return &s;
+    return nullptr;
+}
+
+bool mentions(const LedgerRecord &r, FeatureType type, const Model &input)
+{
+    for (const EntityRef &e : r.inputs)
+        if (e.kind == EntityKind::Surface && input.surfaces[e.id].type == type)
+            return true;
+    return false;
+}
+
+} // namespace
+
+class TestSurfaceRemesher : public QObject {
+    Q_OBJECT
+private slots:
+    void nestedSpheresGiveTwoSpheres()
+    {
+        // Fig 4.3: 100 sites sandwiched between two close spheres; each cell has two components.
+        NestedSpheresParams sp;
+        sp.innerRadius = 1.0;
+        sp.outerRadius = 1.12;
+        sp.subdivisions = 4;
+        const Model input = recoverTopology(nestedSpheres(sp));
+        RemeshParams params;
+        params.sites = 100;
+        params.iterations = 30;
+        const RemeshResult r = remeshModel(input, params);
+        QCOMPARE(r.model.surfaces.size(), std::size_t(2));
+        for (const Surface &s : r.model.surfaces) {
+            QCOMPARE(eulerCharacteristic(s), 2);
+            for (const auto &[e, count] : edgeUse(s))
+                QCOMPARE(count, 2); // closed, manifold
+            QVERIFY(s.vertices.size() >= 60);
+        }
+        QVERIFY(checkValidity(r.model).valid);
+    }
+
+    void squareKeepsItsBorder()
+    {
+        const Model input = squareModel(20, 0.5, false); // 10 × 10
+        RemeshParams params;
+        params.sites = 150;
+        params.iterations = 40;
+        const RemeshResult r = remeshModel(input, params);
+        QCOMPARE(r.model.surfaces.size(), std::size_t(1));
+        const Surface &s = r.model.surfaces[0];
+        QCOMPARE(eulerCharacteristic(s), 1); // a disc
+        QVERIFY(std::abs(area(s) - 100.0) < 1.0);
+        QVERIFY(borderEdgeCount(s) >= 20);
+        // Border vertices lie on the square's border.
+        for (const auto &[e, count] : edgeUse(s))
+            if (count == 1)
+                for (int v : {e.first, e.second}) {
+                    const Vec3 &p = s.vertices[v];
+                    const double d = std::min({p.x(), 10.0 - p.x(), p.y(), 10.0 - p.y()});
+                    QVERIFY2(std::abs(d) < 1e-9, "border vertex off the input border");
+                }
+        QCOMPARE(r.model.lines.size(), input.lines.size());
+        QVERIFY(checkValidity(r.model).valid);
+    }
+
+    void holeIsKept()
+    {
+        const Model input = squareModel(24, 0.5, true); // hole of 4 × 4 in a 12 × 12 square
+        RemeshParams params;
+        params.sites = 300;
+        params.iterations = 40;
+        const RemeshResult r = remeshModel(input, params);
+        QCOMPARE(r.model.surfaces.size(), std::size_t(1));
+        QCOMPARE(eulerCharacteristic(r.model.surfaces[0]), 0); // an annulus
+        QCOMPARE(r.model.lines.size(), std::size_t(2));
+        QCOMPARE(countKind(r.ledger, LedgerKind::LineLost), 0);
+    }
+
+    void boxCutByOneHorizonStaysConformal()
+    {
+        LayeredBoxParams bp;
+        bp.size = Vec3(1000, 600, 400);
+        bp.horizons = 1;
+        bp.edgeLength = 50;
+        const Model input = recoverTopology(layeredBox(bp));
+        RemeshParams params;
+        params.edgeLength = 80;
+        params.iterations = 40;
+        const RemeshResult r = remeshModel(input, params);
+        const ValidityReport v = checkValidity(r.model);
+        QVERIFY2(v.valid, v.problems.empty() ? "" : v.problems.front().message.c_str());
+        const ModelCounts in = countEntities(input), out = countEntities(r.model);
+        QCOMPARE(out.all.surfaces, in.all.surfaces);
+        QCOMPARE(out.all.lines, in.all.lines);
+        QCOMPARE(out.all.corners, in.all.corners);
+        QCOMPARE(out.all.regions, in.all.regions);
+        // Every output surface keeps the name, feature and type of its input surface.
+        for (const Surface &s : r.model.surfaces) {
+            const Surface *i = surfaceNamed(input, s.name);
+            QVERIFY(i);
+            QCOMPARE(s.featureName, i->featureName);
+            QVERIFY(s.type == i->type);
+        }
+    }
+
+    void smallThrowCancelledByDResolution()
+    {
+        LayeredBoxParams bp;
+        bp.size = Vec3(1000, 600, 400);
+        bp.horizons = 1;
+        bp.fault = true;
+        bp.faultThrow = 15;
+        bp.edgeLength = 40;
+        const Model input = recoverTopology(layeredBox(bp));
+        RemeshParams params;
+        params.edgeLength = 90;
+        params.iterations = 40;
+
+        params.dResolution = 0.0;
+        const RemeshResult kept = remeshModel(input, params);
+        QCOMPARE(countKind(kept.ledger, LedgerKind::CloseFeatureMerge), 0);
+        QCOMPARE(countEntities(kept.model).all.lines, countEntities(input).all.lines);
+
+        params.dResolution = 40.0;
+        const RemeshResult merged = remeshModel(input, params);
+        int namingBoth = 0;
+        for (const LedgerRecord &rec : merged.ledger)
+            if (rec.kind == LedgerKind::CloseFeatureMerge && mentions(rec, FeatureType::Fault, input) &&
+                mentions(rec, FeatureType::Horizon, input))
+                ++namingBoth;
+        QVERIFY(namingBoth > 0);
+        // The horizon's two fault blocks now meet on the fault: some output line runs along both.
+        bool joined = false;
+        for (const Line &l : merged.model.lines) {
+            int horizons = 0;
+            for (int s : l.surfaces)
+                horizons += merged.model.surfaces[s].type == FeatureType::Horizon ? 1 : 0;
+            joined = joined || horizons >= 2;
+        }
+        QVERIFY(joined);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSurfaceRemesher)
+#include "test_surface_remesher.moc"
