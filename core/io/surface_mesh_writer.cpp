@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "io/atomic_file.h"
+#include "io/number_text.h"
 
 // GCC 12 reports a false -Wmaybe-uninitialized inside OpenMesh's property containers while
 // inlining (as in surface_mesh_reader.cpp); silenced for this file.
@@ -34,6 +35,28 @@ std::string lowerExtension(const std::string &path)
     return ext;
 }
 
+
+// Binary STL through OpenMesh (32-bit floats by the format's definition). OpenMesh stores
+// manifold meshes only: a non-manifold surface is refused rather than silently trimmed.
+void writeStl(const Surface &s, const std::string &path)
+{
+    DoubleTriMesh mesh;
+    std::vector<DoubleTriMesh::VertexHandle> handles;
+    handles.reserve(s.vertices.size());
+    for (const Vec3 &p : s.vertices)
+        handles.push_back(mesh.add_vertex(DoubleTriMesh::Point(p.x(), p.y(), p.z())));
+    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+        const Triangle &tri = s.triangles[t];
+        if (!mesh.add_face(handles[tri[0]], handles[tri[1]], handles[tri[2]]).is_valid())
+            throw InputError("surface '" + s.name + "' is not manifold at triangle " + std::to_string(t) +
+                             ": OpenMesh cannot store it as STL");
+    }
+    writeFileAtomically(path, [&](const std::string &temporary) {
+        if (!OpenMesh::IO::write_mesh(mesh, temporary, OpenMesh::IO::Options::Binary))
+            throw FileError(path, 0, "OpenMesh could not write the file");
+    });
+}
+
 } // namespace
 
 bool isSurfaceMeshFile(const std::string &path)
@@ -59,30 +82,58 @@ void writeSurfaceMesh(const Model &model, const std::string &path, int surface)
     const Surface &s = model.surfaces[surface];
     if (s.triangles.empty())
         throw InputError("surface '" + s.name + "' has no triangle");
-    DoubleTriMesh mesh;
-    std::vector<DoubleTriMesh::VertexHandle> handles;
-    handles.reserve(s.vertices.size());
-    for (const Vec3 &p : s.vertices) {
+    for (const Vec3 &p : s.vertices)
         if (!p.allFinite())
             throw InputError("surface '" + s.name + "' has a non-finite coordinate");
-        handles.push_back(mesh.add_vertex(DoubleTriMesh::Point(p.x(), p.y(), p.z())));
-    }
-    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-        const Triangle &tri = s.triangles[t];
-        for (int v : tri)
-            if (v < 0 || v >= static_cast<int>(handles.size()))
+    for (std::size_t t = 0; t < s.triangles.size(); ++t)
+        for (int v : s.triangles[t])
+            if (v < 0 || v >= static_cast<int>(s.vertices.size()))
                 throw InputError("surface '" + s.name + "': triangle " + std::to_string(t) + " uses vertex " +
-                                 std::to_string(v) + " of " + std::to_string(handles.size()));
-        if (!mesh.add_face(handles[tri[0]], handles[tri[1]], handles[tri[2]]).is_valid())
-            throw InputError("surface '" + s.name + "' is not manifold at triangle " + std::to_string(t) +
-                             ": it cannot be stored as " + lowerExtension(path));
+                                 std::to_string(v) + " of " + std::to_string(s.vertices.size()));
+    const std::string ext = lowerExtension(path);
+    if (ext == ".stl") {
+        writeStl(s, path);
+        return;
     }
-    const bool stl = lowerExtension(path) == ".stl";
-    writeFileAtomically(path, [&](const std::string &temporary) {
-        // Binary STL is the common form; ASCII for the others so 17 digits keep doubles exact.
-        const OpenMesh::IO::Options options = stl ? OpenMesh::IO::Options::Binary : OpenMesh::IO::Options::Default;
-        if (!OpenMesh::IO::write_mesh(mesh, temporary, options, 17))
-            throw FileError(path, 0, "OpenMesh could not write the file");
+    // OpenMesh 9 writes (and reads) OBJ, OFF and PLY coordinates as 32-bit floats whatever the
+    // mesh traits: these three plain formats are written here with exact doubles instead.
+    writeTextFileAtomically(path, [&](std::ostream &out) {
+        auto point = [&](const Vec3 &p) {
+            writeDouble(out, p.x());
+            out << ' ';
+            writeDouble(out, p.y());
+            out << ' ';
+            writeDouble(out, p.z());
+            out << '\n';
+        };
+        std::string name = s.name;
+        for (char &c : name)
+            if (c == '\n' || c == '\r')
+                c = ' ';
+        if (ext == ".obj") {
+            out << "# StrataMesh surface\no " << (name.empty() ? "surface" : name) << '\n';
+            for (const Vec3 &p : s.vertices) {
+                out << "v ";
+                point(p);
+            }
+            for (const Triangle &t : s.triangles)
+                out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+        } else if (ext == ".off") {
+            out << "OFF\n" << s.vertices.size() << ' ' << s.triangles.size() << " 0\n";
+            for (const Vec3 &p : s.vertices)
+                point(p);
+            for (const Triangle &t : s.triangles)
+                out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+        } else {
+            out << "ply\nformat ascii 1.0\ncomment StrataMesh surface " << name << "\nelement vertex "
+                << s.vertices.size()
+                << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << s.triangles.size()
+                << "\nproperty list uchar int vertex_indices\nend_header\n";
+            for (const Vec3 &p : s.vertices)
+                point(p);
+            for (const Triangle &t : s.triangles)
+                out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+        }
     });
 }
 

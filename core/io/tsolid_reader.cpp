@@ -230,7 +230,9 @@ private:
     {
         if (t.size() < 5)
             c.fail("TETRA needs four vertex ids");
-        Cell cell = Cell::tet(point(t[1]), point(t[2]), point(t[3]), point(t[4]));
+        Cell cell;
+        for (int k = 0; k < 4; ++k) // in file order, so errors name the first bad id
+            cell.nodes[k] = point(t[static_cast<std::size_t>(k) + 1]);
         for (int i = 0; i < 4; ++i)
             for (int j = 0; j < i; ++j)
                 if (cell.nodes[i] == cell.nodes[j])
@@ -263,7 +265,9 @@ private:
             c.fail("TRGL outside a MODEL TFACE");
         if (t.size() < 4)
             c.fail("TRGL needs three vertex ids");
-        const Triangle tri{point(t[1]), point(t[2]), point(t[3])};
+        Triangle tri;
+        for (int k = 0; k < 3; ++k)
+            tri[k] = point(t[static_cast<std::size_t>(k) + 1]);
         if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
             c.fail("TRGL uses the same vertex twice");
         mesh.triangles.push_back(tri);

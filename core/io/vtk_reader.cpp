@@ -47,13 +47,26 @@ std::string stem(const std::string &path)
     return dot == std::string::npos ? base : base.substr(0, dot);
 }
 
+// Names written by our writer (bytes, each name ended by '\n'), or a VTK string array.
 std::vector<std::string> stringsOf(vtkFieldData *fd, const char *name)
 {
     std::vector<std::string> out;
-    auto *a = vtkStringArray::SafeDownCast(fd ? fd->GetAbstractArray(name) : nullptr);
-    if (a)
+    vtkAbstractArray *array = fd ? fd->GetAbstractArray(name) : nullptr;
+    if (auto *a = vtkStringArray::SafeDownCast(array)) {
         for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
             out.push_back(a->GetValue(i));
+    } else if (auto *bytes = vtkDataArray::SafeDownCast(array)) {
+        std::string current;
+        for (vtkIdType i = 0; i < bytes->GetNumberOfValues(); ++i) {
+            const char c = static_cast<char>(static_cast<unsigned char>(bytes->GetComponent(i, 0)));
+            if (c == '\n') {
+                out.push_back(current);
+                current.clear();
+            } else {
+                current += c;
+            }
+        }
+    }
     return out;
 }
 

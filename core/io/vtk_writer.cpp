@@ -15,7 +15,6 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
-#include <vtkStringArray.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkUnstructuredGridWriter.h>
@@ -33,12 +32,17 @@ int vtkTypeOf(CellType type)
     return type == CellType::Tet ? VTK_TETRA : type == CellType::Pyramid ? VTK_PYRAMID : VTK_WEDGE;
 }
 
-vtkSmartPointer<vtkStringArray> strings(const char *name, const std::vector<std::string> &values)
+// Names as UTF-8 bytes, each ended by '\n', in an unsigned char array: VTK string arrays would
+// be more natural but common readers (meshio) reject them.
+vtkSmartPointer<vtkUnsignedCharArray> strings(const char *name, const std::vector<std::string> &values)
 {
-    auto a = vtkSmartPointer<vtkStringArray>::New();
+    auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
     a->SetName(name);
-    for (const std::string &v : values)
-        a->InsertNextValue(v);
+    for (const std::string &v : values) {
+        for (char c : v)
+            a->InsertNextValue(static_cast<unsigned char>(c == '\n' || c == '\r' ? ' ' : c));
+        a->InsertNextValue('\n');
+    }
     return a;
 }
 

@@ -7,9 +7,10 @@
 // lines, triangles: VTK's poly data order). Cell data (-1 where it does not apply):
 //   RegionId, SurfaceId, LineId (int), CellType (VTK cell type code, unsigned char),
 //   <qualityName> (double, NaN off cells) when the mesh has a per-cell quality.
-// Field data: MeshName, ZPositiveDepth, RegionNames, SurfaceNames, SurfaceFeatures, SurfaceTypes,
-// LineNames, QualityName (strings) and RegionSides (int: per region, the count of its sides then
-// ±(surface+1), + when the region lies on the side the normal points to).
+// Field data: MeshName, RegionNames, SurfaceNames, SurfaceFeatures, SurfaceTypes, LineNames,
+// QualityName (UTF-8 bytes in an unsigned char array, each name ended by '\n': meshio and other
+// readers reject VTK string arrays), ZPositiveDepth (int) and RegionSides (int: per region, the
+// count of its sides then ±(surface+1), + when the region lies on the side the normal points to).
 #pragma once
 
 #include "mesh/volume_mesh.h"

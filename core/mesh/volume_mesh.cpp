@@ -2,6 +2,8 @@
 
 #include "common/error.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
