@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "io/gmsh_reader.h"
+#include "io/stl_ply_reader.h"
 #include "io/tsolid_reader.h"
 #include "io/vtk_reader.h"
 #include "mesh/model_conversion.h"
@@ -29,7 +30,8 @@ std::string lowerExtension(const std::string &path)
 bool isVolumeMeshFile(const std::string &path)
 {
     const std::string ext = lowerExtension(path);
-    return ext == ".so" || ext == ".msh" || ext == ".vtu" || ext == ".vtk" || ext == ".vtp";
+    return ext == ".so" || ext == ".msh" || ext == ".vtu" || ext == ".vtk" || ext == ".vtp" || ext == ".stl" ||
+           ext == ".ply";
 }
 
 VolumeMesh readVolumeMesh(const std::string &path)
@@ -41,7 +43,10 @@ VolumeMesh readVolumeMesh(const std::string &path)
         return readGmsh(path);
     if (ext == ".vtu" || ext == ".vtk" || ext == ".vtp")
         return readVtk(path);
-    throw FileError(path, 0, "unknown mesh file extension '" + ext + "' (use .so, .msh, .vtu, .vtk or .vtp)");
+    if (ext == ".stl" || ext == ".ply")
+        return readStlOrPly(path);
+    throw FileError(path, 0,
+                    "unknown mesh file extension '" + ext + "' (use .so, .msh, .vtu, .vtk, .vtp, .stl or .ply)");
 }
 
 Model readMeshAsModel(const std::string &path) { return modelFromMesh(readVolumeMesh(path)); }

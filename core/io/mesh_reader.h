@@ -1,6 +1,6 @@
 // Reading the exchange meshes by extension: Gocad TSolid (.so), Gmsh (.msh), VTK (.vtu, .vtk,
-// .vtp). Surface-only files give a mesh without cells; readMeshAsModel() turns any of them into a
-// surface model (for readModel()).
+// .vtp), and single surfaces in STL or PLY. Surface-only files give a mesh without cells;
+// readMeshAsModel() turns any of them into a surface model (readModel() calls it).
 #pragma once
 
 #include "mesh/volume_mesh.h"
@@ -10,7 +10,7 @@
 
 namespace stratamesh {
 
-// True for .so, .msh, .vtu, .vtk, .vtp (case-insensitive).
+// True for .so, .msh, .vtu, .vtk, .vtp, .stl, .ply (case-insensitive).
 bool isVolumeMeshFile(const std::string &path);
 
 // Throws FileError for an unknown extension or unreadable content (file, line and cause).

@@ -135,10 +135,10 @@ private slots:
                               (ids[0] == t[2] && ids[1] == t[0]);
             QVERIFY(same);
         }
-        if (extension != "ply") { // the model reader also knows OBJ and OFF
-            const Model back = readModel(path.toStdString());
-            QCOMPARE(back.surfaces.at(0).triangles, s.triangles);
-        }
+        // And our own reading path gives everything back exactly.
+        const Model back = readModel(path.toStdString());
+        QCOMPARE(back.surfaces.at(0).vertices, s.vertices);
+        QCOMPARE(back.surfaces.at(0).triangles, s.triangles);
     }
 
     void stlKeepsFloats()
@@ -155,6 +155,16 @@ private slots:
             const auto p = mesh.point(vh);
             QVERIFY(p[0] == double(float(p[0])) && p[2] == double(float(p[2])));
         }
+        // readModel() opens it too: same triangles, corners at the float positions.
+        const Model back = readModel(path.toStdString());
+        const Surface &s = model.surfaces[0];
+        QCOMPARE(back.surfaces.at(0).triangles.size(), s.triangles.size());
+        QCOMPARE(back.surfaces.at(0).vertices.size(), s.vertices.size());
+        for (std::size_t t = 0; t < s.triangles.size(); ++t)
+            for (int k = 0; k < 3; ++k)
+                for (int c = 0; c < 3; ++c)
+                    QCOMPARE(back.surfaces[0].vertices[back.surfaces[0].triangles[t][k]][c],
+                             double(float(s.vertices[s.triangles[t][k]][c])));
     }
 
     void choosingAmongSeveralSurfaces()

@@ -1,0 +1,187 @@
+#include "io/stl_ply_reader.h"
+
+#include "common/error.h"
+#include "io/number_text.h"
+#include "io/text_cursor.h"
+
+// GCC 12 reports a false -Wmaybe-uninitialized inside OpenMesh's property containers while
+// inlining (as in surface_mesh_reader.cpp); silenced for this file.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+
+namespace stratamesh {
+
+namespace {
+
+struct DoubleTraits : public OpenMesh::DefaultTraits {
+    using Point = OpenMesh::Vec3d;
+};
+using DoubleTriMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
+
+std::string stem(const std::string &path)
+{
+    const std::size_t slash = path.find_last_of('/');
+    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+    const std::size_t dot = base.find_last_of('.');
+    return dot == std::string::npos ? base : base.substr(0, dot);
+}
+
+VolumeMesh oneSurface(const std::string &path)
+{
+    VolumeMesh m;
+    m.name = stem(path);
+    m.surfaces.push_back({m.name, m.name, FeatureType::Unknown});
+    return m;
+}
+
+VolumeMesh readWithOpenMesh(const std::string &path)
+{
+    DoubleTriMesh mesh;
+    OpenMesh::IO::Options options;
+    if (!OpenMesh::IO::read_mesh(mesh, path, options))
+        throw FileError(path, 0, "OpenMesh could not read this file as a surface mesh");
+    VolumeMesh m = oneSurface(path);
+    for (const auto v : mesh.vertices()) {
+        const auto p = mesh.point(v);
+        m.points.push_back({p[0], p[1], p[2]});
+    }
+    for (const auto f : mesh.faces()) {
+        Triangle t;
+        int k = 0;
+        for (const auto v : mesh.fv_range(f))
+            if (k < 3)
+                t[k++] = v.idx();
+        m.triangles.push_back(t);
+        m.triangleSurface.push_back(0);
+    }
+    return m;
+}
+
+struct PlyProperty {
+    std::string name;
+    bool list = false;
+};
+struct PlyElement {
+    std::string name;
+    long long count = 0;
+    std::vector<PlyProperty> properties;
+};
+
+VolumeMesh readAsciiPly(const std::string &path)
+{
+    TextCursor c(path);
+    std::vector<PlyElement> elements;
+    c.nextNonBlank("\"ply\"");
+    for (;;) {
+        c.nextNonBlank("end_header");
+        const auto t = c.tokens();
+        if (t[0] == "end_header")
+            break;
+        if (t[0] == "element") {
+            if (t.size() < 3)
+                c.fail("expected \"element NAME COUNT\"");
+            long long n = 0;
+            if (!parseInt(t[2], n) || n < 0)
+                c.fail("bad element count");
+            elements.push_back({std::string(t[1]), n, {}});
+        } else if (t[0] == "property") {
+            if (elements.empty())
+                c.fail("property before any element");
+            const bool list = t.size() >= 5 && t[1] == "list";
+            if (t.size() < 3)
+                c.fail("expected \"property TYPE NAME\"");
+            elements.back().properties.push_back({std::string(t.back()), list});
+        }
+    }
+    VolumeMesh m = oneSurface(path);
+    for (const PlyElement &e : elements) {
+        int x = -1, y = -1, z = -1, indices = -1;
+        for (std::size_t p = 0; p < e.properties.size(); ++p) {
+            const std::string &n = e.properties[p].name;
+            if (n == "x")
+                x = static_cast<int>(p);
+            else if (n == "y")
+                y = static_cast<int>(p);
+            else if (n == "z")
+                z = static_cast<int>(p);
+            else if (e.properties[p].list && (n == "vertex_indices" || n == "vertex_index"))
+                indices = static_cast<int>(p);
+        }
+        for (long long i = 0; i < e.count; ++i) {
+            c.nextNonBlank(e.name.c_str());
+            const auto t = c.tokens();
+            std::size_t k = 0;
+            Vec3 point = Vec3::Zero();
+            std::vector<int> face;
+            for (std::size_t p = 0; p < e.properties.size(); ++p) {
+                if (k >= t.size())
+                    c.fail("line too short for the properties of " + e.name);
+                if (e.properties[p].list) {
+                    const int n = c.toInt(t[k++], "a list length");
+                    if (n < 0 || k + static_cast<std::size_t>(n) > t.size())
+                        c.fail("line too short for its list");
+                    for (int j = 0; j < n; ++j) {
+                        const int v = c.toInt(t[k++], "a vertex index");
+                        if (static_cast<int>(p) == indices)
+                            face.push_back(v);
+                    }
+                } else {
+                    const std::string_view token = t[k++];
+                    if (static_cast<int>(p) == x || static_cast<int>(p) == y || static_cast<int>(p) == z)
+                        point[static_cast<int>(p) == x ? 0 : static_cast<int>(p) == y ? 1 : 2] =
+                            c.toDouble(token, "a coordinate");
+                }
+            }
+            if (e.name == "vertex") {
+                if (x < 0 || y < 0 || z < 0)
+                    c.fail("vertices without x, y and z");
+                m.points.push_back(point);
+            } else if (e.name == "face" && indices >= 0) {
+                if (face.size() < 3)
+                    c.fail("a face needs three vertices");
+                for (std::size_t j = 1; j + 1 < face.size(); ++j) { // fan for polygons
+                    m.triangles.push_back({face[0], face[j], face[j + 1]});
+                    m.triangleSurface.push_back(0);
+                }
+            }
+        }
+    }
+    return m;
+}
+
+bool isAsciiPly(const std::string &path)
+{
+    std::ifstream in(path);
+    std::string line;
+    for (int i = 0; i < 3 && std::getline(in, line); ++i)
+        if (line.rfind("format ascii", 0) == 0)
+            return true;
+    return false;
+}
+
+} // namespace
+
+VolumeMesh readStlOrPly(const std::string &path)
+{
+    if (!std::ifstream(path).good())
+        throw FileError(path, 0, "cannot open the file");
+    std::string ext = path.substr(std::min(path.size(), path.find_last_of('.')));
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
+    VolumeMesh m = ext == ".ply" && isAsciiPly(path) ? readAsciiPly(path) : readWithOpenMesh(path);
+    if (m.triangles.empty())
+        throw FileError(path, 0, "no triangle in the file");
+    try {
+        validateMesh(m);
+    } catch (const InputError &e) {
+        throw FileError(path, 0, e.what());
+    }
+    return m;
+}
+
+} // namespace stratamesh

@@ -1,0 +1,16 @@
+// Single surfaces from STL and PLY files as an exchange mesh with one surface (named after the
+// file) and no region. ASCII PLY is parsed here so that double coordinates stay exact (OpenMesh 9
+// reads them as floats); binary PLY and STL (floats by definition) go through OpenMesh, which also
+// merges STL's repeated corners into shared vertices.
+#pragma once
+
+#include "mesh/volume_mesh.h"
+
+#include <string>
+
+namespace stratamesh {
+
+// Throws FileError (with the line for ASCII PLY) when the file cannot be read or has no triangle.
+VolumeMesh readStlOrPly(const std::string &path);
+
+} // namespace stratamesh
