@@ -1,0 +1,90 @@
+// stratamesh-cli convert IN OUT [--msh-version 4.1|2.2] [--save-all] [--surface N] [--json]:
+// one exchange format to another, both chosen by extension (core/io/mesh_writer.h lists them).
+// Volume meshes (.so, .msh, .vtu, .vtk, .vtp) keep their cells; surface models get their topology
+// recovered first so that lines, corners and Gocad BSTONE/BORDER are written too.
+#include "cli_output.h"
+#include "command_args.h"
+#include "io/mesh_reader.h"
+#include "io/mesh_writer.h"
+#include "io/model_reader.h"
+#include "mesh/model_conversion.h"
+#include "model/topology.h"
+
+#include <QFileInfo>
+
+namespace stratamesh::cli {
+
+namespace {
+
+bool isModelFormat(const QString &path)
+{
+    const QString ext = QFileInfo(path).suffix().toLower();
+    return ext == "ml" || ext == "ts" || ext == "obj" || ext == "off" || ext == "stl" || ext == "ply";
+}
+
+} // namespace
+
+int runConvert(CommandArgs &args)
+{
+    const bool json = args.flag(QStringLiteral("--json"));
+    ExportOptions options;
+    options.gmsh.saveAll = args.flag(QStringLiteral("--save-all"));
+    if (const auto version = args.option(QStringLiteral("--msh-version"))) {
+        if (*version == QLatin1String("4.1"))
+            options.gmsh.version = GmshWriteOptions::Version::V41;
+        else if (*version == QLatin1String("2.2"))
+            options.gmsh.version = GmshWriteOptions::Version::V22;
+        else
+            throw UsageError(QStringLiteral("--msh-version must be 4.1 or 2.2, not '%1'").arg(*version));
+    }
+    options.surface = args.intOption(QStringLiteral("--surface"), -1, -1, 1 << 30);
+    const QString in = args.positional(QStringLiteral("input file"));
+    const QString output = args.positional(QStringLiteral("output file"));
+    args.finish();
+    if (!isExportFile(output.toStdString()))
+        throw UsageError(QStringLiteral("cannot tell the output format of '%1' (use .ml, .ts, .so, .vtu, .vtk, "
+                                        ".vtp, .msh, .obj, .off, .stl or .ply)")
+                             .arg(output));
+
+    ExportReport report;
+    QJsonObject counts;
+    if (isVolumeMeshFile(in.toStdString())) {
+        const VolumeMesh mesh = readVolumeMesh(in.toStdString());
+        counts = QJsonObject{{"points", qint64(mesh.points.size())},    {"cells", qint64(mesh.cells.size())},
+                             {"triangles", qint64(mesh.triangles.size())}, {"edges", qint64(mesh.edges.size())},
+                             {"regions", qint64(mesh.regionNames.size())}, {"surfaces", qint64(mesh.surfaces.size())}};
+        if (!mesh.hasCells() && isModelFormat(output))
+            report = exportModel(recoverTopology(modelFromMesh(mesh)), output.toStdString(), options);
+        else
+            report = exportVolumeMesh(mesh, output.toStdString(), options);
+    } else {
+        const Model model = recoverTopology(readModel(in.toStdString()));
+        counts = QJsonObject{{"points", qint64(model.vertices.size())}, {"cells", 0},
+                             {"triangles", qint64(model.triangleCount())}, {"lines", qint64(model.lines.size())},
+                             {"regions", qint64(model.regions.size())},    {"surfaces", qint64(model.surfaces.size())}};
+        report = exportModel(model, output.toStdString(), options);
+    }
+
+    if (json) {
+        printJson(QJsonObject{{"input", in},
+                              {"output", output},
+                              {"format", QString::fromStdString(report.format)},
+                              {"counts", counts},
+                              {"untagged_elements_skipped", qint64(report.untaggedSkipped)},
+                              {"cells_dropped", qint64(report.cellsDropped)}});
+    } else {
+        QTextStream &s = cli::out();
+        s << "wrote " << output << " (" << QString::fromStdString(report.format) << "): "
+          << counts.value("triangles").toInteger() << " triangles, " << counts.value("cells").toInteger()
+          << " cells, " << counts.value("regions").toInteger() << " regions\n";
+        if (report.untaggedSkipped > 0)
+            s << "note: " << report.untaggedSkipped
+              << " elements without a region, surface or line were left out (as Gmsh does); "
+                 "--save-all keeps them\n";
+        if (report.cellsDropped > 0)
+            s << "note: " << report.cellsDropped << " volume cells are not part of this format and were left out\n";
+    }
+    return 0;
+}
+
+} // namespace stratamesh::cli
