@@ -156,6 +156,14 @@ void AtomicFile::commit()
     if (::rename(m_temporary.c_str(), m_path.c_str()) != 0)
         fail("cannot replace the file: " + systemError(errno));
     m_committed = true;
+    // Make the rename itself durable; a failure here leaves a complete file, so it is not an error.
+    const std::size_t slash = m_path.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? std::string(".") : m_path.substr(0, slash + 1);
+    const int dirFd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
+    if (dirFd >= 0) {
+        (void)::fsync(dirFd);
+        ::close(dirFd);
+    }
 }
 
 void writeTextFileAtomically(const std::string &path, const std::function<void(std::ostream &)> &write)
