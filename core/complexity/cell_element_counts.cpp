@@ -1,0 +1,199 @@
+#include "complexity/cell_element_counts.h"
+
+#include "common/error.h"
+#include "complexity/box_elements.h"
+#include "complexity/convex_clip.h"
+#include "complexity/region_locator.h"
+#include "complexity/segment_tree.h"
+#include "complexity/triangle_tree.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+
+namespace stratamesh {
+
+namespace {
+
+struct UnionFind {
+    std::vector<int> parent;
+    explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+    int find(int x)
+    {
+        while (parent[x] != x)
+            x = parent[x] = parent[parent[x]];
+        return x;
+    }
+    void unite(int a, int b) { parent[find(a)] = find(b); }
+};
+
+Box3 paddedBounds(const ConvexPolyhedron &cell)
+{
+    Box3 b = cell.bounds();
+    const Vec3 pad = Vec3::Constant(2.0 * cell.tolerance());
+    return Box3(b.min() - pad, b.max() + pad);
+}
+
+struct Counter {
+    const Model &model;
+    const TriangleTree &triangles;
+    const SegmentTree &segments;
+    const RegionLocator &locator;
+
+    // Surface pieces, and the inner surfaces met (for the regions).
+    int surfacePieces(const ConvexPolyhedron &cell, const Box3 &bounds, std::vector<int> &met) const
+    {
+        std::vector<TriangleRef> in;
+        for (const TriangleRef &r : triangles.trianglesInBox(bounds)) {
+            const Surface &s = model.surfaces[r.surface];
+            const Triangle &t = s.triangles[r.triangle];
+            if (triangleMeetsCell(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]], cell))
+                in.push_back(r);
+        }
+        // Keys (surface, local a, local b) of edges meeting the cell and (surface, v, -1) of
+        // vertices in it, with the triangle holding them; equal keys join their triangles.
+        std::vector<std::pair<std::array<int, 3>, int>> keys;
+        for (int i = 0; i < static_cast<int>(in.size()); ++i) {
+            const Surface &s = model.surfaces[in[i].surface];
+            const Triangle &t = s.triangles[in[i].triangle];
+            for (int k = 0; k < 3; ++k) {
+                const int a = t[k];
+                const int b = t[(k + 1) % 3];
+                if (cell.contains(s.vertices[a]))
+                    keys.push_back({{in[i].surface, a, -1}, i});
+                if (segmentMeetsCell(s.vertices[a], s.vertices[b], cell))
+                    keys.push_back({{in[i].surface, std::min(a, b), std::max(a, b)}, i});
+            }
+        }
+        std::sort(keys.begin(), keys.end());
+        UnionFind uf(static_cast<int>(in.size()));
+        for (std::size_t k = 1; k < keys.size(); ++k)
+            if (keys[k].first == keys[k - 1].first)
+                uf.unite(keys[k].second, keys[k - 1].second);
+        int pieces = 0;
+        for (int i = 0; i < static_cast<int>(in.size()); ++i) {
+            if (uf.find(i) == i)
+                ++pieces;
+            met.push_back(in[i].surface);
+        }
+        return pieces;
+    }
+
+    int linePieces(const ConvexPolyhedron &cell, const Box3 &bounds) const
+    {
+        std::vector<SegmentRef> in;
+        for (const SegmentRef &r : segments.segmentsInBox(bounds)) {
+            const auto [a, b] = lineSegment(model.lines[r.line], r.segment);
+            if (segmentMeetsCell(model.vertices[a], model.vertices[b], cell))
+                in.push_back(r);
+        }
+        int pieces = 0;
+        for (std::size_t begin = 0; begin < in.size();) {
+            std::size_t end = begin;
+            while (end < in.size() && in[end].line == in[begin].line)
+                ++end;
+            const Line &line = model.lines[in[begin].line];
+            const int n = lineSegmentCount(line);
+            int count = static_cast<int>(end - begin);
+            int joins = 0;
+            // Sorted segment ids: consecutive ids are neighbours; for a closed line so are the
+            // last and the first.
+            auto joined = [&](int k) { // segments k and k + 1 (mod n) through vertex k + 1
+                return cell.contains(model.vertices[line.vertices[(k + 1) % line.vertices.size()]]);
+            };
+            for (std::size_t i = begin + 1; i < end; ++i)
+                if (in[i].segment == in[i - 1].segment + 1 && joined(in[i - 1].segment))
+                    ++joins;
+            if (line.closed && count > 1 && in[begin].segment == 0 && in[end - 1].segment == n - 1
+                && joined(n - 1))
+                ++joins;
+            pieces += std::max(count - joins, 1);
+            begin = end;
+        }
+        return pieces;
+    }
+
+    CellElementCounts count(const ConvexPolyhedron &cell, const Vec3 &site) const
+    {
+        CellElementCounts c;
+        if (cell.empty())
+            return c;
+        const Box3 bounds = paddedBounds(cell);
+        std::vector<int> met;
+        c.surfaces = surfacePieces(cell, bounds, met);
+        c.lines = linePieces(cell, bounds);
+        std::vector<int> regions;
+        std::sort(met.begin(), met.end());
+        met.erase(std::unique(met.begin(), met.end()), met.end());
+        for (int s : met)
+            regions.insert(regions.end(), model.surfaces[s].regions.begin(),
+                           model.surfaces[s].regions.end());
+        std::sort(regions.begin(), regions.end());
+        regions.erase(std::unique(regions.begin(), regions.end()), regions.end());
+        if (regions.empty() && locator.regionAt(site) >= 0)
+            c.regions = 1;
+        else
+            c.regions = static_cast<int>(regions.size());
+        return c;
+    }
+};
+
+// The cell of each inner corner: the one of its nearest site (ties: the smaller index).
+std::vector<int> cornersPerCell(const Model &model, const std::vector<int> &corners,
+                                const std::vector<Vec3> &sites)
+{
+    std::vector<int> perCell(sites.size(), 0);
+    for (int c : corners) {
+        const Vec3 &p = model.vertices[model.corners[c].vertex];
+        int best = -1;
+        double bestDistance = 0.0;
+        for (std::size_t i = 0; i < sites.size(); ++i) {
+            const double d = (sites[i] - p).squaredNorm();
+            if (best < 0 || d < bestDistance) {
+                best = static_cast<int>(i);
+                bestDistance = d;
+            }
+        }
+        if (best >= 0)
+            ++perCell[best];
+    }
+    return perCell;
+}
+
+} // namespace
+
+std::vector<CellElementCounts> countElementsInCells(const Model &model, const std::vector<Vec3> &sites,
+                                                    const std::vector<ConvexPolyhedron> &cells,
+                                                    Progress &progress)
+{
+    if (sites.size() != cells.size())
+        throw InputError("cell counts: " + std::to_string(sites.size()) + " sites but "
+                         + std::to_string(cells.size()) + " cells");
+    const BoxElements box = boxElements(model);
+    const TriangleTree triangles(model, box.innerSurfaces());
+    const SegmentTree segments(model, box.innerLines());
+    const RegionLocator locator(model);
+    const Counter counter{model, triangles, segments, locator};
+    const std::vector<int> corners = cornersPerCell(model, box.innerCorners(), sites);
+
+    std::vector<CellElementCounts> counts(cells.size());
+    const std::size_t chunk = 2048;
+    for (std::size_t first = 0; first < cells.size(); first += chunk) {
+        progress.tick(static_cast<double>(first) / cells.size(), "counting elements per cell");
+        const std::size_t last = std::min(cells.size(), first + chunk);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 16),
+                          [&](const tbb::blocked_range<std::size_t> &r) {
+                              for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                                  counts[i] = counter.count(cells[i], sites[i]);
+                                  counts[i].corners = corners[i];
+                              }
+                          });
+    }
+    progress.tick(1.0, "counting elements per cell");
+    return counts;
+}
+
+} // namespace stratamesh
