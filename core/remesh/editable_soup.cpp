@@ -142,6 +142,13 @@ int EditableSoup::addTriangle(const std::array<int, 3> &v, int surface)
     return t;
 }
 
+int EditableSoup::addPoint(const OutputPoint &p)
+{
+    m_mesh.points.push_back(p);
+    m_vertexTriangles.emplace_back();
+    return static_cast<int>(m_mesh.points.size()) - 1;
+}
+
 void EditableSoup::removeTriangle(int t)
 {
     if (!m_alive[t])

@@ -43,6 +43,7 @@ public:
     int featureEdgeCount(int v) const;
 
     int addTriangle(const std::array<int, 3> &v, int surface);
+    int addPoint(const OutputPoint &p);
     void removeTriangle(int t);
 
     // Moves u onto w (w at `target`): triangles with both die, the others now use w. Checks the

@@ -1,12 +1,14 @@
 #include "remesh/surface_remesher.h"
 
 #include "common/error.h"
+#include "cvt/cvt_optimizer.h"
+#include "cvt/initial_sampling.h"
 #include "model/topology.h"
 #include "remesh/cell_components.h"
+#include "remesh/duplicate_separation.h"
 #include "remesh/editable_soup.h"
 #include "remesh/output_model_builder.h"
 #include "remesh/output_points.h"
-#include "remesh/site_sampling.h"
 #include "voronoi/restricted_voronoi.h"
 #include "voronoi/restriction_domain.h"
 
@@ -90,6 +92,7 @@ RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &s
     const CleanupCounts v3 = removeValence3Vertices(soup, input, result.ledger);
     result.cleanup = removeDegenerateTriangles(soup, input, params.cleanup, result.ledger);
     result.cleanup.valence3 = v3.valence3;
+    result.duplicates = separateDuplicateTriangles(soup, input);
     if (params.flips)
         result.cleanup.flips += improveByFlips(soup);
     progress.tick(0.7, "intersections");
@@ -113,10 +116,14 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     const RestrictionDomain domain =
         makeRestrictionDomain(input, params.adaptive ? adaptiveDensity(input, params) : std::vector<double>{});
     const int n = params.sites > 0 ? params.sites : sitesForEdgeLength(domain.surfaceArea(), params.edgeLength);
-    Progress &p = progress;
-    const LloydResult optimised = lloydRelaxation(domain, sampleSites(domain, n, params.seed), params.iterations, p);
+    CvtParams cvt;
+    cvt.iterations = params.iterations;
+    cvt.alpha = params.boundaryWeight;
+    const CvtResult optimised =
+        params.iterations > 0 ? optimizeCvt(domain, sampleSurfaces(domain, n, params.seed), cvt, progress) : CvtResult{};
+    const std::vector<Vec3> sites = params.iterations > 0 ? optimised.sites : sampleSurfaces(domain, n, params.seed);
     const double sampling = secondsSince(start);
-    RemeshResult result = remeshWithSites(input, optimised.sites, params, p);
+    RemeshResult result = remeshWithSites(input, sites, params, progress);
     result.energy = optimised.energy;
     result.timings.samplingSeconds = sampling;
     result.timings.totalSeconds = secondsSince(start);

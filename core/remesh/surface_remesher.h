@@ -12,6 +12,7 @@
 
 #include "common/progress.h"
 #include "remesh/dual_faces.h"
+#include "remesh/duplicate_separation.h"
 #include "remesh/intersection_repair.h"
 #include "remesh/mesh_cleanup.h"
 #include "remesh/simplification_ledger.h"
@@ -25,6 +26,7 @@ struct RemeshParams {
     double edgeLength = 0.0; // target edge length: sites = area / (√3/2 · L²), a hexagonal packing
     double dResolution = 0.0; // Alg 4.2 step 4; 0 disables the merge of close features
     int iterations = 100;    // CVT iterations (thesis: 100)
+    double boundaryWeight = 0.5; // α of F = (1 − α) F_CVT + α F_B (thesis §4.3.2)
     unsigned seed = 1;       // initial random sampling
     bool adaptive = false;   // density ρ = (1 − d/d_max)^exponent from the distance d to corners (Fig 4.19)
     double adaptiveExponent = 4.0;
@@ -49,6 +51,7 @@ struct RemeshResult {
     RemeshTimings timings;
     DualFaceCounts faces;
     CleanupCounts cleanup;
+    DuplicateSeparation duplicates;
     IntersectionRepairResult intersections;
 };
 

@@ -1,0 +1,20 @@
+// Two surfaces closer than the resolution (a thin lens between a horizon and a fault, thesis
+// Fig 4.7b) are sampled by the same cells, whose dual triangles then coincide: the same three
+// points in both surfaces. The thesis joins such surfaces; a B-Rep cannot hold one triangle in
+// two surfaces, so each copy gets its own vertex on its input surface (the copy's centroid moved
+// along its normal to the input surface), which separates them again by the lens thickness.
+#pragma once
+
+#include "remesh/editable_soup.h"
+
+namespace stratamesh {
+
+struct DuplicateSeparation {
+    int duplicateGroups = 0;  // sets of triangles on the same three points
+    int splitTriangles = 0;   // copies split by a vertex on their input surface
+    int removedTriangles = 0; // exact copies inside one surface, dropped
+};
+
+DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &input);
+
+} // namespace stratamesh
