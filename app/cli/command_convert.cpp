@@ -48,7 +48,7 @@ int runConvert(CommandArgs &args)
 
     ExportReport report;
     QJsonObject counts;
-    if (isVolumeMeshFile(in.toStdString())) {
+    if (isMeshReaderFile(in.toStdString())) {
         const VolumeMesh mesh = readVolumeMesh(in.toStdString());
         counts = QJsonObject{{"points", qint64(mesh.points.size())},    {"cells", qint64(mesh.cells.size())},
                              {"triangles", qint64(mesh.triangles.size())}, {"edges", qint64(mesh.edges.size())},

@@ -30,8 +30,13 @@ std::string lowerExtension(const std::string &path)
 bool isVolumeMeshFile(const std::string &path)
 {
     const std::string ext = lowerExtension(path);
-    return ext == ".so" || ext == ".msh" || ext == ".vtu" || ext == ".vtk" || ext == ".vtp" || ext == ".stl" ||
-           ext == ".ply";
+    return ext == ".so" || ext == ".msh" || ext == ".vtu" || ext == ".vtk" || ext == ".vtp";
+}
+
+bool isMeshReaderFile(const std::string &path)
+{
+    const std::string ext = lowerExtension(path);
+    return isVolumeMeshFile(path) || ext == ".stl" || ext == ".ply";
 }
 
 VolumeMesh readVolumeMesh(const std::string &path)

@@ -1,6 +1,7 @@
 // Reading the exchange meshes by extension: Gocad TSolid (.so), Gmsh (.msh), VTK (.vtu, .vtk,
 // .vtp), and single surfaces in STL or PLY. Surface-only files give a mesh without cells;
-// readMeshAsModel() turns any of them into a surface model (readModel() calls it).
+// readMeshAsModel() turns any of them into a surface model (readModel() calls it for the
+// isVolumeMeshFile() extensions).
 #pragma once
 
 #include "mesh/volume_mesh.h"
@@ -10,8 +11,10 @@
 
 namespace stratamesh {
 
-// True for .so, .msh, .vtu, .vtk, .vtp, .stl, .ply (case-insensitive).
+// True for .so, .msh, .vtu, .vtk, .vtp (case-insensitive): the formats that may hold cells.
 bool isVolumeMeshFile(const std::string &path);
+// True for every extension readVolumeMesh() knows: the above plus .stl and .ply.
+bool isMeshReaderFile(const std::string &path);
 
 // Throws FileError for an unknown extension or unreadable content (file, line and cause).
 VolumeMesh readVolumeMesh(const std::string &path);
