@@ -82,6 +82,22 @@ private slots:
         diff = test::compareModels(model, readModel(ts), noRegions);
         QVERIFY2(diff.empty(), ("ts: " + diff).c_str());
 
+        // Single-surface formats: the largest surface, exactly (STL: floats by definition).
+        int largest = 0;
+        for (int i = 0; i < int(model.surfaces.size()); ++i)
+            if (model.surfaces[i].triangles.size() > model.surfaces[largest].triangles.size())
+                largest = i;
+        for (const char *ext : {"obj", "off", "ply"}) {
+            const std::string out = dir.filePath(QString("s.") + ext).toStdString();
+            ExportOptions options;
+            options.surface = largest;
+            exportModel(model, out, options);
+            const Model back = QString(ext) == "ply" ? readMeshAsModel(out) : readModel(out);
+            QCOMPARE(back.surfaces.size(), std::size_t(1));
+            QCOMPARE(back.surfaces[0].vertices, model.surfaces[largest].vertices);
+            QCOMPARE(back.surfaces[0].triangles, model.surfaces[largest].triangles);
+        }
+
         // Meshes: the conformal surface mesh with its lines and corners.
         const VolumeMesh mesh = meshFromModel(model);
         std::vector<Format> formats = meshFormats();
