@@ -34,8 +34,14 @@ std::string iterationStage(int k, int n, double f, double g)
     return buffer;
 }
 
-// Sites are optimised in normalised coordinates x = (s − c)/L (bounding box centre and
-// diagonal) so that L-BFGS differences keep their digits on georeferenced models.
+// Sites are optimised in normalised coordinates x = (s − c)/L around the bounding box centre,
+// so that L-BFGS differences keep their digits on georeferenced models. L = √area/10: LBFGSpp's
+// first step moves the sites by a total length of one unit, a tenth of the typical spacing per
+// site; later steps are scale-free.
+//
+// A configuration where a site's restricted cell has become empty is refused (its energy is
+// +∞, so the line search shortens the step): a site without a cell has no gradient and would
+// never come back ("no site lost").
 class Objective {
 public:
     Objective(const RestrictionDomain &domain, const CvtParams &params, Progress &progress, CvtResult &result)
@@ -47,7 +53,8 @@ public:
             hi = hi.cwiseMax(p);
         }
         m_center = domain.points.empty() ? Vec3::Zero() : Vec3(0.5 * (lo + hi));
-        m_scale = domain.points.empty() ? 1.0 : std::max((hi - lo).norm(), 1e-300);
+        const double area = domain.surfaceArea();
+        m_scale = area > 0 ? 0.1 * std::sqrt(area) : domain.points.empty() ? 1.0 : std::max((hi - lo).norm(), 1e-300);
     }
 
     Vector toX(const std::vector<Vec3> &sites) const
@@ -77,6 +84,14 @@ public:
 
     const CvtEvaluation &last() const { return m_last; }
 
+    static int emptyCells(const CvtEvaluation &e)
+    {
+        int n = 0;
+        for (double m : e.cells.mass)
+            n += !(m > 0);
+        return n;
+    }
+
     // LBFGSpp interface.
     double operator()(const Vector &x, Vector &grad)
     {
@@ -87,6 +102,13 @@ public:
         }
         const CvtEvaluation &e = m_last;
         grad.resize(x.size());
+        const int empty = emptyCells(e);
+        if (m_allowedEmpty < 0)
+            m_allowedEmpty = empty; // the starting configuration
+        if (empty > m_allowedEmpty) {
+            grad.setZero();
+            return std::numeric_limits<double>::infinity();
+        }
         for (std::size_t i = 0; i < e.gradient.size(); ++i)
             grad.segment<3>(3 * i) = m_scale * e.gradient[i];
         return e.energy;
@@ -125,6 +147,7 @@ private:
     CvtEvaluation m_last;
     Vec3 m_center;
     double m_scale = 1;
+    int m_allowedEmpty = -1;
     double m_fraction = 0;
     std::string m_stage = "CVT";
 };

@@ -120,38 +120,29 @@ CellClipper::CellClipper(const RestrictionDomain &domain, const SiteDelaunay &de
     m_visited.reserve(16);
 }
 
-void CellClipper::wholeTriangle(int t, std::vector<ClipVertex> &polygon) const
+void CellClipper::wholeTriangle(int t, int site, std::vector<ClipVertex> &polygon) const
 {
     const Triangle &tri = m_domain.triangles[t];
+    const Vec3 &pi = m_delaunay.site(site);
     polygon.resize(3);
     for (int c = 0; c < 3; ++c) {
         ClipVertex &v = polygon[c];
-        v.position = m_domain.points[tri[c]];
-        v.error = 0;
+        v.position = m_domain.points[tri[c]] - pi;
+        v.error = 2 * kUnit * v.position.norm(); // one rounded subtraction per coordinate
         v.u = c == 1 ? 1.0 : 0.0;
         v.v = c == 2 ? 1.0 : 0.0;
         v.out = inputEdgeSupport(c);
     }
 }
 
-int CellClipper::sideOfPolygonVertex(int t, int site, const std::vector<ClipVertex> &polygon, int k, int l) const
+int CellClipper::exactSide(int t, int site, const std::vector<ClipVertex> &polygon, int k, int l) const
 {
     const std::vector<Vec3> &sites = m_delaunay.sites();
     const Vec3 &pi = sites[site], &pl = sites[l];
-    const ClipVertex &v = polygon[k];
-    // Filter on the computed position: rounding of the expression plus the position's error.
-    double magnitude = 0;
-    const double value = powerDifference(v.position, pi, pl, magnitude);
-    const double bound = 6.2 * kUnit * magnitude + 2.02 * (pi - pl).norm() * v.error;
-    if (value > bound)
-        return 1;
-    if (value < -bound)
-        return -1;
-
     const Triangle &tri = m_domain.triangles[t];
     const std::vector<Vec3> &pts = m_domain.points;
     const int n = static_cast<int>(polygon.size());
-    const int in = polygon[(k + n - 1) % n].out, out = v.out;
+    const int in = polygon[(k + n - 1) % n].out, out = polygon[k].out;
     if (in < 0 && out < 0)
         return sideOfInputVertex(pts[tri[inputEdgeOf(out)]], pi, site, pl, l);
     if (in < 0 || out < 0) {
@@ -162,53 +153,40 @@ int CellClipper::sideOfPolygonVertex(int t, int site, const std::vector<ClipVert
     return sideOfFaceVertex(pts[tri[0]], pts[tri[1]], pts[tri[2]], pi, site, sites[in], in, sites[out], out, pl, l);
 }
 
-ClipVertex CellClipper::cutVertex(int t, int site, const ClipVertex &from, const ClipVertex &, int l) const
-{
-    const Triangle &tri = m_domain.triangles[t];
-    const std::vector<Vec3> &pts = m_domain.points;
-    ClipVertex x;
-    if (from.out < 0) {
-        const int e = inputEdgeOf(from.out);
-        const int ca = e, cb = (e + 1) % 3;
-        const ComputedPoint p = edgeVertexPoint(pts, m_delaunay.sites(), tri[ca], tri[cb], site, l);
-        const double tau = tri[ca] < tri[cb] ? p.t : 1.0 - p.t; // from corner ca to corner cb
-        double lambda[3] = {0, 0, 0};
-        lambda[ca] = 1.0 - tau;
-        lambda[cb] = tau;
-        x.position = p.position;
-        x.error = p.error;
-        x.u = lambda[1];
-        x.v = lambda[2];
-    } else {
-        const ComputedPoint p = faceVertexPoint(pts[tri[0]], pts[tri[1]], pts[tri[2]], m_delaunay.sites(), site,
-                                                from.out, l, x.u, x.v);
-        x.position = p.position;
-        x.error = p.error;
-    }
-    return x;
-}
-
 void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon)
 {
-    wholeTriangle(t, polygon);
+    wholeTriangle(t, site, polygon);
     const Vec3 &pi = m_delaunay.site(site);
-    const auto radius = [&] {
-        double r = 0;
-        for (const ClipVertex &v : polygon)
-            r = std::max(r, (v.position - pi).norm() + v.error);
-        return 2.0 * r * (1.0 + 1e-12);
+    // Largest |x'| and largest position error over the polygon.
+    double radius = 0, largestError = 0;
+    const auto measure = [&] {
+        radius = 0;
+        largestError = 0;
+        for (const ClipVertex &v : polygon) {
+            radius = std::max(radius, v.position.norm());
+            largestError = std::max(largestError, v.error);
+        }
     };
-    double limit = radius();
+    measure();
     const int *nb = m_delaunay.neighboursBegin(site);
     const double *dist = m_delaunay.neighbourDistances(site);
     const int count = m_delaunay.neighbourCount(site);
-    for (int q = 0; q < count && dist[q] <= limit; ++q) {
+    for (int q = 0; q < count && dist[q] <= 2.0 * (radius + largestError) * (1.0 + 1e-12); ++q) {
         const int l = nb[q];
+        // In the site's frame, π_l − π_i = 2·(h − d·x') with d = p_l − p_i, h = |d|²/2. The bound
+        // covers the rounding of d, h and the dot product, and the error of x'.
+        const Vec3 d = m_delaunay.site(l) - pi;
+        const double h = 0.5 * d.squaredNorm();
+        const double dn = d.norm();
+        const double bound = 1.01 * dn * largestError + 8 * kUnit * (dn * radius + h);
         const int n = static_cast<int>(polygon.size());
         m_sides.resize(n);
+        m_values.resize(n);
         int positive = 0;
         for (int k = 0; k < n; ++k) {
-            m_sides[k] = sideOfPolygonVertex(t, site, polygon, k, l);
+            const double value = h - d.dot(polygon[k].position);
+            m_values[k] = value;
+            m_sides[k] = value > bound ? 1 : value < -bound ? -1 : exactSide(t, site, polygon, k, l);
             positive += m_sides[k] > 0;
         }
         if (positive == n)
@@ -219,23 +197,35 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
         }
         m_next.clear();
         for (int k = 0; k < n; ++k) {
+            const int k1 = (k + 1) % n;
             const ClipVertex &a = polygon[k];
-            const ClipVertex &b = polygon[(k + 1) % n];
+            const ClipVertex &b = polygon[k1];
             if (m_sides[k] > 0)
                 m_next.push_back(a);
-            if (m_sides[k] != m_sides[(k + 1) % n]) {
-                ClipVertex x = cutVertex(t, site, a, b, l);
-                if (m_sides[k] > 0) {
-                    x.out = l; // leaving the cell: the polygon follows the bisector
-                } else {
-                    x.out = a.out; // entering: back on the support we were cutting
-                }
-                m_next.push_back(x);
+            if (m_sides[k] == m_sides[k1])
+                continue;
+            // The exact crossing lies on the exact edge [a*, b*]; its parameter is known up to
+            // the errors of the two values.
+            const double va = m_values[k], vb = m_values[k1], gap = std::fabs(va - vb);
+            const double length = (b.position - a.position).norm();
+            ClipVertex x;
+            double tau = 0.5, tauError = 1.0;
+            if (gap > 2 * bound) {
+                tau = std::clamp(va / (va - vb), 0.0, 1.0);
+                tauError = std::min(1.0, 2 * bound / (gap - 2 * bound) + 4 * kUnit);
             }
+            x.position = a.position + tau * (b.position - a.position);
+            x.u = a.u + tau * (b.u - a.u);
+            x.v = a.v + tau * (b.v - a.v);
+            const double maxError = std::max(a.error, b.error);
+            x.error = maxError * (1 + 2 * tauError) + length * tauError + 4 * kUnit * (a.position.norm() + length);
+            // Leaving the cell, the polygon follows the bisector; entering, it resumes the support
+            // that was cut.
+            x.out = m_sides[k] > 0 ? l : a.out;
+            m_next.push_back(x);
         }
-        // The vertex kept before a leaving cut now runs along the cut support to it: unchanged.
         polygon.swap(m_next);
-        limit = radius();
+        measure();
     }
 }
 

@@ -5,8 +5,12 @@
 //
 // The triangle is clipped by the bisectors of the site's Voronoi neighbours in order of
 // distance, stopping when the next neighbour is farther than twice the farthest polygon vertex
-// (no bisector beyond can cut it). Every side decision goes through rvd_predicates.h on the
-// vertex's symbol; computed positions only serve a filter that carries a proven error bound.
+// (no bisector beyond can cut it). Work is done in the site's frame (positions relative to the
+// site) where a side test is one dot product; each computed position carries a proven bound on
+// its distance to the exact symbolic point, and whenever that bound leaves the side in doubt,
+// rvd_predicates.h decides exactly on the vertex's symbol. Decisions are therefore those of the
+// exact (perturbed) diagram; positions are only approximate, and the symbolic diagram
+// (restricted_voronoi.h) recomputes them canonically from the symbols.
 // Neighbouring cells are reached through the bisectors that bound the clipped polygon, so each
 // triangle–site pair is clipped once.
 #pragma once
@@ -27,7 +31,7 @@ inline int inputEdgeSupport(int e) { return -1 - e; }
 inline int inputEdgeOf(int support) { return -1 - support; }
 
 struct ClipVertex {
-    Vec3 position;
+    Vec3 position;      // relative to the cell's site
     double error = 0;   // proven bound on |position − exact point|
     double u = 0, v = 0; // barycentric weights of corners 1 and 2 of the input triangle
     int out = 0;        // support of the edge from this vertex to the next one
@@ -68,7 +72,7 @@ public:
     template <class Emit> void forEachTrianglePart(int t, const int owners[3], Emit &&emit)
     {
         if (owners[0] == owners[1] && owners[1] == owners[2]) {
-            wholeTriangle(t, m_polygon);
+            wholeTriangle(t, owners[0], m_polygon);
             emit(owners[0], m_polygon);
             return;
         }
@@ -112,11 +116,10 @@ public:
     }
 
 private:
-    void wholeTriangle(int t, std::vector<ClipVertex> &polygon) const;
+    void wholeTriangle(int t, int site, std::vector<ClipVertex> &polygon) const;
     // Clips [first, second] of segment s by the cell of site; first must stay.
     void clipSegment(int s, int site, SegmentEnd &first, SegmentEnd &second);
-    int sideOfPolygonVertex(int t, int site, const std::vector<ClipVertex> &polygon, int k, int l) const;
-    ClipVertex cutVertex(int t, int site, const ClipVertex &from, const ClipVertex &to, int l) const;
+    int exactSide(int t, int site, const std::vector<ClipVertex> &polygon, int k, int l) const;
     [[noreturn]] void throwInconsistent(int segment) const;
 
     const RestrictionDomain &m_domain;
@@ -124,6 +127,7 @@ private:
     std::vector<ClipVertex> m_polygon, m_next;
     std::vector<int> m_visited;
     std::vector<int> m_sides;
+    std::vector<double> m_values;
 };
 
 } // namespace stratamesh::rvd

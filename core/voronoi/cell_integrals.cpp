@@ -124,7 +124,7 @@ CellIntegrals integrateCells(const RestrictionDomain &domain, const SiteDelaunay
                         rho[k] = domain.density[tri[k]];
                 clipper.forEachTrianglePart(t, own, [&](int site, const std::vector<rvd::ClipVertex> &polygon) {
                     const rvd::PolygonIntegrals in =
-                        rvd::integratePolygon(polygon, sites[site], domain.density.empty() ? nullptr : rho);
+                        rvd::integratePolygon(polygon, domain.density.empty() ? nullptr : rho);
                     if (!out.empty() && out.back().site == site) {
                         SurfaceRecord &b = out.back();
                         b.area += in.area;

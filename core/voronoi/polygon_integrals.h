@@ -24,22 +24,35 @@ struct PolygonIntegrals {
     }
 };
 
-// Integrals of the polygon relative to origin; rho holds the density at the input triangle's
-// corners, or is null for ρ = 1.
-inline PolygonIntegrals integratePolygon(const std::vector<ClipVertex> &polygon, const Vec3 &origin,
-                                         const double *rho)
+// Integrals of a clipped polygon about its site (ClipVertex positions are relative to it);
+// rho holds the density at the input triangle's corners, or is null for ρ = 1.
+inline PolygonIntegrals integratePolygon(const std::vector<ClipVertex> &polygon, const double *rho)
 {
     PolygonIntegrals r;
     const int n = static_cast<int>(polygon.size());
     if (n < 3)
         return r;
+    const Vec3 &x0 = polygon[0].position;
+    if (!rho) {
+        // ρ = 1: ∫(y − o) = S/3 ΣX, ∫|y − o|² = S/6 (Σ|X|² + Σ_{p<q} X_p·X_q).
+        for (int k = 1; k + 1 < n; ++k) {
+            const Vec3 &x1 = polygon[k].position, &x2 = polygon[k + 1].position;
+            const double s = 0.5 * (x1 - x0).cross(x2 - x0).norm();
+            const Vec3 sum = x0 + x1 + x2;
+            r.area += s;
+            r.firstMoment += s / 3.0 * sum;
+            r.energy += s / 12.0 * (sum.squaredNorm() + x0.squaredNorm() + x1.squaredNorm() + x2.squaredNorm());
+        }
+        r.mass = r.area;
+        r.massMoment = r.firstMoment;
+        return r;
+    }
     const auto density = [&](const ClipVertex &v) {
-        return rho ? rho[0] * (1.0 - v.u - v.v) + rho[1] * v.u + rho[2] * v.v : 1.0;
+        return rho[0] * (1.0 - v.u - v.v) + rho[1] * v.u + rho[2] * v.v;
     };
-    const Vec3 x0 = polygon[0].position - origin;
     const double r0 = density(polygon[0]);
     for (int k = 1; k + 1 < n; ++k) {
-        const Vec3 X[3] = {x0, polygon[k].position - origin, polygon[k + 1].position - origin};
+        const Vec3 X[3] = {x0, polygon[k].position, polygon[k + 1].position};
         const double p[3] = {r0, density(polygon[k]), density(polygon[k + 1])};
         const double s = 0.5 * (X[1] - X[0]).cross(X[2] - X[0]).norm();
         const Vec3 sum = X[0] + X[1] + X[2];

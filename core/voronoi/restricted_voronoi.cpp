@@ -79,6 +79,28 @@ RvdSymbol polygonVertexSymbol(const Triangle &tri, int t, int site, int in, int 
     return faceSymbol(t, site, in, out);
 }
 
+// Position of a symbolic vertex computed from its symbol only: bit-identical in every cell,
+// triangle and line sharing it.
+LocalVertex canonicalVertex(const RestrictionDomain &domain, const std::vector<Vec3> &sites, const RvdSymbol &s)
+{
+    switch (s.kind) {
+    case RvdVertexKind::InputVertex:
+        return {s, domain.points[s.a], 0.0};
+    case RvdVertexKind::EdgeBisector: {
+        const rvd::ComputedPoint p = rvd::edgeVertexPoint(domain.points, sites, s.a, s.b, s.sites[0], s.sites[1]);
+        return {s, p.position, p.error};
+    }
+    case RvdVertexKind::FaceVoronoiEdge: {
+        const Triangle &t = domain.triangles[s.a];
+        double u = 0, v = 0;
+        const rvd::ComputedPoint p = rvd::faceVertexPoint(domain.points[t[0]], domain.points[t[1]], domain.points[t[2]],
+                                                          sites, s.sites[0], s.sites[1], s.sites[2], u, v);
+        return {s, p.position, p.error};
+    }
+    }
+    return {s, Vec3::Zero(), 0.0};
+}
+
 int chunks(std::size_t n) { return static_cast<int>((n + kChunk - 1) / kChunk); }
 
 void checkCancel(const Progress &progress)
@@ -145,19 +167,18 @@ RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domai
                     continue;
                 const int own[3] = {owners[tri[0]], owners[tri[1]], owners[tri[2]]};
                 clipper.forEachTrianglePart(t, own, [&](int site, const std::vector<rvd::ClipVertex> &poly) {
-                    const rvd::PolygonIntegrals in = rvd::integratePolygon(poly, sites[site], nullptr);
+                    const rvd::PolygonIntegrals in = rvd::integratePolygon(poly, nullptr);
                     const int n = static_cast<int>(poly.size());
                     Vec3 centroid = sites[site] + in.firstMoment / in.area;
                     if (!(in.area > 0)) {
-                        centroid.setZero();
+                        centroid = sites[site];
                         for (const rvd::ClipVertex &v : poly)
                             centroid += v.position / n;
                     }
                     out.polygons.push_back({site, t, static_cast<int>(out.vertices.size()), n, in.area, centroid});
                     for (int k = 0; k < n; ++k) {
                         const int inSupport = poly[(k + n - 1) % n].out;
-                        out.vertices.push_back({polygonVertexSymbol(tri, t, site, inSupport, poly[k].out),
-                                                poly[k].position, poly[k].error});
+                        out.vertices.push_back(canonicalVertex(domain, sites, polygonVertexSymbol(tri, t, site, inSupport, poly[k].out)));
                         out.supports.push_back(poly[k].out);
                     }
                 });

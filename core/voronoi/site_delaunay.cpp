@@ -26,6 +26,37 @@ using CellHandle = Dt::Cell_handle;
 
 K::Point_3 toPoint(const Vec3 &v) { return {v.x(), v.y(), v.z()}; }
 
+// True when e is certainly not on the sphere through a, b, c, d: the in-sphere determinant in
+// double is farther from zero than its error bound (Shewchuk 1997, "Adaptive precision
+// floating-point arithmetic", insphere errboundA). Only the doubtful cases reach the exact test.
+bool certainlyNotCospherical(const K::Point_3 &a, const K::Point_3 &b, const K::Point_3 &c, const K::Point_3 &d,
+                             const K::Point_3 &e)
+{
+    const double aex = a.x() - e.x(), bex = b.x() - e.x(), cex = c.x() - e.x(), dex = d.x() - e.x();
+    const double aey = a.y() - e.y(), bey = b.y() - e.y(), cey = c.y() - e.y(), dey = d.y() - e.y();
+    const double aez = a.z() - e.z(), bez = b.z() - e.z(), cez = c.z() - e.z(), dez = d.z() - e.z();
+    const double aexbey = aex * bey, bexaey = bex * aey, bexcey = bex * cey, cexbey = cex * bey;
+    const double cexdey = cex * dey, dexcey = dex * cey, dexaey = dex * aey, aexdey = aex * dey;
+    const double aexcey = aex * cey, cexaey = cex * aey, bexdey = bex * dey, dexbey = dex * bey;
+    const double ab = aexbey - bexaey, bc = bexcey - cexbey, cd = cexdey - dexcey, da = dexaey - aexdey;
+    const double ac = aexcey - cexaey, bd = bexdey - dexbey;
+    const double abc = aez * bc - bez * ac + cez * ab;
+    const double bcd = bez * cd - cez * bd + dez * bc;
+    const double cda = cez * da + dez * ac + aez * cd;
+    const double dab = dez * ab + aez * bd + bez * da;
+    const double alift = aex * aex + aey * aey + aez * aez, blift = bex * bex + bey * bey + bez * bez;
+    const double clift = cex * cex + cey * cey + cez * cez, dlift = dex * dex + dey * dey + dez * dez;
+    const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+    const auto A = [](double x) { return std::fabs(x); };
+    const double permanent =
+        ((A(cexdey) + A(dexcey)) * A(bez) + (A(dexbey) + A(bexdey)) * A(cez) + (A(bexcey) + A(cexbey)) * A(dez)) * alift +
+        ((A(dexaey) + A(aexdey)) * A(cez) + (A(aexcey) + A(cexaey)) * A(dez) + (A(cexdey) + A(dexcey)) * A(aez)) * blift +
+        ((A(aexbey) + A(bexaey)) * A(dez) + (A(bexdey) + A(dexbey)) * A(aez) + (A(dexaey) + A(aexdey)) * A(bez)) * clift +
+        ((A(bexcey) + A(cexbey)) * A(aez) + (A(cexaey) + A(aexcey)) * A(bez) + (A(aexbey) + A(bexaey)) * A(cez)) * dlift;
+    constexpr double u = 0x1p-53;
+    return std::fabs(det) > (16.0 + 224.0 * u) * u * permanent && permanent < 1e250;
+}
+
 // Pairs of Delaunay cells (or hull facets) lying on one sphere (or one plane): their vertices
 // form a cluster whose triangulation is not unique.
 struct DegenerateClusters {
@@ -69,6 +100,7 @@ void collectDimension3(const Dt &dt, std::vector<std::pair<int, int>> &pairs, De
 {
     const K::Side_of_oriented_sphere_3 sideOfSphere = dt.geom_traits().side_of_oriented_sphere_3_object();
     const K::Orientation_3 orientation = dt.geom_traits().orientation_3_object();
+    const auto sideOfCircle = dt.geom_traits().coplanar_side_of_bounded_circle_3_object();
     for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
         const CellHandle ch = c;
         const bool infinite = dt.is_infinite(ch);
@@ -83,16 +115,20 @@ void collectDimension3(const Dt &dt, std::vector<std::pair<int, int>> &pairs, De
             const bool nInfinite = dt.is_infinite(n);
             const auto opposite = n->vertex(n->index(ch));
             if (!infinite && !nInfinite) {
-                if (sideOfSphere(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                if (!certainlyNotCospherical(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                             c->vertex(3)->point(), opposite->point()) &&
+                    sideOfSphere(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
                                  c->vertex(3)->point(), opposite->point()) == CGAL::ON_ORIENTED_BOUNDARY)
                     clusters.links.emplace_back(ch, n);
-            } else if (infinite && nInfinite && !dt.is_infinite(c->vertex(f))) {
-                // Two hull facets sharing an edge: degenerate when their four sites are coplanar.
-                std::vector<K::Point_3> p;
+            } else if (infinite && nInfinite) {
+                // Two hull facets sharing an edge: degenerate when their four sites are cocircular.
+                K::Point_3 p[3];
+                int m = 0;
                 for (int v = 0; v < 4; ++v)
                     if (!dt.is_infinite(c->vertex(v)))
-                        p.push_back(c->vertex(v)->point());
-                if (p.size() == 3 && orientation(p[0], p[1], p[2], opposite->point()) == CGAL::COPLANAR)
+                        p[m++] = c->vertex(v)->point();
+                if (m == 3 && orientation(p[0], p[1], p[2], opposite->point()) == CGAL::COPLANAR &&
+                    sideOfCircle(p[0], p[1], p[2], opposite->point()) == CGAL::ON_BOUNDARY)
                     clusters.links.emplace_back(ch, n);
             }
         }

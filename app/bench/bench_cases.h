@@ -1,0 +1,36 @@
+// The benchmark cases of the Voronoi engine (issue 3): a real model and a large generated
+// surface, each optimised with the default CVT parameters.
+#pragma once
+
+#include "voronoi/restriction_domain.h"
+
+#include <string>
+
+namespace stratamesh::bench {
+
+struct BenchResult {
+    std::string name;
+    std::size_t triangles = 0;
+    std::size_t segments = 0;
+    int sites = 0;
+    int iterations = 0;
+    int evaluations = 0;
+    double setupSeconds = 0;    // reading, topology, domain, sampling
+    double totalSeconds = 0;    // optimisation
+    double rvdSeconds = 0;      // restricted Voronoi integration, all evaluations
+    double delaunaySeconds = 0; // Delaunay of the sites, all evaluations
+    double finalRvdSeconds = 0; // one full symbolic diagram at the end (components included)
+    double peakRssMb = 0;
+    int threads = 0;
+    double firstEnergy = 0, lastEnergy = 0;
+};
+
+// A smooth height field over [0, 1]² with about `triangles` triangles, as one surface.
+RestrictionDomain generatedSurface(int triangles);
+
+BenchResult runCase(const std::string &name, const RestrictionDomain &domain, int sites, int iterations,
+                    double alpha, int threads, double setupSeconds);
+
+double peakRssMb();
+
+} // namespace stratamesh::bench
