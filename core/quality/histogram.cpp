@@ -53,7 +53,8 @@ void Histogram::add(double value)
 
 double Histogram::fraction(std::size_t bin) const
 {
-    return m_total == 0 ? 0.0 : static_cast<double>(m_counts.at(bin)) / static_cast<double>(m_total);
+    return m_total == 0 ? 0.0
+                        : static_cast<double>(m_counts.at(bin)) / static_cast<double>(m_total);
 }
 
 } // namespace stratamesh

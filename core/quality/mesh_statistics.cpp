@@ -96,8 +96,14 @@ MeshStatistics computeMeshStatistics(const Surface &surface)
     return acc.finish(surface.vertices.size());
 }
 
-std::vector<double> minAngleBinEdges() { return uniformEdges(0.0, 60.0, 12); }
-std::vector<double> qualityBinEdges() { return uniformEdges(0.0, 1.0, 20); }
+std::vector<double> minAngleBinEdges()
+{
+    return uniformEdges(0.0, 60.0, 12);
+}
+std::vector<double> qualityBinEdges()
+{
+    return uniformEdges(0.0, 1.0, 20);
+}
 
 Histogram minAngleHistogram(const Model &model, const std::vector<double> &edges)
 {

@@ -32,7 +32,9 @@ std::vector<double> minAngleBinEdges();
 std::vector<double> qualityBinEdges();
 
 // One value per triangle of all surfaces.
-Histogram minAngleHistogram(const Model &model, const std::vector<double> &edges = minAngleBinEdges());
-Histogram qualityHistogram(const Model &model, const std::vector<double> &edges = qualityBinEdges());
+Histogram minAngleHistogram(const Model &model,
+                            const std::vector<double> &edges = minAngleBinEdges());
+Histogram qualityHistogram(const Model &model,
+                           const std::vector<double> &edges = qualityBinEdges());
 
 } // namespace stratamesh

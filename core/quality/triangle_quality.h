@@ -11,12 +11,12 @@ namespace stratamesh {
 
 struct TriangleShape {
     double area = 0.0;
-    double longestEdge = 0.0;     // hmax
-    double halfPerimeter = 0.0;   // p
+    double longestEdge = 0.0;                       // hmax
+    double halfPerimeter = 0.0;                     // p
     std::array<double, 3> anglesDeg{0.0, 0.0, 0.0}; // at a, b, c
     double minAngleDeg = 0.0;
     double maxAngleDeg = 0.0;
-    double quality = 0.0;         // Q in [0, 1]: 1 equilateral, 0 degenerate
+    double quality = 0.0; // Q in [0, 1]: 1 equilateral, 0 degenerate
 };
 
 // Never throws: a degenerate triangle (collinear or coincident points) has Q = 0 and its zero

@@ -29,8 +29,8 @@ Model foldedSquares()
 
 void addTopology(Model &m)
 {
-    m.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(1, 1, 1),
-                  Vec3(1, 0, 1)};
+    m.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0),
+                  Vec3(0, 1, 0), Vec3(1, 1, 1), Vec3(1, 0, 1)};
     m.surfaceVertexToGlobal = {{0, 1, 2, 3}, {1, 2, 4, 5}};
 }
 
@@ -74,7 +74,8 @@ private slots:
         sharp.triangles = {Triangle{0, 1, 2}};
         m.surfaces.push_back(sharp);
         const MeshStatistics s = computeMeshStatistics(m);
-        const double qSharp = 6.0 / (std::sqrt(3.0) * std::sqrt(5.0) * (3.0 + std::sqrt(5.0)) / 2.0);
+        const double qSharp =
+            6.0 / (std::sqrt(3.0) * std::sqrt(5.0) * (3.0 + std::sqrt(5.0)) / 2.0);
         QCOMPARE(s.triangles, std::size_t(5));
         QVERIFY(std::abs(s.minAngleDeg - std::atan(0.5) * 180.0 / M_PI) < 1e-10);
         QVERIFY(std::abs(s.pctTrianglesAngleBelow30 - 20.0) < 1e-12);

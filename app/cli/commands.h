@@ -1,0 +1,45 @@
+// The stratamesh-cli command registry: main.cpp builds dispatch and --help from this one list.
+//
+// To add a command `foo` (three small edits, nothing else to touch):
+//   1. write app/cli/command_foo.cpp defining
+//          namespace stratamesh::cli { int runFoo(CommandArgs &args) { ... } }
+//      read options first (args.flag("--json"), args.option("--out")...), then positionals, then
+//      call args.finish(); return 0 on success. Throw UsageError for a bad command line and let
+//      core errors (FileError, InputError, Cancelled) propagate: main prints them and exits 1.
+//      Helpers: cli_output.h (printJson, out), json_report.h (core results as JSON).
+//   2. add command_foo.cpp to app/cli/CMakeLists.txt;
+//   3. add ONE line to the list below:  X("foo", runFoo, "ARGUMENTS", "One-line summary") \.
+#pragma once
+
+#include "command_args.h"
+
+#include <vector>
+
+// clang-format off
+#define STRATAMESH_CLI_COMMANDS(X)                                                                 \
+    X("info", runInfo, "MODEL [--json]", "Counts, mesh statistics, region volumes and validity of a model") \
+    X("remesh", runRemesh, "MODEL (--sites N | --edge-length L) [--d-resolution D] [--iterations 100] [--seed S] [--adaptive] -o OUT.(ml|ts) [--report REPORT.json]", "Remesh all surfaces at a resolution, with a ledger of simplifications (thesis ch. 4)") \
+    X("convert", runConvert, "IN OUT [--msh-version 4.1|2.2] [--save-all] [--surface N] [--json]", "Convert between Gocad (.ml .ts .so), VTK (.vtu .vtk .vtp), Gmsh (.msh) and single-surface (.obj .off .stl .ply) files, formats from the extensions") \
+    X("cvt", runCvt, "MODEL --sites N [--iterations 100] [--seed S] [--alpha A] [--lloyd] [--json] [--sites-out FILE.xyz]", "Optimise N sites over all surfaces and lines (CVT + boundary energy, L-BFGS); RDT quality and timings (thesis §4.3)") \
+    /* end of the list */
+// clang-format on
+
+namespace stratamesh::cli {
+
+#define STRATAMESH_CLI_DECLARE(name, function, arguments, summary) int function(CommandArgs &args);
+STRATAMESH_CLI_COMMANDS(STRATAMESH_CLI_DECLARE)
+#undef STRATAMESH_CLI_DECLARE
+
+struct Command {
+    const char *name;
+    int (*run)(CommandArgs &args);
+    const char *arguments;
+    const char *summary;
+};
+
+// In the order of the list above.
+const std::vector<Command> &commands();
+// nullptr when there is no such command.
+const Command *findCommand(const QString &name);
+
+} // namespace stratamesh::cli
