@@ -18,9 +18,12 @@ struct Areas {
     double all = 0.0;
 };
 
-Areas sideAreas(const Model &model, const TriangleTree &tree, const RegionSide &side, double h)
+Areas sideAreas(const Model &model, const TriangleTree &tree, const RegionSide &side,
+                const std::vector<bool> &bounds, double h)
 {
     const Surface &s = model.surfaces[side.surface];
+    // Another boundary surface of the same region.
+    const auto other = [&](const TriangleRef &ref) { return ref.surface != side.surface && bounds[ref.surface]; };
     return tbb::parallel_deterministic_reduce(
         tbb::blocked_range<std::size_t>(0, s.triangles.size(), 256), Areas{},
         [&](const tbb::blocked_range<std::size_t> &r, Areas sum) {
@@ -29,19 +32,11 @@ Areas sideAreas(const Model &model, const TriangleTree &tree, const RegionSide &
                 const Vec3 &a = s.vertices[tri[0]];
                 const Vec3 &b = s.vertices[tri[1]];
                 const Vec3 &c = s.vertices[tri[2]];
-                const Vec3 n = (b - a).cross(c - a);
-                const double area = 0.5 * n.norm();
+                const double area = 0.5 * (b - a).cross(c - a).norm();
                 if (!(area > 0.0))
                     continue;
-                const Vec3 inward = (side.positive ? 1.0 : -1.0) * n.normalized();
-                const TriangleRef self{side.surface, static_cast<int>(t)};
-                // Starting a hair off the triangle keeps the exact predicates away from the
-                // degenerate (slow) case of a segment ending on a triangle.
-                const Vec3 start = (a + b + c) / 3.0 + 1e-6 * h * inward;
-                const bool thin = tree.hitsSegment(start, h * inward,
-                                                   [&](const TriangleRef &ref) { return ref == self; });
                 sum.all += area;
-                if (thin)
+                if (tree.anyWithin((a + b + c) / 3.0, h, other))
                     sum.thin += area;
             }
             return sum;
@@ -64,8 +59,11 @@ std::vector<std::vector<SideThinArea>> regionSideThinAreas(const Model &model, d
     std::vector<std::vector<SideThinArea>> areas(model.regions.size());
     for (std::size_t r = 0; r < model.regions.size(); ++r) {
         progress.tick(static_cast<double>(r) / model.regions.size(), "region thickness");
+        std::vector<bool> bounds(model.surfaces.size(), false);
+        for (const RegionSide &side : model.regions[r].boundaries)
+            bounds[side.surface] = true;
         for (const RegionSide &side : model.regions[r].boundaries) {
-            const Areas a = sideAreas(model, tree, side, h);
+            const Areas a = sideAreas(model, tree, side, bounds, h);
             areas[r].push_back({side, a.thin, a.all});
         }
     }

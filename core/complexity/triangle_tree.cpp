@@ -4,6 +4,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <algorithm>
 #include <iterator>
@@ -17,8 +18,9 @@ using Iterator = std::vector<Triangle3>::const_iterator;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, Iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
-Kernel::Point_3 point(const Vec3 &p) { return {p.x(), p.y(), p.z()}; }
+Kernel::Point_3 toPoint(const Vec3 &p) { return {p.x(), p.y(), p.z()}; }
 } // namespace
+
 
 struct TriangleTree::Impl {
     std::vector<Triangle3> triangles;
@@ -32,8 +34,8 @@ TriangleTree::TriangleTree(const Model &model, const std::vector<int> &surfaces)
         const Surface &surface = model.surfaces[s];
         for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
             const Triangle &tri = surface.triangles[t];
-            Triangle3 triangle(point(surface.vertices[tri[0]]), point(surface.vertices[tri[1]]),
-                               point(surface.vertices[tri[2]]));
+            Triangle3 triangle(toPoint(surface.vertices[tri[0]]), toPoint(surface.vertices[tri[1]]),
+                               toPoint(surface.vertices[tri[2]]));
             if (triangle.is_degenerate())
                 continue;
             m->triangles.push_back(triangle);
@@ -66,16 +68,18 @@ std::vector<TriangleRef> TriangleTree::trianglesInBox(const Box3 &box) const
     return out;
 }
 
-bool TriangleTree::hitsSegment(const Vec3 &origin, const Vec3 &direction,
-                               const std::function<bool(const TriangleRef &)> &skip) const
+bool TriangleTree::anyWithin(const Vec3 &point, double radius,
+                             const std::function<bool(const TriangleRef &)> &accept) const
 {
     if (empty())
         return false;
-    const Kernel::Segment_3 segment(point(origin), point(origin + direction));
+    const CGAL::Bbox_3 query(point.x() - radius, point.y() - radius, point.z() - radius,
+                             point.x() + radius, point.y() + radius, point.z() + radius);
     std::vector<Iterator> hits;
-    m->tree.all_intersected_primitives(segment, std::back_inserter(hits));
+    m->tree.all_intersected_primitives(query, std::back_inserter(hits));
+    const Kernel::Point_3 p = toPoint(point);
     for (Iterator it : hits)
-        if (!skip || !skip(m->refs[it - m->triangles.cbegin()]))
+        if (accept(m->refs[it - m->triangles.cbegin()]) && CGAL::squared_distance(p, *it) < radius * radius)
             return true;
     return false;
 }
@@ -85,7 +89,7 @@ std::optional<RayHit> TriangleTree::firstHit(const Vec3 &origin, const Vec3 &dir
 {
     if (empty())
         return std::nullopt;
-    const Kernel::Ray_3 ray(point(origin), Kernel::Vector_3(direction.x(), direction.y(), direction.z()));
+    const Kernel::Ray_3 ray(toPoint(origin), Kernel::Vector_3(direction.x(), direction.y(), direction.z()));
     auto skipId = [&](const Iterator &it) {
         return skip && skip(m->refs[it - m->triangles.cbegin()]);
     };

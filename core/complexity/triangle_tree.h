@@ -43,10 +43,9 @@ public:
     std::optional<RayHit> firstHit(const Vec3 &origin, const Vec3 &direction,
                                    const std::function<bool(const TriangleRef &)> &skip = {}) const;
 
-    // Whether the segment from origin to origin + direction, skipped triangles aside, meets a
-    // triangle: a short-range test much cheaper than firstHit(). Thread-safe.
-    bool hitsSegment(const Vec3 &origin, const Vec3 &direction,
-                     const std::function<bool(const TriangleRef &)> &skip = {}) const;
+    // Whether a triangle that accept() takes lies within distance radius of point. Thread-safe.
+    bool anyWithin(const Vec3 &point, double radius,
+                   const std::function<bool(const TriangleRef &)> &accept) const;
 
 private:
     struct Impl;
