@@ -8,6 +8,8 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -46,6 +48,57 @@ const SurfaceTree &treeOf(std::map<int, SurfaceTree> &cache, const Model &input,
     return st;
 }
 
+Vec3 closestPoint(const SurfaceTree &st, const Vec3 &x)
+{
+    const K::Point_3 q = st.tree->closest_point(cg(x));
+    return Vec3(q.x(), q.y(), q.z());
+}
+
+// Last resort when the surfaces meet under the whole triangle (their closest points on their
+// common line): each copy's vertex goes off the triangle's centroid along its normal, towards the
+// nearest vertex of its surface off the lines, by at most a quarter of the triangle's smallest
+// altitude, so each fan stays a fan and the copies differ.
+std::vector<Vec3> offsetTowardsSurfaces(const Model &input, const std::vector<int> &surfaces, const Vec3 &a,
+                                        const Vec3 &b, const Vec3 &c, const std::vector<char> &onLine)
+{
+    const Vec3 normal = (b - a).cross(c - a);
+    const double area2 = normal.norm();
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    if (!(area2 > 0.0) || !(longest > 0.0))
+        return {};
+    const Vec3 n = normal / area2;
+    const double limit = 0.25 * area2 / longest; // a quarter of the smallest altitude
+    const Vec3 centroid = (a + b + c) / 3.0;
+    std::vector<double> heights;
+    for (int surface : surfaces) {
+        const Surface &s = input.surfaces[surface];
+        double bestDistance = std::numeric_limits<double>::max();
+        double height = 0.0;
+        for (std::size_t v = 0; v < s.vertices.size(); ++v) {
+            if (input.hasTopology() && onLine[input.surfaceVertexToGlobal[surface][v]])
+                continue;
+            const double d = (s.vertices[v] - centroid).squaredNorm();
+            if (d < bestDistance) {
+                bestDistance = d;
+                height = std::clamp(n.dot(s.vertices[v] - centroid), -limit, limit);
+            }
+        }
+        // Equal heights (or none found) are spread so that no two copies coincide.
+        for (double h : heights)
+            if (std::abs(h - height) < 1e-6 * limit)
+                height = std::clamp(height + (height > 0 ? -0.25 : 0.25) * limit, -limit, limit);
+        heights.push_back(height);
+    }
+    std::vector<Vec3> targets;
+    for (double h : heights)
+        targets.push_back(centroid + h * n);
+    for (std::size_t i = 0; i < targets.size(); ++i)
+        for (std::size_t j = i + 1; j < targets.size(); ++j)
+            if (targets[i] == targets[j])
+                return {};
+    return targets;
+}
+
 } // namespace
 
 DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &input)
@@ -60,34 +113,67 @@ DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &
         bySet[key].push_back(t);
     }
     std::map<int, SurfaceTree> trees;
+    std::vector<char> onLine(input.vertices.size(), 0);
+    for (const Line &l : input.lines)
+        for (int v : l.vertices)
+            onLine[v] = 1;
     for (const auto &[key, tris] : bySet) {
         if (tris.size() < 2)
             continue;
         ++result.duplicateGroups;
-        std::vector<int> seenSurfaces;
+        std::vector<int> copies, surfaces;
         for (int t : tris) {
-            const OutputTriangle tri = soup.triangle(t);
-            if (std::find(seenSurfaces.begin(), seenSurfaces.end(), tri.surface) != seenSurfaces.end()) {
-                soup.removeTriangle(t);
+            const int surface = soup.triangle(t).surface;
+            if (std::find(surfaces.begin(), surfaces.end(), surface) != surfaces.end() || surface < 0 ||
+                surface >= static_cast<int>(input.surfaces.size()) || !treeOf(trees, input, surface).tree) {
+                soup.removeTriangle(t); // an exact copy inside one surface
                 ++result.removedTriangles;
                 continue;
             }
-            seenSurfaces.push_back(tri.surface);
-            if (tri.surface < 0 || tri.surface >= static_cast<int>(input.surfaces.size()))
+            copies.push_back(t);
+            surfaces.push_back(surface);
+        }
+        if (copies.size() < 2)
+            continue;
+        const OutputTriangle first = soup.triangle(copies.front());
+        const Vec3 a = soup.position(first.v[0]), b = soup.position(first.v[1]), c = soup.position(first.v[2]);
+        const Vec3 centroid = (a + b + c) / 3.0;
+        // Where each surface is under the triangle, along its normal through a few interior
+        // points; keep the point where the surfaces are farthest apart, so the copies come apart
+        // even when the surfaces meet along one of the triangle's lines.
+        const Vec3 n = (b - a).cross(c - a).normalized();
+        std::vector<Vec3> best;
+        double bestSeparation = 0.0;
+        const std::array<Vec3, 4> probes{centroid, (centroid + a) / 2, (centroid + b) / 2, (centroid + c) / 2};
+        for (const Vec3 &probe : probes) {
+            std::vector<Vec3> targets;
+            for (int surface : surfaces)
+                targets.push_back(probe + n * n.dot(closestPoint(treeOf(trees, input, surface), probe) - probe));
+            double separation = std::numeric_limits<double>::max();
+            for (std::size_t i = 0; i < targets.size(); ++i)
+                for (std::size_t j = i + 1; j < targets.size(); ++j)
+                    separation = std::min(separation, (targets[i] - targets[j]).norm());
+            if (separation > bestSeparation) {
+                bestSeparation = separation;
+                best = targets;
+            }
+        }
+        if (best.empty()) {
+            best = offsetTowardsSurfaces(input, surfaces, a, b, c, onLine);
+            ++result.forced;
+            if (best.empty()) {
+                ++result.unseparated;
                 continue;
-            const SurfaceTree &st = treeOf(trees, input, tri.surface);
-            if (!st.tree)
-                continue;
-            const Vec3 centroid = (soup.position(tri.v[0]) + soup.position(tri.v[1]) + soup.position(tri.v[2])) / 3.0;
-            const Vec3 n = soup.normal(t).normalized();
-            const K::Point_3 q = st.tree->closest_point(cg(centroid));
-            const Vec3 target = centroid + n * n.dot(Vec3(q.x(), q.y(), q.z()) - centroid);
+            }
+        }
+        for (std::size_t i = 0; i < copies.size(); ++i) {
+            const OutputTriangle tri = soup.triangle(copies[i]);
             OutputPoint p;
-            p.position = target;
+            p.position = best[i];
             p.origin = PointOrigin::Surface;
-            p.surfaces = {tri.surface};
+            p.surfaces = {surfaces[i]};
             const int v = soup.addPoint(p);
-            soup.removeTriangle(t);
+            soup.removeTriangle(copies[i]);
             for (int k = 0; k < 3; ++k)
                 soup.addTriangle({tri.v[k], tri.v[(k + 1) % 3], v}, tri.surface);
             ++result.splitTriangles;

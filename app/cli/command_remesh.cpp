@@ -1,0 +1,186 @@
+// stratamesh-cli remesh MODEL (--sites N | --edge-length L) [--d-resolution D] [--iterations 100]
+//     [--seed S] [--adaptive] -o OUT.(ml|ts) --report REPORT.json
+// Remeshes every surface of a model at once at the chosen resolution (thesis ch. 4), writes the
+// new model, and a JSON report: input and output (counts and mesh as `info --json`, validity),
+// the Hausdorff distance, histograms, timings, the simplification ledger and the CVT energy.
+#include "cli_output.h"
+#include "common/error.h"
+#include "command_args.h"
+#include "io/gocad_writer.h"
+#include "io/model_reader.h"
+#include "json_report.h"
+#include "model/model_counts.h"
+#include "model/topology.h"
+#include "model/validity.h"
+#include "quality/model_comparison.h"
+#include "remesh/surface_remesher.h"
+
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QSaveFile>
+
+namespace stratamesh::cli {
+
+namespace {
+
+QJsonArray vec3(const Vec3 &v) { return QJsonArray{v.x(), v.y(), v.z()}; }
+
+QJsonObject countsJson(const EntityCounts &c)
+{
+    return QJsonObject{{QStringLiteral("regions"), c.regions},
+                       {QStringLiteral("surfaces"), c.surfaces},
+                       {QStringLiteral("lines"), c.lines},
+                       {QStringLiteral("corners"), c.corners}};
+}
+
+// Same keys as `info --json`.
+QJsonObject validityJson(const ValidityReport &report)
+{
+    QJsonArray problems;
+    for (const ValidityProblem &p : report.problems) {
+        QJsonArray entities;
+        for (const std::string &e : p.entities)
+            entities.append(QString::fromStdString(e));
+        problems.append(QJsonObject{{QStringLiteral("check"), QString::fromStdString(p.check)},
+                                    {QStringLiteral("entities"), entities},
+                                    {QStringLiteral("position"), vec3(p.position)},
+                                    {QStringLiteral("message"), QString::fromStdString(p.message)}});
+    }
+    QJsonObject counts;
+    for (const auto &[check, count] : report.counts)
+        counts.insert(QString::fromStdString(check), static_cast<qint64>(count));
+    return QJsonObject{{QStringLiteral("valid"), report.valid},
+                       {QStringLiteral("problems"), problems},
+                       {QStringLiteral("counts"), counts}};
+}
+
+QJsonObject sideJson(const Model &model, const MeshStatistics &mesh, const ValidityReport &validity)
+{
+    const ModelCounts counts = countEntities(model);
+    return QJsonObject{{QStringLiteral("counts"), QJsonObject{{QStringLiteral("all"), countsJson(counts.all)},
+                                                              {QStringLiteral("without_box"), countsJson(counts.withoutBox)}}},
+                       {QStringLiteral("mesh"), toJson(mesh)},
+                       {QStringLiteral("validity"), validityJson(validity)}};
+}
+
+QJsonArray refsJson(const std::vector<EntityRef> &refs)
+{
+    QJsonArray a;
+    for (const EntityRef &r : refs)
+        a.append(QJsonObject{{QStringLiteral("kind"), QString::fromStdString(entityKindName(r.kind))},
+                             {QStringLiteral("id"), r.id},
+                             {QStringLiteral("name"), QString::fromStdString(r.name)}});
+    return a;
+}
+
+QJsonArray ledgerJson(const SimplificationLedger &ledger)
+{
+    QJsonArray a;
+    for (const LedgerRecord &r : ledger)
+        a.append(QJsonObject{{QStringLiteral("kind"), QString::fromStdString(ledgerKindName(r.kind))},
+                             {QStringLiteral("inputs"), refsJson(r.inputs)},
+                             {QStringLiteral("outputs"), refsJson(r.outputs)},
+                             {QStringLiteral("position"), vec3(r.position)},
+                             {QStringLiteral("size"), r.size},
+                             {QStringLiteral("size_meaning"), QString::fromStdString(r.sizeMeaning)},
+                             {QStringLiteral("note"), QString::fromStdString(r.note)}});
+    return a;
+}
+
+void writeModelFile(const Model &model, const QString &path)
+{
+    const QString ext = QFileInfo(path).suffix().toLower();
+    if (ext == QLatin1String("ml"))
+        writeGocadModel3d(model, path.toStdString());
+    else
+        writeGocadTSurf(model, path.toStdString());
+}
+
+void writeReport(const QJsonObject &report, const QString &path)
+{
+    QSaveFile file(path); // written beside, renamed on commit
+    if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(report).toJson(QJsonDocument::Indented)) < 0 ||
+        !file.commit())
+        throw FileError(path.toStdString(), 0, "cannot write the report: " + file.errorString().toStdString());
+}
+
+} // namespace
+
+int runRemesh(CommandArgs &args)
+{
+    RemeshParams params;
+    params.sites = args.intOption(QStringLiteral("--sites"), 0, 4, 10000000);
+    params.edgeLength = args.doubleOption(QStringLiteral("--edge-length"), 0.0, 0.0, 1e300);
+    params.dResolution = args.doubleOption(QStringLiteral("--d-resolution"), 0.0, 0.0, 1e300);
+    params.iterations = args.intOption(QStringLiteral("--iterations"), 100, 0, 100000);
+    params.seed = static_cast<unsigned>(args.intOption(QStringLiteral("--seed"), 1, 0, 2147483647));
+    params.adaptive = args.flag(QStringLiteral("--adaptive"));
+    const std::optional<QString> output = args.option(QStringLiteral("-o"));
+    const std::optional<QString> reportPath = args.option(QStringLiteral("--report"));
+    const QString path = args.positional(QStringLiteral("MODEL"));
+    args.finish();
+    if ((params.sites > 0) == (params.edgeLength > 0.0))
+        throw UsageError(QStringLiteral("give exactly one of --sites N and --edge-length L"));
+    if (!output)
+        throw UsageError(QStringLiteral("missing -o OUT.ml or -o OUT.ts"));
+    const QString ext = QFileInfo(*output).suffix().toLower();
+    if (ext != QLatin1String("ml") && ext != QLatin1String("ts"))
+        throw UsageError(QStringLiteral("the output must be a Gocad .ml or .ts file, not '%1'").arg(*output));
+
+    const Model input = recoverTopology(readModel(path.toStdString()));
+    const RemeshResult result = remeshModel(input, params);
+    writeModelFile(result.model, *output);
+
+    const ModelComparison comparison = compareModels(input, result.model);
+    const ValidityReport inValidity = checkValidity(input);
+    const ValidityReport outValidity = checkValidity(result.model);
+    QJsonArray energy;
+    for (double e : result.energy)
+        energy.append(e);
+    const QJsonObject report{
+        {QStringLiteral("file"), path},
+        {QStringLiteral("output_file"), *output},
+        {QStringLiteral("parameters"),
+         QJsonObject{{QStringLiteral("sites"), result.siteCount},
+                     {QStringLiteral("edge_length"), params.edgeLength},
+                     {QStringLiteral("d_resolution"), params.dResolution},
+                     {QStringLiteral("iterations"), params.iterations},
+                     {QStringLiteral("seed"), static_cast<qint64>(params.seed)},
+                     {QStringLiteral("adaptive"), params.adaptive}}},
+        {QStringLiteral("input"), sideJson(input, comparison.input.mesh, inValidity)},
+        {QStringLiteral("output"), sideJson(result.model, comparison.output.mesh, outValidity)},
+        {QStringLiteral("hausdorff_pct_bbox"), comparison.hausdorff.symmetricPctBbox},
+        {QStringLiteral("hausdorff"),
+         QJsonObject{{QStringLiteral("input_to_output"), comparison.hausdorff.aToB},
+                     {QStringLiteral("output_to_input"), comparison.hausdorff.bToA},
+                     {QStringLiteral("symmetric"), comparison.hausdorff.symmetric},
+                     {QStringLiteral("bbox_diagonal"), comparison.hausdorff.bboxDiagonal}}},
+        {QStringLiteral("histograms"),
+         QJsonObject{{QStringLiteral("min_angle_deg"), QJsonObject{{QStringLiteral("input"), toJson(comparison.inputMinAngle)},
+                                                                   {QStringLiteral("output"), toJson(comparison.outputMinAngle)}}},
+                     {QStringLiteral("quality"), QJsonObject{{QStringLiteral("input"), toJson(comparison.inputQuality)},
+                                                             {QStringLiteral("output"), toJson(comparison.outputQuality)}}}}},
+        {QStringLiteral("timings"), QJsonObject{{QStringLiteral("sampling_s"), result.timings.samplingSeconds},
+                                                {QStringLiteral("mesh_s"), result.timings.meshSeconds},
+                                                {QStringLiteral("total_s"), result.timings.totalSeconds}}},
+        {QStringLiteral("ledger"), ledgerJson(result.ledger)},
+        {QStringLiteral("energy"), energy},
+    };
+    if (reportPath)
+        writeReport(report, *reportPath);
+
+    QTextStream &o = out();
+    o << "remeshed " << QFileInfo(path).fileName() << " with " << result.siteCount << " sites into " << *output << '\n'
+      << "  output: " << comparison.output.mesh.vertices << " vertices, " << comparison.output.mesh.triangles
+      << " triangles, mean Q " << QString::number(comparison.output.mesh.meanQuality, 'f', 3) << ", "
+      << QString::number(comparison.output.mesh.pctTrianglesAngleBelow30, 'f', 2) << " % < 30°\n"
+      << "  Hausdorff " << QString::number(comparison.hausdorff.symmetricPctBbox, 'f', 3) << " % of the bbox diagonal, "
+      << result.ledger.size() << " ledger records, " << (outValidity.valid ? "valid" : "NOT valid") << '\n'
+      << "  time: sampling " << QString::number(result.timings.samplingSeconds, 'f', 2) << " s, mesh "
+      << QString::number(result.timings.meshSeconds, 'f', 2) << " s\n";
+    return 0;
+}
+
+} // namespace stratamesh::cli
