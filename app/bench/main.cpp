@@ -1,7 +1,9 @@
-// stratamesh-bench [--case a|b|all] [--data-dir DIR] [--iterations N] [--threads N] [--alpha A]
+// stratamesh-bench [--case a|b|complexity|all] [--data-dir DIR] [--iterations N] [--threads N] [--alpha A]
 // Prints the Voronoi engine figures of issue 3: (a) modelA5 at 5000 sites, (b) a generated
-// surface of 1,000,000 triangles at 30,000 sites, 100 iterations each by default.
+// surface of 1,000,000 triangles at 30,000 sites, 100 iterations each by default; and the
+// complexity section (issue 5: Tables 3.2-3.4 beside the thesis, 10,000 cells on modelA5).
 #include "bench_cases.h"
+#include "bench_complexity.h"
 
 #include "io/model_reader.h"
 #include "model/topology.h"
@@ -63,7 +65,7 @@ int main(int argc, char **argv)
         else if (a == "--alpha")
             alpha = std::atof(value().c_str());
         else {
-            std::fprintf(stderr, "usage: stratamesh-bench [--case a|b|all] [--data-dir DIR] [--iterations N] "
+            std::fprintf(stderr, "usage: stratamesh-bench [--case a|b|complexity|all] [--data-dir DIR] [--iterations N] "
                                  "[--threads N] [--alpha A]\n");
             return 2;
         }
@@ -84,6 +86,8 @@ int main(int argc, char **argv)
             print(bench::runCase("(b) generated surface, 30000 sites", domain, 30000, iterations, alpha, threads,
                                  setup));
         }
+        if ((which == "complexity" || which == "all") && bench::runComplexityBench(dataDir, threads) != 0)
+            return 1;
     } catch (const std::exception &e) {
         std::fprintf(stderr, "stratamesh-bench: %s\n", e.what());
         return 1;
