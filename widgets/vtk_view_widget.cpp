@@ -1,0 +1,377 @@
+#include "vtk_view_widget.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QWheelEvent>
+
+#include <vtkAxesActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCaptionActor2D.h>
+#include <vtkCommand.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkLightKit.h>
+#include <vtkOpenGLState.h>
+#include <vtkOrientationMarkerWidget.h>
+#include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <cmath>
+
+namespace stratamesh {
+
+namespace {
+
+int vtkButtonEvent(Qt::MouseButton button, bool press)
+{
+    switch (button) {
+    case Qt::LeftButton: return press ? vtkCommand::LeftButtonPressEvent : vtkCommand::LeftButtonReleaseEvent;
+    case Qt::MiddleButton: return press ? vtkCommand::MiddleButtonPressEvent : vtkCommand::MiddleButtonReleaseEvent;
+    case Qt::RightButton: return press ? vtkCommand::RightButtonPressEvent : vtkCommand::RightButtonReleaseEvent;
+    default: return vtkCommand::NoEvent;
+    }
+}
+
+// X11-style key names that vtkInteractorStyle compares against.
+const char *keySym(int key)
+{
+    switch (key) {
+    case Qt::Key_Left: return "Left";
+    case Qt::Key_Right: return "Right";
+    case Qt::Key_Up: return "Up";
+    case Qt::Key_Down: return "Down";
+    case Qt::Key_Shift: return "Shift_L";
+    case Qt::Key_Control: return "Control_L";
+    case Qt::Key_Plus: return "plus";
+    case Qt::Key_Minus: return "minus";
+    default: return nullptr;
+    }
+}
+
+// VTK's default key bindings include 'e'/'q' (exit the application) and '3' (stereo); a viewer
+// embedded in a main window must not honour those.
+bool isForwardedKey(const QKeyEvent *event)
+{
+    const QString text = event->text().toLower();
+    return !(text == QLatin1String("e") || text == QLatin1String("q") || text == QLatin1String("3"));
+}
+
+void configureAxesLabel(vtkCaptionActor2D *caption)
+{
+    vtkTextProperty *p = caption->GetCaptionTextProperty();
+    p->SetColor(0.15, 0.15, 0.18);
+    p->ShadowOff();
+    p->ItalicOff();
+    p->BoldOn();
+    p->SetFontSize(14);
+}
+
+} // namespace
+
+VtkViewWidget::VtkViewWidget(QWidget *parent) : QOpenGLWidget(parent)
+{
+    setFormat(defaultFormat());
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);
+    setUpdateBehavior(QOpenGLWidget::NoPartialUpdate);
+
+    // The context belongs to Qt: VTK must neither create, swap nor make it current on its own.
+    m_renderWindow->SetOwnContext(false);
+    m_renderWindow->SetReadyForRendering(false);
+    m_renderWindow->SetFrameBlitModeToBlitToCurrent();
+    m_renderWindow->SetMultiSamples(4);
+    m_renderWindow->AddRenderer(m_renderer);
+
+    m_callback->SetClientData(this);
+    m_callback->SetCallback(&VtkViewWidget::onVtkEvent);
+    m_renderWindow->AddObserver(vtkCommand::WindowMakeCurrentEvent, m_callback);
+    m_renderWindow->AddObserver(vtkCommand::WindowIsCurrentEvent, m_callback);
+    m_renderWindow->AddObserver(vtkCommand::WindowFrameEvent, m_callback);
+
+    m_interactor->SetRenderWindow(m_renderWindow);
+    m_interactor->SetInteractorStyle(m_style);
+    // The interactor asks for renders through RenderEvent; we turn those into Qt repaints.
+    m_interactor->EnableRenderOff();
+    m_interactor->AddObserver(vtkCommand::RenderEvent, m_callback);
+    m_interactor->AddObserver(vtkCommand::ExitEvent, m_callback);
+    m_interactor->Initialize();
+
+    m_renderer->GradientBackgroundOn();
+    m_renderer->SetBackground(0.80, 0.84, 0.89);  // bottom
+    m_renderer->SetBackground2(0.98, 0.98, 1.00); // top
+    m_renderer->AutomaticLightCreationOff();
+    vtkNew<vtkLightKit> lights;
+    lights->SetKeyLightIntensity(0.85);
+    lights->AddLightsToRenderer(m_renderer);
+
+    vtkNew<vtkAxesActor> axes;
+    axes->SetShaftTypeToCylinder();
+    axes->SetCylinderRadius(0.03);
+    axes->SetConeRadius(0.5);
+    axes->SetTotalLength(1.2, 1.2, 1.2);
+    axes->SetXAxisLabelText("E");
+    axes->SetYAxisLabelText("N");
+    axes->SetZAxisLabelText("Z");
+    configureAxesLabel(axes->GetXAxisCaptionActor2D());
+    configureAxesLabel(axes->GetYAxisCaptionActor2D());
+    configureAxesLabel(axes->GetZAxisCaptionActor2D());
+    m_axes = vtkSmartPointer<vtkOrientationMarkerWidget>::New();
+    m_axes->SetOrientationMarker(axes);
+    m_axes->SetInteractor(m_interactor);
+    m_axes->SetViewport(0.0, 0.0, 0.14, 0.2);
+    m_axes->SetEnabled(1);
+    m_axes->InteractiveOff();
+
+    resetCamera();
+}
+
+VtkViewWidget::~VtkViewWidget()
+{
+    // The context outlives this part of the object: its aboutToBeDestroyed must not call us back.
+    if (context())
+        disconnect(context(), nullptr, this, nullptr);
+    m_axes->SetEnabled(0);
+    // Free VTK's GL resources while our context still exists.
+    makeCurrent();
+    cleanupGL();
+    doneCurrent();
+    m_renderWindow->RemoveObserver(m_callback);
+    m_interactor->RemoveObserver(m_callback);
+}
+
+QSurfaceFormat VtkViewWidget::defaultFormat()
+{
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(3, 2);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setRedBufferSize(8);
+    format.setGreenBufferSize(8);
+    format.setBlueBufferSize(8);
+    format.setAlphaBufferSize(8);
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8);
+    format.setSamples(0); // VTK does its own multisampling in its framebuffers
+    format.setSwapBehavior(QSurfaceFormat::DoubleBuffer);
+    return format;
+}
+
+vtkRenderer *VtkViewWidget::renderer() const { return m_renderer; }
+vtkGenericOpenGLRenderWindow *VtkViewWidget::renderWindow() const { return m_renderWindow; }
+vtkGenericRenderWindowInteractor *VtkViewWidget::interactor() const { return m_interactor; }
+
+void VtkViewWidget::resetCamera()
+{
+    double bounds[6];
+    m_renderer->ComputeVisiblePropBounds(bounds);
+    resetCamera(bounds);
+}
+
+void VtkViewWidget::resetCamera(const double bounds[6])
+{
+    vtkCamera *camera = m_renderer->GetActiveCamera();
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    // From the south-west, 30 degrees above the horizon.
+    const double elevation = 30.0 * M_PI / 180.0, azimuth = -35.0 * M_PI / 180.0;
+    camera->SetPosition(std::sin(azimuth) * std::cos(elevation), -std::cos(azimuth) * std::cos(elevation),
+                        std::sin(elevation));
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    if (bounds[0] <= bounds[1]) {
+        m_renderer->ResetCamera(bounds);
+        camera->Dolly(1.15); // ResetCamera frames the bounding sphere, leaving wide margins
+    }
+    m_renderer->ResetCameraClippingRange();
+    render();
+}
+
+void VtkViewWidget::render() { update(); }
+
+QSize VtkViewWidget::minimumSizeHint() const { return {320, 240}; }
+QSize VtkViewWidget::sizeHint() const { return {900, 650}; }
+
+void VtkViewWidget::initializeGL()
+{
+    if (m_initialized)
+        cleanupGL(); // a new context (the widget was reparented): start from scratch
+    // QOpenGLWidget recreates its context on reparenting; VTK must drop resources of the old one.
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &VtkViewWidget::onContextAboutToBeDestroyed,
+            Qt::UniqueConnection);
+    m_renderWindow->SetMapped(1);
+    m_renderWindow->SetIsDirect(1);
+    m_renderWindow->SetSupportsOpenGL(1);
+    m_renderWindow->InitializeFromCurrentContext();
+    m_initialized = true;
+}
+
+void VtkViewWidget::resizeGL(int w, int h)
+{
+    const qreal ratio = devicePixelRatioF();
+    const int pw = int(std::lround(w * ratio)), ph = int(std::lround(h * ratio));
+    m_interactor->UpdateSize(pw, ph); // also sizes the render window
+}
+
+void VtkViewWidget::paintGL()
+{
+    if (!m_initialized)
+        return;
+    const qreal ratio = devicePixelRatioF();
+    const int pw = int(std::lround(width() * ratio)), ph = int(std::lround(height() * ratio));
+    int *size = m_renderWindow->GetSize();
+    if (size[0] != pw || size[1] != ph)
+        m_interactor->UpdateSize(pw, ph);
+
+    // Qt touched the GL state since our last frame: make VTK re-read it, and give it back after.
+    vtkOpenGLState *state = m_renderWindow->GetState();
+    state->Reset();
+    state->Push();
+    state->vtkglDepthFunc(GL_LEQUAL); // Qt leaves GL_LESS; VTK expects LEQUAL
+    m_renderWindow->SetReadyForRendering(true);
+    m_renderWindow->Render();
+    m_renderWindow->SetReadyForRendering(false);
+    state->Pop();
+}
+
+void VtkViewWidget::onContextAboutToBeDestroyed()
+{
+    makeCurrent();
+    cleanupGL();
+    doneCurrent();
+}
+
+void VtkViewWidget::cleanupGL()
+{
+    if (!m_initialized)
+        return;
+    m_renderWindow->SetReadyForRendering(false);
+    m_renderWindow->ReleaseGraphicsResources(m_renderWindow);
+    m_renderWindow->Finalize();
+    m_initialized = false;
+}
+
+void VtkViewWidget::onVtkEvent(vtkObject *, unsigned long eventId, void *clientData, void *callData)
+{
+    auto *self = static_cast<VtkViewWidget *>(clientData);
+    switch (eventId) {
+    case vtkCommand::WindowMakeCurrentEvent:
+        // QOpenGLWidget::makeCurrent() also rebinds Qt's framebuffer, which would silently undo
+        // VTK's own binding (VTK asks for this in the middle of binding its framebuffers).
+        if (QOpenGLContext::currentContext() != self->context())
+            self->makeCurrent();
+        break;
+    case vtkCommand::WindowIsCurrentEvent: {
+        QOpenGLContext *ctx = self->context();
+        *static_cast<bool *>(callData) = ctx && QOpenGLContext::currentContext() == ctx;
+        break;
+    }
+    case vtkCommand::RenderEvent:
+        self->update();
+        break;
+    default: // WindowFrameEvent: Qt swaps; ExitEvent: ignored on purpose
+        break;
+    }
+}
+
+void VtkViewWidget::setPointerInfo(const QPointF &pos, Qt::KeyboardModifiers modifiers)
+{
+    const qreal ratio = devicePixelRatioF();
+    m_interactor->SetEventInformationFlipY(int(std::lround(pos.x() * ratio)), int(std::lround(pos.y() * ratio)),
+                                           (modifiers & Qt::ControlModifier) ? 1 : 0,
+                                           (modifiers & Qt::ShiftModifier) ? 1 : 0);
+    m_interactor->SetAltKey((modifiers & Qt::AltModifier) ? 1 : 0);
+}
+
+void VtkViewWidget::mousePressEvent(QMouseEvent *event)
+{
+    setPointerInfo(event->position(), event->modifiers());
+    if (const int id = vtkButtonEvent(event->button(), true); id != vtkCommand::NoEvent)
+        m_interactor->InvokeEvent(id, nullptr);
+    event->accept();
+}
+
+void VtkViewWidget::mouseReleaseEvent(QMouseEvent *event)
+{
+    setPointerInfo(event->position(), event->modifiers());
+    if (const int id = vtkButtonEvent(event->button(), false); id != vtkCommand::NoEvent)
+        m_interactor->InvokeEvent(id, nullptr);
+    event->accept();
+}
+
+void VtkViewWidget::mouseDoubleClickEvent(QMouseEvent *event)
+{
+    setPointerInfo(event->position(), event->modifiers());
+    m_interactor->SetRepeatCount(1);
+    if (const int id = vtkButtonEvent(event->button(), true); id != vtkCommand::NoEvent)
+        m_interactor->InvokeEvent(id, nullptr);
+    m_interactor->SetRepeatCount(0);
+    event->accept();
+}
+
+void VtkViewWidget::mouseMoveEvent(QMouseEvent *event)
+{
+    setPointerInfo(event->position(), event->modifiers());
+    m_interactor->InvokeEvent(vtkCommand::MouseMoveEvent, nullptr);
+    event->accept();
+}
+
+void VtkViewWidget::wheelEvent(QWheelEvent *event)
+{
+    setPointerInfo(event->position(), event->modifiers());
+    const int delta = event->angleDelta().y();
+    if (delta > 0)
+        m_interactor->InvokeEvent(vtkCommand::MouseWheelForwardEvent, nullptr);
+    else if (delta < 0)
+        m_interactor->InvokeEvent(vtkCommand::MouseWheelBackwardEvent, nullptr);
+    event->accept();
+}
+
+void VtkViewWidget::keyPressEvent(QKeyEvent *event)
+{
+    if (!isForwardedKey(event)) {
+        QOpenGLWidget::keyPressEvent(event);
+        return;
+    }
+    const QByteArray text = event->text().toLatin1();
+    const char code = text.isEmpty() ? 0 : text.at(0);
+    const char *sym = keySym(event->key());
+    m_interactor->SetKeyEventInformation((event->modifiers() & Qt::ControlModifier) ? 1 : 0,
+                                         (event->modifiers() & Qt::ShiftModifier) ? 1 : 0, code,
+                                         event->isAutoRepeat() ? 1 : 0, sym ? sym : text.constData());
+    m_interactor->InvokeEvent(vtkCommand::KeyPressEvent, nullptr);
+    if (code != 0)
+        m_interactor->InvokeEvent(vtkCommand::CharEvent, nullptr);
+    event->accept();
+}
+
+void VtkViewWidget::keyReleaseEvent(QKeyEvent *event)
+{
+    if (!isForwardedKey(event)) {
+        QOpenGLWidget::keyReleaseEvent(event);
+        return;
+    }
+    const QByteArray text = event->text().toLatin1();
+    const char code = text.isEmpty() ? 0 : text.at(0);
+    const char *sym = keySym(event->key());
+    m_interactor->SetKeyEventInformation((event->modifiers() & Qt::ControlModifier) ? 1 : 0,
+                                         (event->modifiers() & Qt::ShiftModifier) ? 1 : 0, code, 0,
+                                         sym ? sym : text.constData());
+    m_interactor->InvokeEvent(vtkCommand::KeyReleaseEvent, nullptr);
+    event->accept();
+}
+
+void VtkViewWidget::enterEvent(QEnterEvent *event)
+{
+    m_interactor->InvokeEvent(vtkCommand::EnterEvent, nullptr);
+    QOpenGLWidget::enterEvent(event);
+}
+
+void VtkViewWidget::leaveEvent(QEvent *event)
+{
+    m_interactor->InvokeEvent(vtkCommand::LeaveEvent, nullptr);
+    QOpenGLWidget::leaveEvent(event);
+}
+
+} // namespace stratamesh

@@ -1,0 +1,75 @@
+// A Qt6 OpenGL widget that hosts a VTK renderer. Debian's VTK Qt module is built against Qt5,
+// so this drives a vtkGenericOpenGLRenderWindow inside the QOpenGLWidget's own context instead.
+#pragma once
+
+#include <QOpenGLWidget>
+#include <QSurfaceFormat>
+
+#include <vtkNew.h>
+#include <vtkSmartPointer.h>
+
+class vtkCallbackCommand;
+class vtkGenericOpenGLRenderWindow;
+class vtkGenericRenderWindowInteractor;
+class vtkInteractorStyleTrackballCamera;
+class vtkObject;
+class vtkOrientationMarkerWidget;
+class vtkRenderer;
+
+namespace stratamesh {
+
+class VtkViewWidget : public QOpenGLWidget {
+    Q_OBJECT
+public:
+    explicit VtkViewWidget(QWidget *parent = nullptr);
+    ~VtkViewWidget() override;
+
+    // OpenGL 3.2 core profile with depth and stencil, as VTK's OpenGL2 backend needs. Set it as
+    // the default format before creating the QApplication.
+    static QSurfaceFormat defaultFormat();
+
+    vtkRenderer *renderer() const;
+    vtkGenericOpenGLRenderWindow *renderWindow() const;
+    vtkGenericRenderWindowInteractor *interactor() const;
+
+    // Geologist's default view: z up, looking north-east and down at ~30 degrees, all visible.
+    void resetCamera();
+    // The same view direction, framing the given bounds (xmin, xmax, ymin, ymax, zmin, zmax).
+    void resetCamera(const double bounds[6]);
+    // Schedules a repaint; VTK only ever renders inside paintGL.
+    void render();
+
+    QSize minimumSizeHint() const override;
+    QSize sizeHint() const override;
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int w, int h) override;
+    void paintGL() override;
+
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseDoubleClickEvent(QMouseEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+    void keyReleaseEvent(QKeyEvent *event) override;
+    void enterEvent(QEnterEvent *event) override;
+    void leaveEvent(QEvent *event) override;
+
+private:
+    static void onVtkEvent(vtkObject *caller, unsigned long eventId, void *clientData, void *callData);
+    void setPointerInfo(const QPointF &pos, Qt::KeyboardModifiers modifiers);
+    void cleanupGL();
+    void onContextAboutToBeDestroyed();
+
+    vtkNew<vtkGenericOpenGLRenderWindow> m_renderWindow;
+    vtkNew<vtkRenderer> m_renderer;
+    vtkNew<vtkGenericRenderWindowInteractor> m_interactor;
+    vtkNew<vtkInteractorStyleTrackballCamera> m_style;
+    vtkNew<vtkCallbackCommand> m_callback;
+    vtkSmartPointer<vtkOrientationMarkerWidget> m_axes;
+    bool m_initialized = false;
+};
+
+} // namespace stratamesh
