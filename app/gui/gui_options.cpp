@@ -1,0 +1,76 @@
+#include "gui_options.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+#include <cstdio>
+
+namespace stratamesh {
+
+bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exitCode)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QCoreApplication::translate("GuiOptions", "StrataMesh: remeshing and meshing of 3D structural models."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption open(QStringLiteral("open"),
+                                  QCoreApplication::translate("GuiOptions", "Open the model in <file>."),
+                                  QStringLiteral("file"));
+    const QCommandLineOption screenshot(
+        QStringLiteral("screenshot"),
+        QCoreApplication::translate("GuiOptions",
+                                    "Load the model, save the window as a PNG image in <png> and exit "
+                                    "(status 0 when saved, 1 when the image could not be written, 2 when the "
+                                    "model could not be opened)."),
+        QStringLiteral("png"));
+    const QCommandLineOption lang(QStringLiteral("lang"),
+                                  QCoreApplication::translate("GuiOptions", "User interface language: fr or en."),
+                                  QStringLiteral("language"));
+    const QCommandLineOption showBox(QStringLiteral("show-box"),
+                                     QCoreApplication::translate("GuiOptions", "Start with the box surfaces shown."));
+    const QCommandLineOption showEdges(QStringLiteral("show-edges"),
+                                       QCoreApplication::translate("GuiOptions", "Start with triangle edges shown."));
+    parser.addOption(showBox);
+    parser.addOption(showEdges);
+    parser.addOption(open);
+    parser.addOption(screenshot);
+    parser.addOption(lang);
+    parser.addPositionalArgument(QStringLiteral("file"),
+                                 QCoreApplication::translate("GuiOptions", "Model to open (same as --open)."),
+                                 QStringLiteral("[file]"));
+    if (!parser.parse(arguments)) {
+        std::fprintf(stderr, "%s\n", qPrintable(parser.errorText()));
+        exitCode = 2;
+        return false;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        std::printf("%s", qPrintable(parser.helpText()));
+        exitCode = 0;
+        return false;
+    }
+    if (parser.isSet(QStringLiteral("version"))) {
+        std::printf("%s %s\n", qPrintable(QCoreApplication::applicationName()),
+                    qPrintable(QCoreApplication::applicationVersion()));
+        exitCode = 0;
+        return false;
+    }
+    options.openPath = parser.value(open);
+    if (options.openPath.isEmpty() && !parser.positionalArguments().isEmpty())
+        options.openPath = parser.positionalArguments().constFirst();
+    options.screenshotPath = parser.value(screenshot);
+    options.showBox = parser.isSet(showBox);
+    options.showEdges = parser.isSet(showEdges);
+    options.language = parser.value(lang).toLower();
+    if (!options.language.isEmpty() && options.language != QLatin1String("fr") &&
+        options.language != QLatin1String("en")) {
+        std::fprintf(stderr, "%s\n",
+                     qPrintable(QCoreApplication::translate("GuiOptions", "Unknown language '%1': use fr or en.")
+                                    .arg(options.language)));
+        exitCode = 2;
+        return false;
+    }
+    return true;
+}
+
+} // namespace stratamesh

@@ -1,0 +1,21 @@
+// Command line of the GUI: --open FILE, --screenshot PNG, --lang fr|en.
+#pragma once
+
+#include <QString>
+#include <QStringList>
+
+namespace stratamesh {
+
+struct GuiOptions {
+    QString openPath;       // empty: show the bundled sample model
+    QString screenshotPath; // non-empty: load, render, save the window as PNG and exit
+    QString language;       // "fr", "en", or empty for the system locale
+    bool showBox = false;
+    bool showEdges = false;
+};
+
+// Parses QCoreApplication::arguments(); on --help/--version or a bad option it prints and
+// returns false with exitCode set.
+bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exitCode);
+
+} // namespace stratamesh

@@ -1,0 +1,51 @@
+// stratamesh: the desktop application.
+#include "common/version.h"
+#include "gui_options.h"
+#include "main_window.h"
+#include "translations.h"
+#include "vtk_view_widget.h"
+#include "window_screenshot.h"
+
+#include <QApplication>
+#include <QSurfaceFormat>
+#include <QTimer>
+
+#include <cstdio>
+
+int main(int argc, char **argv)
+{
+    // VTK needs a core-profile context; it must be the default before any window exists.
+    QSurfaceFormat::setDefaultFormat(stratamesh::VtkViewWidget::defaultFormat());
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("StrataMesh"));
+    QApplication::setOrganizationName(QStringLiteral("StrataMesh"));
+    QApplication::setApplicationVersion(QStringLiteral(STRATAMESH_VERSION));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/stratamesh.png")));
+
+    stratamesh::GuiOptions options;
+    int exitCode = 0;
+    if (!stratamesh::parseGuiOptions(QApplication::arguments(), options, exitCode))
+        return exitCode;
+    stratamesh::installTranslations(options.language);
+
+    stratamesh::MainWindow window;
+    window.setBoxVisible(options.showBox);
+    window.setEdgesVisible(options.showEdges);
+    if (!options.screenshotPath.isEmpty()) {
+        QObject::connect(&window, &stratamesh::MainWindow::loadFinished, &window, [&](bool ok) {
+            // Let the window lay itself out and the view render once before grabbing.
+            QTimer::singleShot(300, &window, [&, ok] {
+                const bool saved = stratamesh::saveWindowScreenshot(&window, options.screenshotPath);
+                if (!saved)
+                    std::fprintf(stderr, "stratamesh: cannot write %s\n", qPrintable(options.screenshotPath));
+                QApplication::exit(!saved ? 1 : ok ? 0 : 2);
+            });
+        });
+    }
+    window.show();
+    if (options.openPath.isEmpty())
+        window.openSample();
+    else
+        window.openFile(options.openPath);
+    return app.exec();
+}
