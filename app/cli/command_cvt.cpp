@@ -97,6 +97,7 @@ int runCvt(CommandArgs &args)
             {QStringLiteral("model"), path},
             {QStringLiteral("sites"), sites},
             {QStringLiteral("empty_cells"), emptyCells},
+            {QStringLiteral("relocated_sites"), result.relocatedSites},
             {QStringLiteral("iterations"), result.iterations},
             {QStringLiteral("evaluations"), result.evaluations},
             {QStringLiteral("stop_reason"), QString::fromStdString(result.stopReason)},

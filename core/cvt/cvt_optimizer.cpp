@@ -2,11 +2,13 @@
 
 #include "common/error.h"
 #include "cvt/cvt_energy.h"
+#include "cvt/site_relocation.h"
 
 #include <LBFGS.h>
 #include <tbb/task_arena.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <limits>
@@ -19,6 +21,10 @@ using Vector = Eigen::VectorXd;
 // Raised from the iteration hook to leave LBFGSpp once a stop criterion holds.
 struct StopOptimization {
     std::string reason;
+};
+
+// Raised from the iteration hook when an accepted iterate has sites without a cell.
+struct LostSites {
 };
 
 // Carries an error of our own evaluation through LBFGSpp, which reports its own failures with
@@ -38,10 +44,6 @@ std::string iterationStage(int k, int n, double f, double g)
 // so that L-BFGS differences keep their digits on georeferenced models. L = √area/10: LBFGSpp's
 // first step moves the sites by a total length of one unit, a tenth of the typical spacing per
 // site; later steps are scale-free.
-//
-// A configuration where a site's restricted cell has become empty is refused (its energy is
-// +∞, so the line search shortens the step): a site without a cell has no gradient and would
-// never come back ("no site lost").
 class Objective {
 public:
     Objective(const RestrictionDomain &domain, const CvtParams &params, Progress &progress, CvtResult &result)
@@ -102,13 +104,6 @@ public:
         }
         const CvtEvaluation &e = m_last;
         grad.resize(x.size());
-        const int empty = emptyCells(e);
-        if (m_allowedEmpty < 0)
-            m_allowedEmpty = empty; // the starting configuration
-        if (empty > m_allowedEmpty) {
-            grad.setZero();
-            return std::numeric_limits<double>::infinity();
-        }
         for (std::size_t i = 0; i < e.gradient.size(); ++i)
             grad.segment<3>(3 * i) = m_scale * e.gradient[i];
         return e.energy;
@@ -121,7 +116,23 @@ public:
         m_best = x;
         if (m_params.gradientTolerance > 0 && m_result.gradientNorm.back() <= m_params.gradientTolerance)
             throw StopOptimization{"gradient"};
+        if (emptyCells(m_last) > 0)
+            throw LostSites{}; // m_last is the accepted iterate: the line search ends on it
+        if (m_result.iterations >= m_params.iterations)
+            throw StopOptimization{"iterations"};
     }
+
+    // Puts the sites with an empty cell back on the model; the L-BFGS history is then restarted.
+    Vector relocate(const Vector &x)
+    {
+        std::vector<Vec3> sites = toSites(x);
+        evaluate(sites); // the owners and masses of exactly these sites
+        m_result.relocatedSites += relocateLostSites(m_domain, m_last.cells, m_workspace.pointOwners, sites);
+        return toX(sites);
+    }
+
+    CellIntegralsWorkspace &workspace() { return m_workspace; }
+    const RestrictionDomain &domain() const { return m_domain; }
 
     void record(double energy, double gradientNorm)
     {
@@ -147,19 +158,46 @@ private:
     CvtEvaluation m_last;
     Vec3 m_center;
     double m_scale = 1;
-    int m_allowedEmpty = -1;
     double m_fraction = 0;
     std::string m_stage = "CVT";
 };
 
-// LBFGSpp calls its line search once per iteration: wrapping it gives an iteration hook.
+// LBFGSpp calls its line search once per iteration, which gives our iteration hook. The search
+// itself is a bisection on the weak Wolfe conditions (Lewis & Overton 2013, "Nonsmooth
+// optimization via quasi-Newton methods"): no interpolation, so kinks of the piecewise-smooth
+// energy do not mislead it, and its curvature condition keeps s·y > 0 for the L-BFGS update.
 template <class Scalar> class HookedLineSearch {
 public:
     template <class Foo>
     static void LineSearch(Foo &f, Scalar &fx, Vector &x, Vector &grad, Scalar &step, const Vector &drt,
                            const Vector &xp, const LBFGSpp::LBFGSParam<Scalar> &param)
     {
-        LBFGSpp::LineSearchBacktracking<Scalar>::LineSearch(f, fx, x, grad, step, drt, xp, param);
+        const Scalar f0 = fx;
+        const Scalar dg0 = grad.dot(drt);
+        if (!(dg0 < 0))
+            throw std::logic_error("the search direction does not decrease the energy");
+        Scalar lo = 0, hi = std::numeric_limits<Scalar>::infinity(), t = step;
+        for (int k = 0; k < param.max_linesearch; ++k) {
+            x.noalias() = xp + t * drt;
+            const Scalar ft = f(x, grad);
+            if (!std::isfinite(ft) || ft > f0 + param.ftol * t * dg0) {
+                hi = t;
+            } else if (grad.dot(drt) < param.wolfe * dg0) {
+                lo = t; // sufficient decrease, but the slope is still steep: go farther
+            } else {
+                fx = ft;
+                step = t;
+                f.onIteration(fx, x, grad);
+                return;
+            }
+            t = std::isfinite(hi) ? 0.5 * (lo + hi) : 2 * t;
+        }
+        if (!(lo > 0))
+            throw std::runtime_error("the line search found no decrease");
+        // Out of trials with a decrease in hand: take it (its curvature is unproven).
+        x.noalias() = xp + lo * drt;
+        fx = f(x, grad);
+        step = lo;
         f.onIteration(fx, x, grad);
     }
 };
@@ -168,13 +206,12 @@ void runLbfgs(Objective &objective, const std::vector<Vec3> &initial, const CvtP
 {
     LBFGSpp::LBFGSParam<double> p;
     p.m = std::max(1, params.lbfgsMemory);
-    p.epsilon = 0;      // stopping is decided by our hook
+    p.epsilon = 0; // stopping is decided by our hook
     p.epsilon_rel = 0;
     p.past = 0;
-    p.max_iterations = params.iterations;
+    p.max_iterations = 0;
     p.max_linesearch = 40;
-    p.linesearch = LBFGSpp::LBFGS_LINESEARCH_BACKTRACKING_STRONG_WOLFE;
-    LBFGSpp::LBFGSSolver<double, HookedLineSearch> solver(p);
+    p.wolfe = 0.9;
     Vector x = objective.toX(initial);
     objective.m_best = x;
     double fx = 0;
@@ -195,19 +232,30 @@ void runLbfgs(Objective &objective, const std::vector<Vec3> &initial, const CvtP
         }
         void onIteration(double fx, const Vector &x, const Vector &g) { o.onIteration(fx, x, g); }
     } wrapper{objective, result};
-    result.stopReason = "iterations";
-    try {
-        solver.minimize(wrapper, x, fx);
-    } catch (const EvaluationFailure &failure) {
-        std::rethrow_exception(failure.error);
-    } catch (const Cancelled &) {
-        throw; // from the progress tick of the iteration hook
-    } catch (const StopOptimization &stop) {
-        result.stopReason = stop.reason;
-    } catch (const std::logic_error &) {
-        result.stopReason = "no descent"; // L-BFGS direction not a descent direction
-    } catch (const std::runtime_error &) {
-        result.stopReason = "line search"; // no sufficient decrease: at a (numerical) minimum
+    result.stopReason = "gradient";
+    for (;;) {
+        LBFGSpp::LBFGSSolver<double, HookedLineSearch> solver(p);
+        try {
+            solver.minimize(wrapper, x, fx);
+        } catch (const EvaluationFailure &failure) {
+            std::rethrow_exception(failure.error);
+        } catch (const Cancelled &) {
+            throw; // from the progress tick of the iteration hook
+        } catch (const LostSites &) {
+            // Relocate, then restart L-BFGS from there with a fresh history.
+            x = objective.relocate(objective.m_best);
+            objective.m_best = x;
+            if (result.iterations < params.iterations)
+                continue;
+            result.stopReason = "iterations";
+        } catch (const StopOptimization &stop) {
+            result.stopReason = stop.reason;
+        } catch (const std::logic_error &) {
+            result.stopReason = "no descent"; // L-BFGS direction not a descent direction
+        } catch (const std::runtime_error &) {
+            result.stopReason = "line search"; // no sufficient decrease: at a (numerical) minimum
+        }
+        break;
     }
     result.sites = objective.toSites(objective.m_best);
 }
@@ -224,6 +272,10 @@ void runLloyd(Objective &objective, const std::vector<Vec3> &initial, const CvtP
             if (e.cells.mass[i] > 0)
                 sites[i] += e.cells.moment[i] / e.cells.mass[i]; // to the centroid g_i
         e = objective.evaluate(sites);
+        if (Objective::emptyCells(e) > 0) {
+            result.relocatedSites += relocateLostSites(objective.domain(), e.cells, objective.workspace().pointOwners, sites);
+            e = objective.evaluate(sites);
+        }
         objective.record(e.energy, e.gradientNorm());
         if (params.gradientTolerance > 0 && e.gradientNorm() <= params.gradientTolerance) {
             result.stopReason = "gradient";

@@ -39,6 +39,7 @@ struct CvtResult {
     std::vector<double> gradientNorm;  // per iteration
     int iterations = 0;
     int evaluations = 0;               // energy evaluations (line searches may need several)
+    int relocatedSites = 0;            // sites put back after their cell became empty
     std::string stopReason;            // "iterations", "gradient", "line search", "no descent"
     double totalSeconds = 0;
     double rvdSeconds = 0;             // restricted Voronoi integration, summed
