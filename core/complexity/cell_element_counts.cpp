@@ -37,11 +37,12 @@ Box3 paddedBounds(const ConvexPolyhedron &cell)
     return Box3(b.min() - pad, b.max() + pad);
 }
 
+constexpr int kLocateLater = -1;
+
 struct Counter {
     const Model &model;
     const TriangleTree &triangles;
     const SegmentTree &segments;
-    const RegionLocator &locator;
 
     // Surface pieces, and the inner surfaces met (for the regions).
     int surfacePieces(const ConvexPolyhedron &cell, const Box3 &bounds, std::vector<int> &met) const
@@ -116,7 +117,7 @@ struct Counter {
         return pieces;
     }
 
-    CellElementCounts count(const ConvexPolyhedron &cell, const Vec3 &site) const
+    CellElementCounts count(const ConvexPolyhedron &cell) const
     {
         CellElementCounts c;
         if (cell.empty())
@@ -133,10 +134,8 @@ struct Counter {
                            model.surfaces[s].regions.end());
         std::sort(regions.begin(), regions.end());
         regions.erase(std::unique(regions.begin(), regions.end()), regions.end());
-        if (regions.empty() && locator.regionAt(site) >= 0)
-            c.regions = 1;
-        else
-            c.regions = static_cast<int>(regions.size());
+        // No inner surface: one region, found later for all such neighbouring cells at once.
+        c.regions = regions.empty() ? kLocateLater : static_cast<int>(regions.size());
         return c;
     }
 };
@@ -163,6 +162,32 @@ std::vector<int> cornersPerCell(const Model &model, const std::vector<int> &corn
     return perCell;
 }
 
+// Cells meeting no inner surface lie in one region each, and two such cells sharing a face lie
+// in the same one: one ray per group of them (from its first site) instead of one per cell.
+void locateRegions(const RegionLocator &locator, const std::vector<Vec3> &sites,
+                   const std::vector<ConvexPolyhedron> &cells, std::vector<CellElementCounts> &counts)
+{
+    std::vector<int> stack;
+    for (std::size_t seed = 0; seed < cells.size(); ++seed) {
+        if (counts[seed].regions != kLocateLater)
+            continue;
+        const int found = locator.regionAt(sites[seed]) >= 0 ? 1 : 0;
+        counts[seed].regions = found;
+        stack.assign(1, static_cast<int>(seed));
+        while (!stack.empty()) {
+            const int i = stack.back();
+            stack.pop_back();
+            for (const HalfSpace &face : cells[i].planes()) {
+                if (face.tag >= 0 && face.tag < static_cast<int>(counts.size())
+                    && counts[face.tag].regions == kLocateLater) {
+                    counts[face.tag].regions = found;
+                    stack.push_back(face.tag);
+                }
+            }
+        }
+    }
+}
+
 } // namespace
 
 std::vector<CellElementCounts> countElementsInCells(const Model &model, const std::vector<Vec3> &sites,
@@ -176,7 +201,7 @@ std::vector<CellElementCounts> countElementsInCells(const Model &model, const st
     const TriangleTree triangles(model, box.innerSurfaces());
     const SegmentTree segments(model, box.innerLines());
     const RegionLocator locator(model);
-    const Counter counter{model, triangles, segments, locator};
+    const Counter counter{model, triangles, segments};
     const std::vector<int> corners = cornersPerCell(model, box.innerCorners(), sites);
 
     std::vector<CellElementCounts> counts(cells.size());
@@ -187,11 +212,12 @@ std::vector<CellElementCounts> countElementsInCells(const Model &model, const st
         tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 16),
                           [&](const tbb::blocked_range<std::size_t> &r) {
                               for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                                  counts[i] = counter.count(cells[i], sites[i]);
+                                  counts[i] = counter.count(cells[i]);
                                   counts[i].corners = corners[i];
                               }
                           });
     }
+    locateRegions(locator, sites, cells, counts);
     progress.tick(1.0, "counting elements per cell");
     return counts;
 }

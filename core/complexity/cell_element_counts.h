@@ -11,7 +11,8 @@
 //   a vertex inside the cell;
 // - regions: when some inner surface meets the cell, the union of the regions incident to those
 //   surfaces (a region met by a cell inside the box either crosses its boundary there or contains
-//   it); otherwise the one region containing the cell's site (ray casting).
+//   it); otherwise the one region containing the cell's site (ray casting, once per group of
+//   such cells sharing faces; faces are found by their tags, see clipped_voronoi.h).
 // A point within the cell tolerance of a cell counts as inside: elements lying exactly on a face
 // meet both cells sharing it.
 #pragma once
@@ -32,7 +33,7 @@ struct CellElementCounts {
     int total() const { return corners + lines + surfaces + regions; }
 };
 
-// cells[i] is the Voronoi cell of sites[i]. Requires topology (throws InputError otherwise).
+// cells[i] is the Voronoi cell of sites[i]; a face tag j >= 0 names the cell across it. Requires topology (throws InputError otherwise).
 // Parallel over cells; the result does not depend on the number of threads.
 std::vector<CellElementCounts> countElementsInCells(const Model &model, const std::vector<Vec3> &sites,
                                                     const std::vector<ConvexPolyhedron> &cells,

@@ -38,11 +38,30 @@ std::vector<std::vector<int>> delaunayNeighbours(const std::vector<Vec3> &sites)
         throw InputError("Voronoi cells: " + std::to_string(sites.size() - dt.number_of_vertices())
                          + " duplicate sites");
     std::vector<std::vector<int>> neighbours(sites.size());
-    for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-        const int a = e->first->vertex(e->second)->info();
-        const int b = e->first->vertex(e->third)->info();
-        neighbours[a].push_back(b);
-        neighbours[b].push_back(a);
+    if (dt.dimension() == 3) {
+        // The six edges of every finite tetrahedron: much cheaper than finite_edges(), which
+        // circulates around each edge to visit it once; duplicates are removed below.
+        for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+            for (int a = 0; a < 4; ++a) {
+                for (int b = a + 1; b < 4; ++b) {
+                    const int i = c->vertex(a)->info();
+                    const int j = c->vertex(b)->info();
+                    neighbours[i].push_back(j);
+                    neighbours[j].push_back(i);
+                }
+            }
+        }
+        tbb::parallel_for(std::size_t(0), neighbours.size(), [&](std::size_t i) {
+            std::sort(neighbours[i].begin(), neighbours[i].end());
+            neighbours[i].erase(std::unique(neighbours[i].begin(), neighbours[i].end()), neighbours[i].end());
+        });
+    } else {
+        for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+            const int a = e->first->vertex(e->second)->info();
+            const int b = e->first->vertex(e->third)->info();
+            neighbours[a].push_back(b);
+            neighbours[b].push_back(a);
+        }
     }
     return neighbours;
 }

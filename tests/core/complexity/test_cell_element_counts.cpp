@@ -7,6 +7,8 @@
 
 #include <QtTest>
 
+#include <tbb/global_control.h>
+
 #include <cmath>
 
 using namespace stratamesh;
@@ -28,8 +30,8 @@ Model layered(int horizons, double fold = 0.0, bool fault = false)
 ConvexPolyhedron slab(const Model &model, double zLo, double zHi)
 {
     ConvexPolyhedron cell = ConvexPolyhedron::box(modelBounds(model));
-    cell.clip({Vec3(0, 0, 1), zHi, 100});
-    cell.clip({Vec3(0, 0, -1), -zLo, 101});
+    cell.clip({Vec3(0, 0, 1), zHi, -10});
+    cell.clip({Vec3(0, 0, -1), -zLo, -11});
     return cell;
 }
 
@@ -134,6 +136,12 @@ private slots:
         for (std::size_t i = 0; i < a.counts.size(); ++i)
             QCOMPARE(a.counts[i].total(), b.counts[i].total());
         QVERIFY(a.statistics.max > 3);
+        // One thread gives the same sites and counts as many.
+        tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+        const LocalComplexity c = localComplexity(model, params);
+        QVERIFY(c.cvt.sites == a.cvt.sites);
+        for (std::size_t i = 0; i < a.counts.size(); ++i)
+            QCOMPARE(c.counts[i].total(), a.counts[i].total());
     }
 };
 
