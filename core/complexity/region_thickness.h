@@ -7,9 +7,9 @@
 // counts by its area, thin when its centroid is closer than h to another boundary surface of the
 // region. So a layer thinner than h is thin all over its horizons, and every region is thin in a
 // strip of width about h along its contact lines (wider where the surfaces meet at an acute
-// angle). This reading reproduces the thesis's Table 3.2 region column (A1 0.12 vs 0.13; A2 0.64
-// vs 0.59; A5 1.06 vs 1.19, with C_t = C_f = 0 and C_a ≈ 0 for these regions), where a thickness
-// measured across the region along the normal gives 0.00, 0.05 and 0.14.
+// angle). This reading reproduces the thesis's Table 3.2 region column (sums over the regions of
+// C_t + C_f + C_e + C_a, h = 100 m: A1 0.12 vs 0.13, A2 0.65 vs 0.59, A5 1.19 vs 1.19), where a
+// thickness measured across the region along the inward normal gives 0.00, 0.05 and 0.14.
 #pragma once
 
 #include "common/progress.h"
