@@ -203,10 +203,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Opened %1 in %2 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>No validity problem found</source>
         <translation type="unfinished"></translation>
     </message>
@@ -261,6 +257,18 @@
             <numerusform>%n regions</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1 opened in %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (box excluded)  ·  %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With the box: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>
@@ -312,11 +320,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>sample model</source>
+        <source>Loading stopped without a result</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Loading stopped without a result</source>
+        <source>Sample model</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -203,10 +203,6 @@
         <translation>Ouverture de %1…</translation>
     </message>
     <message>
-        <source>Opened %1 in %2 s</source>
-        <translation>%1 ouvert en %2 s</translation>
-    </message>
-    <message>
         <source>No validity problem found</source>
         <translation>Aucun problème de validité détecté</translation>
     </message>
@@ -261,6 +257,18 @@
             <numerusform>%n régions</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1 opened in %2 s</source>
+        <translation>%1 ouvert en %2 s</translation>
+    </message>
+    <message>
+        <source>%1 (box excluded)  ·  %2</source>
+        <translation>%1 (hors boîte)  ·  %2</translation>
+    </message>
+    <message>
+        <source>With the box: %1</source>
+        <translation>Avec la boîte : %1</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>
@@ -312,12 +320,12 @@
         <translation>Modèles structuraux (*.ml *.ts *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;Wavefront OBJ (*.obj);;Object File Format (*.off);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <source>sample model</source>
-        <translation>modèle d&apos;exemple</translation>
-    </message>
-    <message>
         <source>Loading stopped without a result</source>
         <translation>Le chargement s&apos;est arrêté sans résultat</translation>
+    </message>
+    <message>
+        <source>Sample model</source>
+        <translation>Modèle d&apos;exemple</translation>
     </message>
 </context>
 </TS>

@@ -105,7 +105,10 @@ VtkViewWidget::VtkViewWidget(QWidget *parent) : QOpenGLWidget(parent)
     m_renderer->SetBackground2(0.98, 0.98, 1.00); // top
     m_renderer->AutomaticLightCreationOff();
     vtkNew<vtkLightKit> lights;
-    lights->SetKeyLightIntensity(0.85);
+    lights->SetKeyLightIntensity(0.75);
+    // A stronger head light than the default: steep faults seen from below the key light stay lit.
+    lights->SetKeyToHeadRatio(1.8);
+    lights->SetKeyToFillRatio(2.5);
     lights->AddLightsToRenderer(m_renderer);
 
     vtkNew<vtkAxesActor> axes;

@@ -4,6 +4,7 @@
 
 #include "message.h"
 #include "model/model.h"
+#include "model/model_counts.h"
 
 #include <QMetaType>
 #include <QString>
@@ -17,6 +18,7 @@ struct LoadedModel {
     QString path;        // empty for the bundled sample
     QString displayName; // file name, or "sample model"
     std::shared_ptr<const Model> model;
+    ModelCounts counts; // thesis Table 3.1 counts, with and without the box
     std::vector<Message> messages;
     qint64 milliseconds = 0;
 };

@@ -244,12 +244,13 @@ void MainWindow::onLoaded(const LoadedModel &loaded)
     m_progress->hide();
     m_messages->clear();
     m_displayName = loaded.displayName;
+    m_counts = loaded.counts;
     m_scene->setModel(loaded.model);
     updateLegend();
     resetCamera();
 
     Message opened;
-    opened.text = tr("Opened %1 in %2 s").arg(loaded.displayName, QLocale().toString(loaded.milliseconds / 1000.0, 'f', 2));
+    opened.text = tr("%1 opened in %2 s").arg(loaded.displayName, QLocale().toString(loaded.milliseconds / 1000.0, 'f', 2));
     opened.file = loaded.path;
     m_messages->addMessage(opened);
     for (const Message &m : loaded.messages)
@@ -290,14 +291,15 @@ void MainWindow::updateCounts()
         m_countsLabel->clear();
         return;
     }
-    const QLocale locale;
-    const QString sep = QStringLiteral("  ·  ");
-    m_countsLabel->setText(
-        tr("%n surface(s)", nullptr, int(model->surfaces.size())) + sep +
-        tr("%1 triangles").arg(locale.toString(qulonglong(model->triangleCount()))) + sep +
-        tr("%n line(s)", nullptr, int(model->lines.size())) + sep +
-        tr("%n corner(s)", nullptr, int(model->corners.size())) + sep +
-        tr("%n region(s)", nullptr, int(model->regions.size())));
+    // Table 3.1 of the thesis counts entities without the box; the tooltip gives both.
+    const auto describe = [](const EntityCounts &c) {
+        const QString sep = QStringLiteral("  ·  ");
+        return tr("%n region(s)", nullptr, c.regions) + sep + tr("%n surface(s)", nullptr, c.surfaces) + sep +
+               tr("%n line(s)", nullptr, c.lines) + sep + tr("%n corner(s)", nullptr, c.corners);
+    };
+    const QString triangles = tr("%1 triangles").arg(QLocale().toString(qulonglong(model->triangleCount())));
+    m_countsLabel->setText(tr("%1 (box excluded)  ·  %2").arg(describe(m_counts.withoutBox), triangles));
+    m_countsLabel->setToolTip(tr("With the box: %1").arg(describe(m_counts.all)));
 }
 
 void MainWindow::updateLegend() { m_legend->setEntries(m_scene->legend(), m_scene->boxVisible()); }

@@ -74,6 +74,7 @@ private:
     QDockWidget *m_messageDock = nullptr;
     OpenModelController *m_controller = nullptr;
     QString m_displayName;
+    ModelCounts m_counts;
 
     QAction *m_open = nullptr;
     QAction *m_openSample = nullptr;

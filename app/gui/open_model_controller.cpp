@@ -5,6 +5,7 @@
 #include "common/error.h"
 #include "common/progress.h"
 #include "io/model_reader.h"
+#include "model/model_counts.h"
 #include "model/synthetic_models.h"
 #include "model/topology.h"
 #include "model/validity.h"
@@ -47,6 +48,7 @@ void loadModel(QPromise<LoadResult> &promise, const QString &path, const QString
         });
         const ValidityReport report = checkValidity(model, progress);
         result.loaded.messages = validityMessages(report, path);
+        result.loaded.counts = countEntities(model);
         result.loaded.model = std::make_shared<const Model>(std::move(model));
         result.ok = true;
     } catch (const FileError &e) {
@@ -91,7 +93,7 @@ bool OpenModelController::openFile(const QString &path)
     return start(path, QFileInfo(path).fileName());
 }
 
-bool OpenModelController::openSample() { return start(QString(), tr("sample model")); }
+bool OpenModelController::openSample() { return start(QString(), tr("Sample model")); }
 
 bool OpenModelController::isBusy() const { return m_pending; }
 

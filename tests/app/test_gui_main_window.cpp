@@ -6,8 +6,10 @@
 
 #include "feature_legend.h"
 #include "io/model_reader.h"
+#include "model/model_counts.h"
 #include "common/error.h"
 #include "main_window.h"
+#include "translations.h"
 #include "message_panel.h"
 #include "model_scene.h"
 #include "open_model_controller.h"
@@ -73,7 +75,10 @@ private slots:
         qInfo("sample covers %.1f %% of the view", 100 * covered);
         QVERIFY2(covered > 0.08, qPrintable(QString::number(covered)));
         QVERIFY(m_window->legend()->isVisible());
-        QVERIFY(m_window->statusCounts().contains(QString::number(model->surfaces.size())));
+        const ModelCounts counts = countEntities(*model);
+        QVERIFY(counts.withoutBox.surfaces > 0);
+        QVERIFY2(m_window->statusCounts().contains(QStringLiteral("%1 surfaces").arg(counts.withoutBox.surfaces)),
+                 qPrintable(m_window->statusCounts()));
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), 0);
     }
 
@@ -110,6 +115,9 @@ private slots:
         QVERIFY2(covered > 0.08, qPrintable(QString::number(covered)));
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), 0);
         QVERIFY(m_window->windowTitle().contains(QStringLiteral("modelA1.ml")));
+        // Thesis Table 3.1 for model A1 (box excluded): 4 regions, 3 surfaces, no line, no corner.
+        QVERIFY2(m_window->statusCounts().startsWith(QStringLiteral("4 regions  ·  3 surfaces  ·  0 lines  ·  0 corners")),
+                 qPrintable(m_window->statusCounts()));
     }
 
     void brokenFileIsReportedWithFileAndLine()
@@ -197,6 +205,7 @@ int main(int argc, char **argv)
     QSurfaceFormat::setDefaultFormat(VtkViewWidget::defaultFormat());
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("StrataMeshTest"));
+    installTranslations(QStringLiteral("en")); // English plural forms in the status bar
     TestGuiMainWindow test;
     return QTest::qExec(&test, argc, argv);
 }
