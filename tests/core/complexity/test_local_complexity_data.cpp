@@ -8,6 +8,8 @@
 
 #include <QtTest>
 
+#include <cmath>
+
 using namespace stratamesh;
 
 class TestLocalComplexityData : public QObject {
@@ -33,6 +35,11 @@ private slots:
         QCOMPARE(local.statistics.q10, 1);
         QCOMPARE(local.statistics.q50, 1);
         QCOMPARE(local.statistics.q90, 3);
+        // The cells tile the box.
+        double volume = 0.0;
+        for (const ConvexPolyhedron &cell : local.cvt.cells)
+            volume += cell.volume();
+        QVERIFY(std::abs(volume - local.cvt.box.volume()) < 1e-9 * local.cvt.box.volume());
         int corners = 0;
         for (const CellElementCounts &c : local.counts) {
             QVERIFY(c.regions >= 1);
