@@ -29,13 +29,13 @@ struct LocalPolygon {
 
 struct LocalPiece {
     int site, segment;
-    LocalVertex ends[2];
+    RvdSymbol ends[2];
     double length;
 };
 
 struct Chunk {
     std::vector<LocalPolygon> polygons;
-    std::vector<LocalVertex> vertices;
+    std::vector<RvdSymbol> vertices;
     std::vector<int> supports;
     std::vector<LocalPiece> pieces;
 };
@@ -178,7 +178,7 @@ RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domai
                     out.polygons.push_back({site, t, static_cast<int>(out.vertices.size()), n, in.area, centroid});
                     for (int k = 0; k < n; ++k) {
                         const int inSupport = poly[(k + n - 1) % n].out;
-                        out.vertices.push_back(canonicalVertex(domain, sites, polygonVertexSymbol(tri, t, site, inSupport, poly[k].out)));
+                        out.vertices.push_back(polygonVertexSymbol(tri, t, site, inSupport, poly[k].out));
                         out.supports.push_back(poly[k].out);
                     }
                 });
@@ -202,7 +202,7 @@ RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domai
                         const rvd::SegmentEnd &x = *ends[e];
                         const RvdSymbol sym = x.site < 0 ? inputVertexSymbol(seg[x.t == 0 ? 0 : 1])
                                                          : edgeSymbol(seg[0], seg[1], site, x.site);
-                        piece.ends[e] = {sym, x.position, x.error};
+                        piece.ends[e] = sym;
                     }
                     out.pieces.push_back(piece);
                 });
@@ -214,17 +214,18 @@ RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domai
     // Sequential merge in triangle order: vertex ids follow first appearance, deterministically.
     std::vector<int> pointVertex(domain.points.size(), -1);
     std::unordered_map<RvdSymbol, int, RvdSymbolHash> symbolVertex;
-    const auto vertexId = [&](const LocalVertex &v, int triangle) {
+    const auto vertexId = [&](const RvdSymbol &symbol, int triangle) {
         int *slot = nullptr;
-        if (v.symbol.kind == RvdVertexKind::InputVertex) {
-            slot = &pointVertex[v.symbol.a];
+        if (symbol.kind == RvdVertexKind::InputVertex) {
+            slot = &pointVertex[symbol.a];
         } else {
-            const auto [it, inserted] = symbolVertex.emplace(v.symbol, -1);
+            const auto [it, inserted] = symbolVertex.emplace(symbol, -1);
             slot = &it->second;
         }
         if (*slot < 0) {
             *slot = static_cast<int>(rvd.vertices.size());
-            rvd.vertices.push_back({v.symbol, v.position, v.error, triangle,
+            const LocalVertex v = canonicalVertex(domain, sites, symbol);
+            rvd.vertices.push_back({symbol, v.position, v.error, triangle,
                                     triangle >= 0 ? domain.triangleSurface[triangle] : -1});
         } else if (rvd.vertices[*slot].triangle < 0 && triangle >= 0) {
             rvd.vertices[*slot].triangle = triangle;

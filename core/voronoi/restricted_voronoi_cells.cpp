@@ -1,7 +1,7 @@
 #include "voronoi/restricted_voronoi_cells.h"
 
+#include <algorithm>
 #include <numeric>
-#include <unordered_map>
 
 namespace stratamesh {
 namespace {
@@ -27,8 +27,25 @@ struct UnionFind {
 void surfaceComponents(const RestrictionDomain &domain, RestrictedVoronoiDiagram &rvd)
 {
     const int np = static_cast<int>(rvd.polygons.size());
+    const int nt = static_cast<int>(domain.triangles.size());
     UnionFind uf(np);
-    std::unordered_map<std::uint64_t, int> firstOnEdge;
+    // Polygons are grouped by triangle; triangles sharing a surface edge, by edge id.
+    std::vector<int> triangleFirst(nt + 1, 0);
+    for (const RvdPolygon &p : rvd.polygons)
+        ++triangleFirst[p.triangle + 1];
+    for (int t = 0; t < nt; ++t)
+        triangleFirst[t + 1] += triangleFirst[t];
+    const int ne = domain.edgeIds.empty() ? 0 : *std::max_element(domain.edgeIds.begin(), domain.edgeIds.end()) + 1;
+    std::vector<int> edgeFirst(ne + 1, 0), edgeTriangles(domain.edgeIds.size());
+    for (int id : domain.edgeIds)
+        ++edgeFirst[id + 1];
+    for (int e = 0; e < ne; ++e)
+        edgeFirst[e + 1] += edgeFirst[e];
+    {
+        std::vector<int> fill(edgeFirst.begin(), edgeFirst.end() - 1);
+        for (std::size_t k = 0; k < domain.edgeIds.size(); ++k)
+            edgeTriangles[fill[domain.edgeIds[k]]++] = static_cast<int>(k / 3);
+    }
     for (int p = 0; p < np; ++p) {
         const RvdPolygon &poly = rvd.polygons[p];
         const int *supports = rvd.polygonSupportsBegin(p);
@@ -36,10 +53,14 @@ void surfaceComponents(const RestrictionDomain &domain, RestrictedVoronoiDiagram
             if (supports[k] >= 0)
                 continue;
             const int edge = domain.edgeIds[3 * poly.triangle + (-1 - supports[k])];
-            const std::uint64_t key = (static_cast<std::uint64_t>(poly.site) << 32) | static_cast<std::uint32_t>(edge);
-            const auto [it, inserted] = firstOnEdge.emplace(key, p);
-            if (!inserted)
-                uf.unite(p, it->second);
+            for (int q = edgeFirst[edge]; q < edgeFirst[edge + 1]; ++q) {
+                const int t2 = edgeTriangles[q];
+                if (t2 <= poly.triangle)
+                    continue; // each pair of triangles once
+                for (int p2 = triangleFirst[t2]; p2 < triangleFirst[t2 + 1]; ++p2)
+                    if (rvd.polygons[p2].site == poly.site)
+                        uf.unite(p, p2); // the cell meets both sides of the edge: along it (convexity)
+            }
         }
     }
     std::vector<int> componentOfRoot(np, -1);

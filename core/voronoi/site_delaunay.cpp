@@ -8,9 +8,11 @@
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 #include <nanoflann.hpp>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 
@@ -96,7 +98,8 @@ struct DegenerateClusters {
     }
 };
 
-void collectDimension3(const Dt &dt, std::vector<std::pair<int, int>> &pairs, DegenerateClusters &clusters)
+// Degenerate adjacencies of a 3D triangulation (its Delaunay edges come from the cells).
+void collectDegenerate3(const Dt &dt, DegenerateClusters &clusters)
 {
     const K::Side_of_oriented_sphere_3 sideOfSphere = dt.geom_traits().side_of_oriented_sphere_3_object();
     const K::Orientation_3 orientation = dt.geom_traits().orientation_3_object();
@@ -104,10 +107,6 @@ void collectDimension3(const Dt &dt, std::vector<std::pair<int, int>> &pairs, De
     for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
         const CellHandle ch = c;
         const bool infinite = dt.is_infinite(ch);
-        if (!infinite)
-            for (int a = 0; a < 4; ++a)
-                for (int b = a + 1; b < 4; ++b)
-                    pairs.emplace_back(c->vertex(a)->info(), c->vertex(b)->info());
         for (int f = 0; f < 4; ++f) {
             const CellHandle n = c->neighbor(f);
             if (!(ch < n))
@@ -176,84 +175,98 @@ SiteDelaunay &SiteDelaunay::operator=(SiteDelaunay &&) noexcept = default;
 SiteDelaunay::SiteDelaunay(std::vector<Vec3> sites)
     : m_sites(std::move(sites)), m_kdOnce(std::make_unique<std::once_flag>())
 {
+    if (m_sites.size() > static_cast<std::size_t>(std::numeric_limits<int>::max() / 4))
+        throw InputError("too many sites: " + std::to_string(m_sites.size()));
     const int n = siteCount();
     for (int i = 0; i < n; ++i)
         if (!m_sites[i].allFinite())
             throw InputError("site " + std::to_string(i) + " has a non-finite coordinate");
 
-    // Exact duplicates: the lowest index keeps the point (it wins ties under the perturbation).
-    std::vector<int> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    const auto lexLess = [&](int a, int b) {
-        const Vec3 &p = m_sites[a], &q = m_sites[b];
-        if (p.x() != q.x())
-            return p.x() < q.x();
-        if (p.y() != q.y())
-            return p.y() < q.y();
-        if (p.z() != q.z())
-            return p.z() < q.z();
-        return a < b;
-    };
-    std::sort(order.begin(), order.end(), lexLess);
-    m_hidden.assign(n, 0);
+    m_hidden.assign(m_sites.size(), 0);
     std::vector<std::pair<K::Point_3, int>> points;
     points.reserve(n);
-    for (int k = 0; k < n; ++k) {
-        const int s = order[k];
-        if (k > 0 && m_sites[order[k - 1]] == m_sites[s]) {
-            m_hidden[s] = 1;
-            continue;
-        }
+    for (int s = 0; s < n; ++s)
         points.emplace_back(toPoint(m_sites[s]), s);
-    }
-    if (!points.empty())
-        m_firstVisible = std::min_element(points.begin(), points.end(),
-                                          [](const auto &a, const auto &b) { return a.second < b.second; })->second;
-
-    const Dt dt(points.begin(), points.end());
+    Dt dt(points.begin(), points.end());
     m_dimension = dt.dimension();
+    keepLowestDuplicates(dt);
+    for (int s = 0; s < n && m_firstVisible < 0; ++s)
+        if (!m_hidden[s])
+            m_firstVisible = s;
 
-    std::vector<std::pair<int, int>> pairs;
+    // Neighbours: per site, the other vertices of its cells (with repetitions), de-duplicated;
+    // in parallel, the search for degenerate clusters, whose pairs are merged in afterwards.
+    std::vector<std::pair<int, int>> pairs; // edges of a lower-dimensional triangulation
     DegenerateClusters clusters;
-    if (m_dimension == 3) {
-        pairs.reserve(dt.number_of_finite_cells() * 6);
-        collectDimension3(dt, pairs, clusters);
-    } else if (m_dimension == 2) {
+    if (m_dimension == 2) {
         collectDimension2(dt, pairs, clusters);
     } else if (m_dimension == 1) {
         for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
             pairs.emplace_back(e->first->vertex(e->second)->info(), e->first->vertex(e->third)->info());
     }
-    clusters.addPairs(dt, pairs);
-
-    // Both directions into a CSR with duplicates, then de-duplicated per site with a stamp.
-    std::vector<int> rawOffsets(n + 1, 0);
-    for (const auto &[a, b] : pairs) {
-        ++rawOffsets[a + 1];
-        ++rawOffsets[b + 1];
-    }
-    std::partial_sum(rawOffsets.begin(), rawOffsets.end(), rawOffsets.begin());
-    std::vector<int> raw(rawOffsets.back());
-    {
-        std::vector<int> fill(rawOffsets.begin(), rawOffsets.end() - 1);
+    const auto extract = [&] {
+        std::vector<int> rawOffsets(n + 1, 0);
+        if (m_dimension == 3)
+            for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+                for (int v = 0; v < 4; ++v)
+                    rawOffsets[c->vertex(v)->info() + 1] += 3;
         for (const auto &[a, b] : pairs) {
-            raw[fill[a]++] = b;
-            raw[fill[b]++] = a;
+            ++rawOffsets[a + 1];
+            ++rawOffsets[b + 1];
         }
-    }
-    std::vector<int> stamp(n, -1);
-    m_offsets.assign(n + 1, 0);
-    m_neighbours.clear();
-    m_neighbours.reserve(raw.size() / 3 + 16);
-    for (int i = 0; i < n; ++i) {
-        for (int k = rawOffsets[i]; k < rawOffsets[i + 1]; ++k) {
-            const int j = raw[k];
-            if (j != i && stamp[j] != i) {
-                stamp[j] = i;
-                m_neighbours.push_back(j);
+        std::partial_sum(rawOffsets.begin(), rawOffsets.end(), rawOffsets.begin());
+        std::vector<int> raw(rawOffsets.back());
+        {
+            std::vector<int> fill(rawOffsets.begin(), rawOffsets.end() - 1);
+            if (m_dimension == 3)
+                for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+                    const int ids[4] = {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
+                                        c->vertex(3)->info()};
+                    for (int v = 0; v < 4; ++v)
+                        for (int w = 1; w < 4; ++w)
+                            raw[fill[ids[v]]++] = ids[(v + w) % 4];
+                }
+            for (const auto &[a, b] : pairs) {
+                raw[fill[a]++] = b;
+                raw[fill[b]++] = a;
             }
         }
-        m_offsets[i + 1] = static_cast<int>(m_neighbours.size());
+        std::vector<int> stamp(n, -1);
+        m_offsets.assign(n + 1, 0);
+        m_neighbours.clear();
+        m_neighbours.reserve(raw.size() / 3 + 16);
+        for (int i = 0; i < n; ++i) {
+            for (int k = rawOffsets[i]; k < rawOffsets[i + 1]; ++k) {
+                const int j = raw[k];
+                if (j != i && stamp[j] != i) {
+                    stamp[j] = i;
+                    m_neighbours.push_back(j);
+                }
+            }
+            m_offsets[i + 1] = static_cast<int>(m_neighbours.size());
+        }
+    };
+    if (m_dimension == 3)
+        tbb::parallel_invoke(extract, [&] { collectDegenerate3(dt, clusters); });
+    else
+        extract();
+    std::vector<std::pair<int, int>> extra;
+    clusters.addPairs(dt, extra);
+    if (!extra.empty()) {
+        std::vector<std::vector<int>> lists(n);
+        for (int i = 0; i < n; ++i)
+            lists[i].assign(neighboursBegin(i), neighboursEnd(i));
+        for (const auto &[a, b] : extra) {
+            lists[a].push_back(b);
+            lists[b].push_back(a);
+        }
+        m_neighbours.clear();
+        for (int i = 0; i < n; ++i) {
+            std::sort(lists[i].begin(), lists[i].end());
+            lists[i].erase(std::unique(lists[i].begin(), lists[i].end()), lists[i].end());
+            m_neighbours.insert(m_neighbours.end(), lists[i].begin(), lists[i].end());
+            m_offsets[i + 1] = static_cast<int>(m_neighbours.size());
+        }
     }
 
     m_distances.resize(m_neighbours.size());
@@ -270,6 +283,27 @@ SiteDelaunay::SiteDelaunay(std::vector<Vec3> sites)
             }
         }
     });
+}
+
+// CGAL keeps one vertex per position and gives it the info of the last duplicate inserted. Under
+// the perturbation the lowest index owns the point: give it the vertex, hide the others.
+template <class Triangulation> void SiteDelaunay::keepLowestDuplicates(Triangulation &dt)
+{
+    const int n = siteCount();
+    std::vector<char> present(n, 0);
+    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+        present[v->info()] = 1;
+    for (int s = 0; s < n; ++s) {
+        if (present[s])
+            continue;
+        const auto v = dt.nearest_vertex(toPoint(m_sites[s])); // the vertex at the same position
+        if (s < v->info()) {
+            m_hidden[v->info()] = 1;
+            v->info() = s;
+        } else {
+            m_hidden[s] = 1;
+        }
+    }
 }
 
 std::vector<std::array<int, 2>> SiteDelaunay::neighbourPairs() const

@@ -49,6 +49,7 @@ public:
 
 private:
     int approximateNearest(const Vec3 &q) const;
+    template <class Triangulation> void keepLowestDuplicates(Triangulation &dt);
 
     std::vector<Vec3> m_sites;
     std::vector<char> m_hidden;

@@ -97,6 +97,23 @@ private slots:
         }
     }
 
+    void duplicatedSitesKeepTheLowestIndex()
+    {
+        const RestrictionDomain d = test::sphereDomain(2);
+        auto sites = test::randomPointsInBox(40, Vec3(-1, -1, -1), Vec3(1, 1, 1), 9);
+        sites[31] = sites[4];
+        sites[17] = sites[4];
+        sites[2] = sites[39];
+        const CellIntegrals ci = integrate(d, sites);
+        QVERIFY(std::abs(sum(ci.area) - d.surfaceArea()) <= 1e-9 * d.surfaceArea());
+        QCOMPARE(ci.area[31], 0.0);
+        QCOMPARE(ci.area[17], 0.0);
+        QCOMPARE(ci.area[39], 0.0);
+        QVERIFY(ci.area[4] > 0 && ci.area[2] > 0);
+        const SiteDelaunay dt(sites);
+        QVERIFY(dt.isHidden(31) && dt.isHidden(17) && dt.isHidden(39) && !dt.isHidden(4) && !dt.isHidden(2));
+    }
+
     void lineLengthIsPartitioned()
     {
         const RestrictionDomain d = test::squareDomain(16);
