@@ -150,7 +150,7 @@ bool ConvexPolyhedron::clip(const HalfSpace &halfSpace, ClipWorkspace &s)
     m_planes.swap(s.planes);
     plane.tag = halfSpace.tag;
     addCapFace(plane, s.capNext, s.capVertices);
-    compact();
+    compact(s.remap);
     if (m_planes.size() < 4)
         *this = ConvexPolyhedron{};
     return true;
@@ -192,9 +192,9 @@ void ConvexPolyhedron::addCapFace(const HalfSpace &plane, const std::vector<int>
     m_planes.push_back(plane);
 }
 
-void ConvexPolyhedron::compact()
+void ConvexPolyhedron::compact(std::vector<int> &remap)
 {
-    std::vector<int> remap(m_vertices.size(), -1);
+    remap.assign(m_vertices.size(), -1);
     for (int v : m_faceVertices)
         remap[v] = 0;
     int next = 0;

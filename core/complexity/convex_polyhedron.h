@@ -39,6 +39,7 @@ struct ClipWorkspace {
     std::vector<int> faceStart;
     std::vector<int> faceVertices;
     std::vector<HalfSpace> planes;
+    std::vector<int> remap;
 };
 
 class ConvexPolyhedron {
@@ -72,7 +73,7 @@ public:
     bool contains(const Vec3 &point) const;
 
 private:
-    void compact();
+    void compact(std::vector<int> &remap);
     void addCapFace(const HalfSpace &plane, const std::vector<int> &capNext,
                     const std::vector<int> &capVertices);
 
