@@ -44,14 +44,20 @@ struct Counter {
     const TriangleTree &triangles;
     const SegmentTree &segments;
 
-    // Surface pieces, and the inner surfaces met (for the regions).
+    const std::vector<bool> &isBox;
+
+    // Pieces of inner surfaces, and all the surfaces met, box ones included (for the regions).
     int surfacePieces(const ConvexPolyhedron &cell, const Box3 &bounds, std::vector<int> &met) const
     {
         std::vector<TriangleRef> in;
         for (const TriangleRef &r : triangles.trianglesInBox(bounds)) {
             const Surface &s = model.surfaces[r.surface];
             const Triangle &t = s.triangles[r.triangle];
-            if (triangleMeetsCell(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]], cell))
+            if (!triangleMeetsCell(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]], cell))
+                continue;
+            if (isBox[r.surface])
+                met.push_back(r.surface);
+            else
                 in.push_back(r);
         }
         // Keys (surface, local a, local b) of edges meeting the cell and (surface, v, -1) of
@@ -198,10 +204,12 @@ std::vector<CellElementCounts> countElementsInCells(const Model &model, const st
         throw InputError("cell counts: " + std::to_string(sites.size()) + " sites but "
                          + std::to_string(cells.size()) + " cells");
     const BoxElements box = boxElements(model);
-    const TriangleTree triangles(model, box.innerSurfaces());
+    std::vector<int> all(model.surfaces.size());
+    std::iota(all.begin(), all.end(), 0);
+    const TriangleTree triangles(model, all);
     const SegmentTree segments(model, box.innerLines());
     const RegionLocator locator(model);
-    const Counter counter{model, triangles, segments};
+    const Counter counter{model, triangles, segments, box.surface};
     const std::vector<int> corners = cornersPerCell(model, box.innerCorners(), sites);
 
     std::vector<CellElementCounts> counts(cells.size());

@@ -1,18 +1,20 @@
 // Local connectivity measure of the thesis (§3.3.2, §3.5.2, Table 3.4, Fig 3.7): for each cell of
 // a volumetric Voronoi diagram, the number of model elements it meets.
 //
-// Exactly what is counted (box elements never are, as in the thesis; cells are clipped to the box
-// so box surfaces would only ever touch them):
+// Exactly what is counted (box elements never are, as in the thesis: when the box is the model's
+// bounding box, cells are clipped to it and box surfaces only touch them):
 // - corners: inner corners whose nearest site is the cell's (a corner on a shared face counts once);
 // - lines: per inner line, the pieces of the polyline inside the cell; two consecutive segments
 //   meeting the cell belong to one piece when their common vertex is in the cell;
 // - surfaces: per inner surface, the connected pieces of its triangles inside the cell; two
 //   triangles are connected when they share an edge (by local vertex ids) that meets the cell, or
 //   a vertex inside the cell;
-// - regions: when some inner surface meets the cell, the union of the regions incident to those
-//   surfaces (a region met by a cell inside the box either crosses its boundary there or contains
-//   it); otherwise the one region containing the cell's site (ray casting, once per group of
-//   such cells sharing faces; faces are found by their tags, see clipped_voronoi.h).
+// - regions: when some surface meets the cell, the union of the regions incident to those
+//   surfaces, box surfaces included (a region met by a cell either crosses its boundary there or
+//   contains it; box surfaces matter when the model does not fill its bounding box); otherwise
+//   the one region containing the cell's site (ray casting, once per group of such cells sharing
+//   faces; faces are found by their tags, see clipped_voronoi.h). Cells outside every region
+//   count 0.
 // A point within the cell tolerance of a cell counts as inside: elements lying exactly on a face
 // meet both cells sharing it.
 #pragma once

@@ -121,6 +121,39 @@ private slots:
         QCOMPARE(above[0].lines, 0);
     }
 
+    void cellsOutsideTheModelAreLeftOut()
+    {
+        // A spherical model in its bounding box: the box corners are outside every region.
+        NestedSpheresParams p;
+        p.innerRadius = 1.0;
+        p.outerRadius = 2.0;
+        const Model model = recoverTopology(nestedSpheres(p));
+        LocalComplexityParams params;
+        params.cells = 400;
+        params.iterations = 5;
+        const LocalComplexity local = localComplexity(model, params);
+        int outside = 0;
+        int crossing = 0;
+        for (std::size_t i = 0; i < local.counts.size(); ++i) {
+            const CellElementCounts &c = local.counts[i];
+            QCOMPARE(c.lines + c.corners, 0);
+            const double r = local.cvt.sites[i].norm();
+            if (c.total() == 0) {
+                ++outside;
+                QVERIFY(r > 2.0 - 1e-9); // a site outside the outer sphere
+            }
+            if (c.surfaces == 1) {
+                ++crossing;
+                QCOMPARE(c.regions, 2); // the inner sphere separates "inner" and "shell"
+            }
+        }
+        QVERIFY(outside > 0);
+        QVERIFY(crossing > 0);
+        QCOMPARE(local.outsideCells, outside);
+        QCOMPARE(local.statistics.cells, 400 - outside);
+        QCOMPARE(local.statistics.q10, 1);
+    }
+
     void sameSeedSameCounts()
     {
         const Model model = layered(2, 80.0, true);
