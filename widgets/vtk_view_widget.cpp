@@ -3,6 +3,7 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QWheelEvent>
 
 #include <vtkAxesActor.h>
@@ -20,6 +21,7 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace stratamesh {
@@ -185,7 +187,22 @@ void VtkViewWidget::resetCamera(const double bounds[6])
     camera->SetViewUp(0.0, 0.0, 1.0);
     if (bounds[0] <= bounds[1]) {
         m_renderer->ResetCamera(bounds);
-        camera->Dolly(1.15); // ResetCamera frames the bounding sphere, leaving wide margins
+        // ResetCamera fits the bounding sphere, which leaves flat models small: fit the box's
+        // corners instead, to ~85 % of the view (a few steps, as perspective is not linear).
+        for (int step = 0; step < 4; ++step) {
+            m_renderer->ResetCameraClippingRange();
+            double extent = 0.0;
+            for (int corner = 0; corner < 8; ++corner) {
+                m_renderer->SetWorldPoint(bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
+                                          bounds[4 + ((corner >> 2) & 1)], 1.0);
+                m_renderer->WorldToView();
+                const double *v = m_renderer->GetViewPoint();
+                extent = std::max({extent, std::abs(v[0]), std::abs(v[1])});
+            }
+            if (extent <= 0.0 || std::abs(extent - 0.85) < 0.01)
+                break;
+            camera->Dolly(0.85 / extent);
+        }
     }
     m_renderer->ResetCameraClippingRange();
     render();
@@ -236,6 +253,19 @@ void VtkViewWidget::paintGL()
     m_renderWindow->Render();
     m_renderWindow->SetReadyForRendering(false);
     state->Pop();
+
+    // Translucent actors leave alpha < 1 in the framebuffer; Qt would then blend the view with
+    // whatever lies below it when composing the window (washed-out or saturated colours).
+    QOpenGLFunctions *gl = context()->functions();
+    GLboolean mask[4];
+    GLfloat clear[4];
+    gl->glGetBooleanv(GL_COLOR_WRITEMASK, mask);
+    gl->glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
+    gl->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+    gl->glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    gl->glClear(GL_COLOR_BUFFER_BIT);
+    gl->glColorMask(mask[0], mask[1], mask[2], mask[3]);
+    gl->glClearColor(clear[0], clear[1], clear[2], clear[3]);
 }
 
 void VtkViewWidget::onContextAboutToBeDestroyed()

@@ -58,6 +58,20 @@ private slots:
         QVERIFY(test::saturatedPixels(image) > image.width() * image.height() / 20);
     }
 
+    void translucentBoxKeepsTheViewOpaque()
+    {
+        // Alpha < 1 left by translucent actors would make Qt blend the view with what is below.
+        m_scene->setBoxVisible(true);
+        const QImage image = m_view.grabFramebuffer();
+        m_scene->setBoxVisible(false);
+        QVERIFY(image.hasAlphaChannel());
+        int translucent = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                translucent += qAlpha(image.pixel(x, y)) < 255 ? 1 : 0;
+        QCOMPARE(translucent, 0);
+    }
+
     void leftDragOrbits()
     {
         vtkCamera *camera = m_view.renderer()->GetActiveCamera();
