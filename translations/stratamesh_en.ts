@@ -269,6 +269,10 @@
         <source>With the box: %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>

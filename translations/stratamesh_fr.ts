@@ -269,6 +269,10 @@
         <source>With the box: %1</source>
         <translation>Avec la boîte : %1</translation>
     </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Barre d&apos;outils principale</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>

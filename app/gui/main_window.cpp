@@ -21,6 +21,8 @@
 #include <QProgressBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStyle>
+#include <QToolBar>
 
 namespace stratamesh {
 
@@ -54,7 +56,7 @@ void MainWindow::createActions()
 {
     m_open = new QAction(this);
     m_open->setShortcut(QKeySequence::Open);
-    m_open->setIcon(QIcon::fromTheme(QStringLiteral("document-open")));
+    m_open->setIcon(QIcon::fromTheme(QStringLiteral("document-open"), style()->standardIcon(QStyle::SP_DialogOpenButton)));
     connect(m_open, &QAction::triggered, this, &MainWindow::chooseFile);
 
     m_openSample = new QAction(this);
@@ -104,6 +106,16 @@ void MainWindow::createMenus()
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_about);
     m_helpMenu->addAction(m_aboutQt);
+
+    m_toolBar = addToolBar(QString());
+    m_toolBar->setObjectName(QStringLiteral("MainToolBar"));
+    m_toolBar->setMovable(false);
+    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_toolBar->addAction(m_open);
+    m_toolBar->addSeparator();
+    m_toolBar->addAction(m_showBox);
+    m_toolBar->addAction(m_showEdges);
+    m_toolBar->addAction(m_resetCamera);
 }
 
 void MainWindow::createDocks()
@@ -150,6 +162,7 @@ void MainWindow::retranslate()
     m_resetCamera->setStatusTip(tr("Look at the whole model from the south-west"));
     m_about->setText(tr("&About StrataMesh"));
     m_aboutQt->setText(tr("About &Qt"));
+    m_toolBar->setWindowTitle(tr("Main Toolbar"));
     m_messageDock->setWindowTitle(tr("Messages"));
     m_messageDock->toggleViewAction()->setText(tr("&Messages"));
     setWindowTitle(m_displayName.isEmpty() ? tr("StrataMesh")

@@ -12,6 +12,7 @@ class QAction;
 class QDockWidget;
 class QLabel;
 class QProgressBar;
+class QToolBar;
 
 namespace stratamesh {
 
@@ -87,6 +88,7 @@ private:
     QMenu *m_fileMenu = nullptr;
     QMenu *m_viewMenu = nullptr;
     QMenu *m_helpMenu = nullptr;
+    QToolBar *m_toolBar = nullptr;
 
     QLabel *m_countsLabel = nullptr;
     QLabel *m_stageLabel = nullptr;

@@ -44,6 +44,8 @@ void loadModel(QPromise<LoadResult> &promise, const QString &path, const QString
         const QString checking = OpenModelController::tr("Checking validity");
         promise.setProgressValueAndText(85, checking);
         Progress progress([&](double fraction, const std::string &) {
+            if (promise.isCanceled())
+                throw Cancelled(); // the window is closing
             promise.setProgressValueAndText(85 + int(14 * fraction), checking);
         });
         const ValidityReport report = checkValidity(model, progress);
@@ -77,8 +79,9 @@ OpenModelController::OpenModelController(QObject *parent) : QObject(parent)
 
 OpenModelController::~OpenModelController()
 {
-    // The worker cannot be interrupted inside the reader; let it end before we go.
+    // The validity check stops at its next progress tick; the reader cannot be interrupted.
     m_watcher.disconnect(this);
+    m_watcher.cancel();
     m_watcher.waitForFinished();
 }
 
