@@ -160,12 +160,13 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
     // Largest |x'| and largest position error over the polygon.
     double radius = 0, largestError = 0;
     const auto measure = [&] {
-        radius = 0;
+        double r2 = 0;
         largestError = 0;
         for (const ClipVertex &v : polygon) {
-            radius = std::max(radius, v.position.norm());
+            r2 = std::max(r2, v.position.squaredNorm());
             largestError = std::max(largestError, v.error);
         }
+        radius = std::sqrt(r2) * (1 + 4 * kUnit);
     };
     measure();
     const int *nb = m_delaunay.neighboursBegin(site);
@@ -176,9 +177,9 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
         // In the site's frame, π_l − π_i = 2·(h − d·x') with d = p_l − p_i, h = |d|²/2. The bound
         // covers the rounding of d, h and the dot product, and the error of x'.
         const Vec3 d = m_delaunay.site(l) - pi;
-        const double h = 0.5 * d.squaredNorm();
-        const double dn = d.norm();
-        const double bound = 1.01 * dn * largestError + 8 * kUnit * (dn * radius + h);
+        const double dn = dist[q]; // |d|, rounded
+        const double h = 0.5 * dn * dn;
+        const double bound = 1.01 * dn * largestError + kUnit * (8 * dn * radius + 12 * h);
         const int n = static_cast<int>(polygon.size());
         m_sides.resize(n);
         m_values.resize(n);

@@ -9,6 +9,8 @@
 
 using namespace stratamesh;
 
+Q_DECLARE_METATYPE(std::vector<stratamesh::Vec3>)
+
 namespace {
 
 double sum(const std::vector<double> &v) { return std::accumulate(v.begin(), v.end(), 0.0); }
@@ -95,6 +97,24 @@ private slots:
             QVERIFY(std::abs(ci.area[i] - 1.0 / (m * m)) <= 1e-12);
             QCOMPARE(ci.area[m * m + i], 0.0);
         }
+    }
+
+    void fewSitesInLowDimensions_data()
+    {
+        QTest::addColumn<std::vector<Vec3>>("sites");
+        QTest::newRow("one site") << std::vector<Vec3>{{0.3, 0.2, 0.1}};
+        QTest::newRow("two sites") << std::vector<Vec3>{{0.3, 0.2, 0.1}, {-0.5, 0.1, 0.0}};
+        QTest::newRow("collinear") << std::vector<Vec3>{{-0.5, 0, 0}, {0, 0, 0}, {0.5, 0, 0}, {0.9, 0, 0}};
+        QTest::newRow("coplanar") << std::vector<Vec3>{{-0.5, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}, {0, -0.5, 0}, {0.1, 0.1, 0}};
+    }
+    void fewSitesInLowDimensions()
+    {
+        QFETCH(std::vector<Vec3>, sites);
+        const RestrictionDomain d = test::sphereDomain(2);
+        const CellIntegrals ci = integrate(d, sites);
+        QVERIFY(std::abs(sum(ci.area) - d.surfaceArea()) <= 1e-9 * d.surfaceArea());
+        for (double a : ci.area)
+            QVERIFY(a > 0);
     }
 
     void duplicatedSitesKeepTheLowestIndex()
