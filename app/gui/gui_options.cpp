@@ -7,6 +7,18 @@
 
 namespace stratamesh {
 
+QString languageArgument(const QStringList &arguments)
+{
+    for (int i = 1; i < arguments.size(); ++i) {
+        const QString &a = arguments[i];
+        if ((a == QLatin1String("--lang") || a == QLatin1String("-lang")) && i + 1 < arguments.size())
+            return arguments[i + 1].toLower();
+        if (a.startsWith(QLatin1String("--lang=")))
+            return a.mid(7).toLower();
+    }
+    return {};
+}
+
 bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exitCode)
 {
     QCommandLineParser parser;

@@ -14,6 +14,9 @@ struct GuiOptions {
     bool showEdges = false;
 };
 
+// The value of --lang, looked up before the full parse so that --help is translated too.
+QString languageArgument(const QStringList &arguments);
+
 // Parses QCoreApplication::arguments(); on --help/--version or a bad option it prints and
 // returns false with exitCode set.
 bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exitCode);

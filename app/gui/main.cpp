@@ -22,11 +22,11 @@ int main(int argc, char **argv)
     QApplication::setApplicationVersion(QStringLiteral(STRATAMESH_VERSION));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/stratamesh.png")));
 
+    stratamesh::installTranslations(stratamesh::languageArgument(QApplication::arguments()));
     stratamesh::GuiOptions options;
     int exitCode = 0;
     if (!stratamesh::parseGuiOptions(QApplication::arguments(), options, exitCode))
         return exitCode;
-    stratamesh::installTranslations(options.language);
 
     stratamesh::MainWindow window;
     window.setBoxVisible(options.showBox);

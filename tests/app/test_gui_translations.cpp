@@ -1,4 +1,5 @@
 // The French translation is complete, current with the sources, and loaded at run time.
+#include "gui_options.h"
 #include "main_window.h"
 #include "translations.h"
 
@@ -122,6 +123,27 @@ private slots:
             QVERIFY2(committed.contains(key), qPrintable(QLatin1String("not in the .ts (run the lupdate target): ") + key));
         for (const QString &key : committed)
             QVERIFY2(expected.contains(key), qPrintable(QLatin1String("obsolete in the .ts: ") + key));
+    }
+
+    void languageIsFoundBeforeTheFullParse()
+    {
+        QCOMPARE(languageArgument({QStringLiteral("stratamesh"), QStringLiteral("--lang"), QStringLiteral("FR")}),
+                 QStringLiteral("fr"));
+        QCOMPARE(languageArgument({QStringLiteral("stratamesh"), QStringLiteral("x.ml"), QStringLiteral("--lang=en")}),
+                 QStringLiteral("en"));
+        QCOMPARE(languageArgument({QStringLiteral("stratamesh"), QStringLiteral("--lang")}), QString());
+        GuiOptions options;
+        int exitCode = -1;
+        QVERIFY(!parseGuiOptions({QStringLiteral("stratamesh"), QStringLiteral("--lang"), QStringLiteral("de")}, options,
+                                 exitCode));
+        QCOMPARE(exitCode, 2);
+        QVERIFY(parseGuiOptions({QStringLiteral("stratamesh"), QStringLiteral("--lang"), QStringLiteral("fr"),
+                                 QStringLiteral("--show-box"), QStringLiteral("m.ml")},
+                                options, exitCode));
+        QCOMPARE(options.language, QStringLiteral("fr"));
+        QCOMPARE(options.openPath, QStringLiteral("m.ml"));
+        QVERIFY(options.showBox);
+        QVERIFY(!options.showEdges);
     }
 
     void englishPluralsAreLoaded()
