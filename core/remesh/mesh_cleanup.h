@@ -29,6 +29,7 @@ struct CleanupCounts {
     int contactTriangles = 0;
     int interiorCollapses = 0;
     int flips = 0;
+    int relaxed = 0; // vertex moves of the relaxation (mesh_smoothing.h)
 };
 
 // The input model gives names to the ledger records (point.surfaces/lines/corners index it).

@@ -197,8 +197,9 @@ Vec3 mean(const std::vector<Vec3> &v)
 } // namespace
 
 CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain, const RestrictedVoronoiDiagram &cells,
-                             const CellComponents &cc, double dResolution, SimplificationLedger &ledger)
+                             const CellComponents &cc, const CellPointsParams &params, SimplificationLedger &ledger)
 {
+    const double dResolution = params.dResolution;
     PointSet set;
     const int nb = static_cast<int>(cc.lineComponentSite.size());
     const int ncell = static_cast<int>(cc.cellSite.size());
@@ -305,15 +306,42 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
         roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
         if (roots.size() <= 2)
             continue;
-        std::vector<Vec3> before;
-        for (int r : roots)
-            before.push_back(set.point(r).position);
-        Part all;
-        for (int r : roots)
-            all.append(set.part(r));
-        const int root = set.merge(roots, closestOn(all, mean(before)), PointOrigin::Line);
-        ledger.push_back(mergeRecord(LedgerKind::MultiPointMerge, model, set, before, root, 0.0, "distance",
-                                     "a cell component with more than two points: points merged (Fig 4.6a)"));
+        if (params.mergeAllExtraPoints) {
+            std::vector<Vec3> before;
+            for (int r : roots)
+                before.push_back(set.point(r).position);
+            Part all;
+            for (int r : roots)
+                all.append(set.part(r));
+            const int root = set.merge(roots, closestOn(all, mean(before)), PointOrigin::Line);
+            ledger.push_back(mergeRecord(LedgerKind::MultiPointMerge, model, set, before, root, 0.0, "distance",
+                                         "a cell component with more than two points: points merged (Fig 4.6a)"));
+            continue;
+        }
+        // Merge the two points whose model parts are closest, until two are left: the same
+        // guarantee (1 or 2 points per component) for the smallest change of the model.
+        while (roots.size() > 2) {
+            double best = std::numeric_limits<double>::max();
+            std::size_t bi = 0, bj = 1;
+            for (std::size_t i = 0; i < roots.size(); ++i)
+                for (std::size_t j = i + 1; j < roots.size(); ++j) {
+                    const double d = partDistance(set.part(roots[i]), set.part(roots[j]), best);
+                    if (d < best) {
+                        best = d;
+                        bi = i;
+                        bj = j;
+                    }
+                }
+            const std::vector<Vec3> before{set.point(roots[bi]).position, set.point(roots[bj]).position};
+            Part both = set.part(roots[bi]);
+            both.append(set.part(roots[bj]));
+            const PointOrigin origin = std::min(set.point(roots[bi]).origin, set.point(roots[bj]).origin);
+            const int root = set.merge({roots[bi], roots[bj]}, closestOn(both, mean(before)), origin);
+            ledger.push_back(mergeRecord(LedgerKind::MultiPointMerge, model, set, before, root, best, "distance",
+                                         "a cell component with more than two points: its two closest merged (Fig 4.6a)"));
+            roots.erase(roots.begin() + static_cast<std::ptrdiff_t>(bj));
+            roots[bi] = root;
+        }
     }
 
     // (4) points of one cell whose model parts are closer than d_resolution.

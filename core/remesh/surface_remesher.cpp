@@ -7,6 +7,8 @@
 #include "remesh/cell_components.h"
 #include "remesh/duplicate_separation.h"
 #include "remesh/editable_soup.h"
+#include "remesh/input_projector.h"
+#include "remesh/mesh_smoothing.h"
 #include "remesh/output_model_builder.h"
 #include "remesh/output_points.h"
 #include "voronoi/restricted_voronoi.h"
@@ -83,7 +85,10 @@ RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &s
     const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(domain, sites);
     progress.tick(0.3, "cell components");
     const CellComponents components = computeCellComponents(domain, rvd);
-    const CellPoints points = computeCellPoints(input, domain, rvd, components, params.dResolution, result.ledger);
+    CellPointsParams pointParams;
+    pointParams.dResolution = params.dResolution;
+    pointParams.mergeAllExtraPoints = params.mergeAllExtraPoints;
+    const CellPoints points = computeCellPoints(input, domain, rvd, components, pointParams, result.ledger);
     OutputMesh mesh;
     mesh.points = points.points;
     mesh.triangles = buildDualFaces(domain, rvd, components, points, result.faces);
@@ -95,6 +100,14 @@ RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &s
     result.duplicates = separateDuplicateTriangles(soup, input);
     if (params.flips)
         result.cleanup.flips += improveByFlips(soup);
+    if (params.smoothingPasses > 0) {
+        InputProjector projector(input);
+        SmoothingParams smoothing;
+        smoothing.passes = params.smoothingPasses;
+        result.cleanup.relaxed = relaxVertices(soup, projector, smoothing);
+        if (params.flips)
+            result.cleanup.flips += improveByFlips(soup);
+    }
     progress.tick(0.7, "intersections");
     result.intersections = repairIntersections(soup, input, params.repair, result.ledger);
     progress.tick(0.9, "output model");

@@ -25,14 +25,16 @@ struct RemeshParams {
     int sites = 0;           // number of sites; when 0, derived from edgeLength
     double edgeLength = 0.0; // target edge length: sites = area / (√3/2 · L²), a hexagonal packing
     double dResolution = 0.0; // Alg 4.2 step 4; 0 disables the merge of close features
+    bool mergeAllExtraPoints = false; // Alg 4.2 step 3 as in the thesis (see output_points.h)
     int iterations = 100;    // CVT iterations (thesis: 100)
-    double boundaryWeight = 0.5; // α of F = (1 − α) F_CVT + α F_B (thesis §4.3.2)
+    double boundaryWeight = 0.2; // α of F = (1 − α) F_CVT + α F_B (thesis §4.3.2)
     unsigned seed = 1;       // initial random sampling
     bool adaptive = false;   // density ρ = (1 − d/d_max)^exponent from the distance d to corners (Fig 4.19)
     double adaptiveExponent = 4.0;
     double adaptiveFloor = 0.05; // smallest density, so that far surfaces still get sites
     CleanupParams cleanup;
     bool flips = true;       // quality-improving flips inside surfaces after the thesis steps
+    int smoothingPasses = 3; // vertex relaxation on the input surfaces and lines (0: none)
     IntersectionRepairParams repair;
 };
 
