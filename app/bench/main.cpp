@@ -1,9 +1,10 @@
-// stratamesh-bench [--case a|b|complexity|all] [--data-dir DIR] [--iterations N] [--threads N] [--alpha A]
+// stratamesh-bench [--case a|b|complexity|remesh|all] [--data-dir DIR] [--iterations N] [--threads N] [--alpha A]
 // Prints the Voronoi engine figures of issue 3: (a) modelA5 at 5000 sites, (b) a generated
 // surface of 1,000,000 triangles at 30,000 sites, 100 iterations each by default; and the
 // complexity section (issue 5: Tables 3.2-3.4 beside the thesis, 10,000 cells on modelA5).
 #include "bench_cases.h"
 #include "bench_complexity.h"
+#include "bench_remesh.h"
 
 #include "io/model_reader.h"
 #include "model/topology.h"
@@ -65,7 +66,7 @@ int main(int argc, char **argv)
         else if (a == "--alpha")
             alpha = std::atof(value().c_str());
         else {
-            std::fprintf(stderr, "usage: stratamesh-bench [--case a|b|complexity|all] [--data-dir DIR] [--iterations N] "
+            std::fprintf(stderr, "usage: stratamesh-bench [--case a|b|complexity|remesh|all] [--data-dir DIR] [--iterations N] "
                                  "[--threads N] [--alpha A]\n");
             return 2;
         }
@@ -87,6 +88,8 @@ int main(int argc, char **argv)
                                  setup));
         }
         if ((which == "complexity" || which == "all") && bench::runComplexityBench(dataDir, threads) != 0)
+            return 1;
+        if ((which == "remesh" || which == "all") && bench::runRemeshBench(dataDir, threads, iterations) != 0)
             return 1;
     } catch (const std::exception &e) {
         std::fprintf(stderr, "stratamesh-bench: %s\n", e.what());
