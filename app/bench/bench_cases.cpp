@@ -41,7 +41,7 @@ double peakRssMb()
 }
 
 BenchResult runCase(const std::string &name, const RestrictionDomain &domain, int sites, int iterations,
-                    double alpha, int threads, double setupSeconds)
+                    double alpha, int threads, NeighbourSearch search, double setupSeconds)
 {
     BenchResult r;
     r.name = name;
@@ -55,6 +55,7 @@ BenchResult runCase(const std::string &name, const RestrictionDomain &domain, in
     params.iterations = iterations;
     params.alpha = alpha;
     params.threads = threads;
+    params.neighbourSearch = search;
     const CvtResult cvt = optimizeCvt(domain, initial, params);
     r.iterations = cvt.iterations;
     r.evaluations = cvt.evaluations;
@@ -65,7 +66,7 @@ BenchResult runCase(const std::string &name, const RestrictionDomain &domain, in
     r.firstEnergy = cvt.initialEnergy;
     r.lastEnergy = cvt.energy.empty() ? cvt.initialEnergy : cvt.energy.back();
     const auto rvdStart = std::chrono::steady_clock::now();
-    const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(domain, cvt.sites);
+    const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(domain, cvt.sites, Progress::none(), search);
     r.finalRvdSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - rvdStart).count();
     r.peakRssMb = peakRssMb();
     return r;

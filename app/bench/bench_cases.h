@@ -3,6 +3,7 @@
 #pragma once
 
 #include "voronoi/restriction_domain.h"
+#include "voronoi/voronoi_neighbours.h"
 
 #include <string>
 
@@ -18,7 +19,7 @@ struct BenchResult {
     double setupSeconds = 0;    // reading, topology, domain, sampling
     double totalSeconds = 0;    // optimisation
     double rvdSeconds = 0;      // restricted Voronoi integration, all evaluations
-    double delaunaySeconds = 0; // Delaunay of the sites, all evaluations
+    double delaunaySeconds = 0; // neighbours of the sites, all evaluations
     double finalRvdSeconds = 0; // one full symbolic diagram at the end (components included)
     double peakRssMb = 0;
     int threads = 0;
@@ -29,7 +30,7 @@ struct BenchResult {
 RestrictionDomain generatedSurface(int triangles);
 
 BenchResult runCase(const std::string &name, const RestrictionDomain &domain, int sites, int iterations,
-                    double alpha, int threads, double setupSeconds);
+                    double alpha, int threads, NeighbourSearch search, double setupSeconds);
 
 double peakRssMb();
 

@@ -1,6 +1,8 @@
 // stratamesh-bench [--case a|b|complexity|remesh|all] [--data-dir DIR] [--iterations N] [--threads N] [--alpha A]
+//                  [--neighbours delaunay|nearest|both]
 // Prints the Voronoi engine figures of issue 3: (a) modelA5 at 5000 sites, (b) a generated
-// surface of 1,000,000 triangles at 30,000 sites, 100 iterations each by default; and the
+// surface of 1,000,000 triangles at 30,000 sites, 100 iterations each by default, with the
+// Delaunay neighbours and with the k nearest ones (same diagram, voronoi_neighbours.h); and the
 // complexity section (issue 5: Tables 3.2-3.4 beside the thesis, 10,000 cells on modelA5).
 #include "bench_cases.h"
 #include "bench_complexity.h"
@@ -15,6 +17,8 @@
 #include <cstring>
 #include <exception>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace stratamesh;
 
@@ -31,7 +35,7 @@ void print(const bench::BenchResult &r)
     std::printf("  optimisation      %.3f s total\n", r.totalSeconds);
     std::printf("  RVD integration   %.3f s, %.2f ms per evaluation\n", r.rvdSeconds,
                 1e3 * r.rvdSeconds / std::max(1, r.evaluations));
-    std::printf("  Delaunay          %.3f s, %.2f ms per evaluation\n", r.delaunaySeconds,
+    std::printf("  neighbours        %.3f s, %.2f ms per evaluation\n", r.delaunaySeconds,
                 1e3 * r.delaunaySeconds / std::max(1, r.evaluations));
     std::printf("  final symbolic RVD %.3f s\n", r.finalRvdSeconds);
     std::printf("  peak memory       %.0f MB\n", r.peakRssMb);
@@ -43,7 +47,9 @@ void print(const bench::BenchResult &r)
 
 int main(int argc, char **argv)
 {
-    std::string which = "all", dataDir = "../shared/data";
+    // The data folder: --data-dir, else STRATAMESH_DATA_DIR, else the one configured by CMake.
+    const char *environment = std::getenv("STRATAMESH_DATA_DIR");
+    std::string which = "all", dataDir = environment ? environment : STRATAMESH_BENCH_DATA_DIR, neighbours = "both";
     int iterations = 100, threads = 0;
     double alpha = 0;
     for (int i = 1; i < argc; ++i) {
@@ -65,11 +71,22 @@ int main(int argc, char **argv)
             threads = std::atoi(value().c_str());
         else if (a == "--alpha")
             alpha = std::atof(value().c_str());
+        else if (a == "--neighbours")
+            neighbours = value();
         else {
             std::fprintf(stderr, "usage: stratamesh-bench [--case a|b|complexity|remesh|all] [--data-dir DIR] [--iterations N] "
-                                 "[--threads N] [--alpha A]\n");
+                                 "[--threads N] [--alpha A] [--neighbours delaunay|nearest|both]\n");
             return 2;
         }
+    }
+    std::vector<std::pair<NeighbourSearch, std::string>> searches;
+    if (neighbours == "delaunay" || neighbours == "both")
+        searches.emplace_back(NeighbourSearch::Delaunay, "Delaunay neighbours");
+    if (neighbours == "nearest" || neighbours == "both")
+        searches.emplace_back(NeighbourSearch::NearestNeighbours, "k-nearest neighbours");
+    if (searches.empty()) {
+        std::fprintf(stderr, "stratamesh-bench: --neighbours takes delaunay, nearest or both\n");
+        return 2;
     }
     try {
         if (which == "a" || which == "all") {
@@ -78,14 +95,17 @@ int main(int argc, char **argv)
             const Model model = recoverTopology(readModel(path));
             const RestrictionDomain domain = makeRestrictionDomain(model);
             const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            print(bench::runCase("(a) modelA5, 5000 sites", domain, 5000, iterations, alpha, threads, setup));
+            for (const auto &[search, label] : searches)
+                print(bench::runCase("(a) modelA5, 5000 sites, " + label, domain, 5000, iterations, alpha, threads,
+                                     search, setup));
         }
         if (which == "b" || which == "all") {
             const auto start = std::chrono::steady_clock::now();
             const RestrictionDomain domain = bench::generatedSurface(1000000);
             const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            print(bench::runCase("(b) generated surface, 30000 sites", domain, 30000, iterations, alpha, threads,
-                                 setup));
+            for (const auto &[search, label] : searches)
+                print(bench::runCase("(b) generated surface, 30000 sites, " + label, domain, 30000, iterations, alpha,
+                                     threads, search, setup));
         }
         if ((which == "complexity" || which == "all") && bench::runComplexityBench(dataDir, threads) != 0)
             return 1;

@@ -1,5 +1,5 @@
 // stratamesh-cli cvt MODEL --sites N [--iterations 100] [--seed S] [--alpha A] [--lloyd] [--json]
-//     [--sites-out FILE.xyz]
+//     [--sites-out FILE.xyz] [--neighbours delaunay|nearest]
 // Optimises N sites over all surfaces and lines of a model (thesis Alg. 4.1, §4.3) and reports
 // the energy per iteration, the restricted Delaunay triangulation's quality and the timings.
 #include "cli_output.h"
@@ -61,10 +61,15 @@ int runCvt(CommandArgs &args)
     const int seed = args.intOption(QStringLiteral("--seed"), 1, 0, std::numeric_limits<int>::max());
     const double alpha = args.doubleOption(QStringLiteral("--alpha"), 0.0, 0.0, 1.0);
     const std::optional<QString> sitesOut = args.option(QStringLiteral("--sites-out"));
+    const QString neighbours = args.option(QStringLiteral("--neighbours")).value_or(QStringLiteral("delaunay"));
     const QString path = args.positional(QStringLiteral("MODEL"));
     args.finish();
     if (sites < 1)
         throw UsageError(QStringLiteral("--sites N is required (N ≥ 1)"));
+    if (neighbours != QLatin1String("delaunay") && neighbours != QLatin1String("nearest"))
+        throw UsageError(QStringLiteral("--neighbours takes delaunay or nearest"));
+    const NeighbourSearch search =
+        neighbours == QLatin1String("nearest") ? NeighbourSearch::NearestNeighbours : NeighbourSearch::Delaunay;
     if (lloyd && alpha > 0)
         throw UsageError(QStringLiteral("--lloyd minimises the CVT energy only: it cannot take --alpha"));
 
@@ -78,12 +83,13 @@ int runCvt(CommandArgs &args)
     params.iterations = iterations;
     params.alpha = alpha;
     params.lloyd = lloyd;
+    params.neighbourSearch = search;
     if (!json)
         params.onIteration = [](const CvtIterationReport &r) {
             std::fprintf(stderr, "iteration %d: F = %.9g, |grad F| = %.4g\n", r.iteration, r.energy, r.gradientNorm);
         };
     const CvtResult result = optimizeCvt(domain, initial, params);
-    const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(domain, result.sites);
+    const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(domain, result.sites, Progress::none(), search);
     const RestrictedDelaunayQuality q = restrictedDelaunayQuality(restrictedDelaunay(domain, rvd));
     if (sitesOut)
         writeXyz(sitesOut->toStdString(), result.sites);
@@ -116,6 +122,7 @@ int runCvt(CommandArgs &args)
                          {QStringLiteral("optimisation_s"), result.totalSeconds},
                          {QStringLiteral("rvd_s"), result.rvdSeconds},
                          {QStringLiteral("delaunay_s"), result.delaunaySeconds},
+                         {QStringLiteral("neighbours"), neighbours},
                          {QStringLiteral("threads"), result.threads}}},
             {QStringLiteral("peak_rss_mb"), peakRssMb()},
         });

@@ -1,7 +1,7 @@
 #include "cvt/cvt_energy.h"
 
 #include "common/error.h"
-#include "voronoi/site_delaunay.h"
+#include "voronoi/voronoi_neighbours.h"
 
 #include <chrono>
 #include <cmath>
@@ -25,13 +25,13 @@ double CvtEvaluation::gradientNorm() const
 }
 
 CvtEvaluation evaluateCvtEnergy(const RestrictionDomain &domain, const std::vector<Vec3> &sites, double alpha,
-                                CellIntegralsWorkspace &workspace)
+                                CellIntegralsWorkspace &workspace, NeighbourSearch search)
 {
     if (!(alpha >= 0 && alpha <= 1))
         throw InputError("alpha must be in [0, 1], got " + std::to_string(alpha));
     CvtEvaluation r;
     auto start = std::chrono::steady_clock::now();
-    const SiteDelaunay delaunay(sites);
+    const VoronoiNeighbours delaunay(sites, search);
     r.delaunaySeconds = secondsSince(start);
     start = std::chrono::steady_clock::now();
     CellIntegralsOptions options;

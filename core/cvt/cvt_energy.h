@@ -18,7 +18,7 @@ struct CvtEvaluation {
     double boundaryEnergy = 0;  // F_B
     std::vector<Vec3> gradient; // ∇F, one per site
     CellIntegrals cells;
-    double delaunaySeconds = 0;
+    double delaunaySeconds = 0; // neighbours of the sites (Delaunay or kd-tree)
     double rvdSeconds = 0;
 
     double gradientNorm() const;
@@ -26,6 +26,6 @@ struct CvtEvaluation {
 
 // Evaluates F and ∇F at the sites. workspace carries the owner hints between calls.
 CvtEvaluation evaluateCvtEnergy(const RestrictionDomain &domain, const std::vector<Vec3> &sites, double alpha,
-                                CellIntegralsWorkspace &workspace);
+                                CellIntegralsWorkspace &workspace, NeighbourSearch search = NeighbourSearch::Delaunay);
 
 } // namespace stratamesh

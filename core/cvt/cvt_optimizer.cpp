@@ -77,7 +77,7 @@ public:
     const CvtEvaluation &evaluate(const std::vector<Vec3> &sites)
     {
         m_progress.tick(m_fraction, m_stage); // a cancel request is honoured between evaluations
-        m_last = evaluateCvtEnergy(m_domain, sites, m_params.alpha, m_workspace);
+        m_last = evaluateCvtEnergy(m_domain, sites, m_params.alpha, m_workspace, m_params.neighbourSearch);
         ++m_result.evaluations;
         m_result.rvdSeconds += m_last.rvdSeconds;
         m_result.delaunaySeconds += m_last.delaunaySeconds;

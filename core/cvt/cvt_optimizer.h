@@ -6,6 +6,7 @@
 
 #include "common/progress.h"
 #include "voronoi/restriction_domain.h"
+#include "voronoi/voronoi_neighbours.h"
 
 #include <functional>
 #include <string>
@@ -26,6 +27,9 @@ struct CvtParams {
     bool lloyd = false;              // Lloyd iterations instead of L-BFGS (requires alpha = 0)
     int threads = 0;                 // 0: oneTBB's default (all cores)
     int lbfgsMemory = 7;             // number of correction pairs kept by L-BFGS
+    // Neighbours of the sites at each evaluation: Delaunay triangulation, or k nearest sites
+    // (same diagram, faster; voronoi_neighbours.h).
+    NeighbourSearch neighbourSearch = NeighbourSearch::Delaunay;
     // Called after each iteration (from the calling thread); Progress::tick follows it, so a
     // cancel requested there stops the run with Cancelled.
     std::function<void(const CvtIterationReport &)> onIteration;
@@ -43,7 +47,7 @@ struct CvtResult {
     std::string stopReason;            // "iterations", "gradient", "line search", "no descent"
     double totalSeconds = 0;
     double rvdSeconds = 0;             // restricted Voronoi integration, summed
-    double delaunaySeconds = 0;        // Delaunay of the sites, summed
+    double delaunaySeconds = 0;        // neighbours of the sites (Delaunay or kd-tree), summed
     int threads = 0;
 };
 

@@ -112,7 +112,7 @@ ComputedPoint faceVertexPoint(const Vec3 &q0, const Vec3 &q1, const Vec3 &q2, co
     return r;
 }
 
-CellClipper::CellClipper(const RestrictionDomain &domain, const SiteDelaunay &delaunay)
+CellClipper::CellClipper(const RestrictionDomain &domain, const VoronoiNeighbours &delaunay)
     : m_domain(domain), m_delaunay(delaunay)
 {
     m_polygon.reserve(16);
@@ -169,15 +169,13 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
         radius = std::sqrt(r2) * (1 + 4 * kUnit);
     };
     measure();
-    const int *nb = m_delaunay.neighboursBegin(site);
-    const double *dist = m_delaunay.neighbourDistances(site);
-    const int count = m_delaunay.neighbourCount(site);
-    for (int q = 0; q < count && dist[q] <= 2.0 * (radius + largestError) * (1.0 + 1e-12); ++q) {
-        const int l = nb[q];
-        // In the site's frame, π_l − π_i = 2·(h − d·x') with d = p_l − p_i, h = |d|²/2. The bound
-        // covers the rounding of d, h and the dot product, and the error of x'.
+    const auto limit = [&] { return 2.0 * (radius + largestError) * (1.0 + 1e-12); };
+    // Clips by bisector(site, l); false once the polygon is empty.
+    const auto clip = [&](int l, double dn) {
+        // In the site's frame, π_l − π_i = 2·(h − d·x') with d = p_l − p_i, h = |d|²/2 and
+        // dn = |d| rounded. The bound covers the rounding of d, h and the dot product, and the
+        // error of x'.
         const Vec3 d = m_delaunay.site(l) - pi;
-        const double dn = dist[q]; // |d|, rounded
         const double h = 0.5 * dn * dn;
         const double bound = 1.01 * dn * largestError + kUnit * (8 * dn * radius + 12 * h);
         const int n = static_cast<int>(polygon.size());
@@ -191,10 +189,10 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
             positive += m_sides[k] > 0;
         }
         if (positive == n)
-            continue;
+            return true;
         if (positive == 0) {
             polygon.clear();
-            return;
+            return false;
         }
         m_next.clear();
         for (int k = 0; k < n; ++k) {
@@ -227,6 +225,21 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
         }
         polygon.swap(m_next);
         measure();
+        return true;
+    };
+    const int *nb = m_delaunay.neighboursBegin(site);
+    const double *dist = m_delaunay.neighbourDistances(site);
+    const int count = m_delaunay.neighbourCount(site);
+    int q = 0;
+    for (; q < count && dist[q] <= limit(); ++q)
+        if (!clip(nb[q], dist[q]))
+            return;
+    if (q == count && limit() >= m_delaunay.completeRadius(site)) {
+        // The list falls short of the security radius: the farther sites, from the kd-tree.
+        m_delaunay.sitesBeyondList(site, limit(), m_farther);
+        for (const auto &[dn, l] : m_farther)
+            if (dn <= limit() && !clip(l, dn))
+                return;
     }
 }
 
@@ -258,16 +271,24 @@ void CellClipper::clipSegment(int s, int site, SegmentEnd &first, SegmentEnd &se
     const int count = m_delaunay.neighbourCount(site);
     double limit = 2.0 * std::max((first.position - pi).norm() + first.error,
                                   (second.position - pi).norm() + second.error) * (1.0 + 1e-12);
-    for (int q = 0; q < count && dist[q] <= limit; ++q) {
-        const int l = nb[q];
+    const auto clip = [&](int l) {
         const int a = side(first, l), b = side(second, l);
         if (a < 0)
             throwInconsistent(s);
         if (b > 0)
-            continue;
+            return;
         second = cut(l);
         limit = 2.0 * std::max((first.position - pi).norm() + first.error,
                                (second.position - pi).norm() + second.error) * (1.0 + 1e-12);
+    };
+    int q = 0;
+    for (; q < count && dist[q] <= limit; ++q)
+        clip(nb[q]);
+    if (q == count && limit >= m_delaunay.completeRadius(site)) {
+        m_delaunay.sitesBeyondList(site, limit, m_farther);
+        for (const auto &[dn, l] : m_farther)
+            if (dn <= limit)
+                clip(l);
     }
 }
 

@@ -3,8 +3,8 @@
 // restricted Voronoi diagram", and Lévy & Bonneel 2013 for the propagation over
 // triangle–site pairs and the security radius).
 //
-// The triangle is clipped by the bisectors of the site's Voronoi neighbours in order of
-// distance, stopping when the next neighbour is farther than twice the farthest polygon vertex
+// The triangle is clipped by the bisectors of the site's neighbours (voronoi_neighbours.h) in
+// order of distance, stopping when the next neighbour is farther than twice the farthest polygon vertex
 // (no bisector beyond can cut it). Work is done in the site's frame (positions relative to the
 // site) where a side test is one dot product; each computed position carries a proven bound on
 // its distance to the exact symbolic point, and whenever that bound leaves the side in doubt,
@@ -16,7 +16,7 @@
 #pragma once
 
 #include "voronoi/restriction_domain.h"
-#include "voronoi/site_delaunay.h"
+#include "voronoi/voronoi_neighbours.h"
 
 #include <Eigen/Geometry>
 
@@ -62,7 +62,7 @@ ComputedPoint faceVertexPoint(const Vec3 &q0, const Vec3 &q1, const Vec3 &q2, co
 // One per thread: holds scratch buffers.
 class CellClipper {
 public:
-    CellClipper(const RestrictionDomain &domain, const SiteDelaunay &delaunay);
+    CellClipper(const RestrictionDomain &domain, const VoronoiNeighbours &neighbours);
 
     // Intersection of triangle t with the cell of site; empty when they do not meet.
     void clipTriangle(int t, int site, std::vector<ClipVertex> &polygon);
@@ -123,11 +123,12 @@ private:
     [[noreturn]] void throwInconsistent(int segment) const;
 
     const RestrictionDomain &m_domain;
-    const SiteDelaunay &m_delaunay;
+    const VoronoiNeighbours &m_delaunay;
     std::vector<ClipVertex> m_polygon, m_next;
     std::vector<int> m_visited;
     std::vector<int> m_sides;
     std::vector<double> m_values;
+    std::vector<std::pair<double, int>> m_farther;
 };
 
 } // namespace stratamesh::rvd

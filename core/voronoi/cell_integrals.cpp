@@ -67,7 +67,7 @@ double CellIntegrals::totalEnergy() const
     return e;
 }
 
-void computePointOwners(const RestrictionDomain &domain, const SiteDelaunay &delaunay,
+void computePointOwners(const RestrictionDomain &domain, const VoronoiNeighbours &delaunay,
                         CellIntegralsWorkspace &workspace)
 {
     const int np = static_cast<int>(domain.points.size());
@@ -88,7 +88,7 @@ void computePointOwners(const RestrictionDomain &domain, const SiteDelaunay &del
     });
 }
 
-CellIntegrals integrateCells(const RestrictionDomain &domain, const SiteDelaunay &delaunay,
+CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeighbours &delaunay,
                              const CellIntegralsOptions &options, CellIntegralsWorkspace &workspace)
 {
     const int ns = delaunay.siteCount();

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "voronoi/restriction_domain.h"
-#include "voronoi/site_delaunay.h"
+#include "voronoi/voronoi_neighbours.h"
 
 #include <vector>
 
@@ -40,12 +40,12 @@ struct CellIntegralsOptions {
     bool boundary = true; // compute the line terms (length, F_B)
 };
 
-CellIntegrals integrateCells(const RestrictionDomain &domain, const SiteDelaunay &delaunay,
+CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeighbours &delaunay,
                              const CellIntegralsOptions &options, CellIntegralsWorkspace &workspace);
 
 // Exact owner site of every domain point used by a triangle, segment or corner (−1 for
 // unused points), walking from the hints in the workspace.
-void computePointOwners(const RestrictionDomain &domain, const SiteDelaunay &delaunay,
+void computePointOwners(const RestrictionDomain &domain, const VoronoiNeighbours &delaunay,
                         CellIntegralsWorkspace &workspace);
 
 } // namespace stratamesh

@@ -135,14 +135,14 @@ std::size_t RvdSymbolHash::operator()(const RvdSymbol &s) const
 }
 
 RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domain, const std::vector<Vec3> &sites,
-                                                  Progress &progress)
+                                                  Progress &progress, NeighbourSearch search)
 {
-    const SiteDelaunay delaunay(sites);
+    const VoronoiNeighbours delaunay(sites, search);
     progress.tick(0.1, "restricted Voronoi diagram");
     return computeRestrictedVoronoi(domain, delaunay, progress);
 }
 
-RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domain, const SiteDelaunay &delaunay,
+RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domain, const VoronoiNeighbours &delaunay,
                                                   Progress &progress)
 {
     RestrictedVoronoiDiagram rvd;

@@ -23,7 +23,7 @@
 
 #include "common/progress.h"
 #include "voronoi/restriction_domain.h"
-#include "voronoi/site_delaunay.h"
+#include "voronoi/voronoi_neighbours.h"
 
 #include <array>
 #include <cstdint>
@@ -139,12 +139,14 @@ struct RestrictedVoronoiDiagram {
     }
 };
 
-// Computes the diagram (Delaunay of the sites included). Parallel with oneTBB; the result is
-// identical for any number of threads. Throws InputError on non-finite sites, Cancelled when
-// progress is cancelled.
+// Computes the diagram (neighbours of the sites included: the Delaunay triangulation by default,
+// see voronoi_neighbours.h; the diagram is the same either way). Parallel with oneTBB; the
+// result is identical for any number of threads. Throws InputError on non-finite sites,
+// Cancelled when progress is cancelled.
 RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domain, const std::vector<Vec3> &sites,
-                                                  Progress &progress = Progress::none());
-RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domain, const SiteDelaunay &delaunay,
+                                                  Progress &progress = Progress::none(),
+                                                  NeighbourSearch search = NeighbourSearch::Delaunay);
+RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domain, const VoronoiNeighbours &delaunay,
                                                   Progress &progress = Progress::none());
 
 } // namespace stratamesh

@@ -1,274 +1,130 @@
-#include "voronoi/site_delaunay.h"
+#include "voronoi/voronoi_neighbours.h"
 
 #include "common/error.h"
+#include "voronoi/delaunay_neighbours.h"
 #include "voronoi/rvd_predicates.h"
 
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
 #include <nanoflann.hpp>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <map>
-#include <numeric>
+#include <string>
 
 namespace stratamesh {
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
-using Cb = CGAL::Delaunay_triangulation_cell_base_3<K>;
-using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
-using Dt = CGAL::Delaunay_triangulation_3<K, Tds>;
-using CellHandle = Dt::Cell_handle;
-
-K::Point_3 toPoint(const Vec3 &v) { return {v.x(), v.y(), v.z()}; }
-
-// True when e is certainly not on the sphere through a, b, c, d: the in-sphere determinant in
-// double is farther from zero than its error bound (Shewchuk 1997, "Adaptive precision
-// floating-point arithmetic", insphere errboundA). Only the doubtful cases reach the exact test.
-bool certainlyNotCospherical(const K::Point_3 &a, const K::Point_3 &b, const K::Point_3 &c, const K::Point_3 &d,
-                             const K::Point_3 &e)
-{
-    const double aex = a.x() - e.x(), bex = b.x() - e.x(), cex = c.x() - e.x(), dex = d.x() - e.x();
-    const double aey = a.y() - e.y(), bey = b.y() - e.y(), cey = c.y() - e.y(), dey = d.y() - e.y();
-    const double aez = a.z() - e.z(), bez = b.z() - e.z(), cez = c.z() - e.z(), dez = d.z() - e.z();
-    const double aexbey = aex * bey, bexaey = bex * aey, bexcey = bex * cey, cexbey = cex * bey;
-    const double cexdey = cex * dey, dexcey = dex * cey, dexaey = dex * aey, aexdey = aex * dey;
-    const double aexcey = aex * cey, cexaey = cex * aey, bexdey = bex * dey, dexbey = dex * bey;
-    const double ab = aexbey - bexaey, bc = bexcey - cexbey, cd = cexdey - dexcey, da = dexaey - aexdey;
-    const double ac = aexcey - cexaey, bd = bexdey - dexbey;
-    const double abc = aez * bc - bez * ac + cez * ab;
-    const double bcd = bez * cd - cez * bd + dez * bc;
-    const double cda = cez * da + dez * ac + aez * cd;
-    const double dab = dez * ab + aez * bd + bez * da;
-    const double alift = aex * aex + aey * aey + aez * aez, blift = bex * bex + bey * bey + bez * bez;
-    const double clift = cex * cex + cey * cey + cez * cez, dlift = dex * dex + dey * dey + dez * dez;
-    const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-    const auto A = [](double x) { return std::fabs(x); };
-    const double permanent =
-        ((A(cexdey) + A(dexcey)) * A(bez) + (A(dexbey) + A(bexdey)) * A(cez) + (A(bexcey) + A(cexbey)) * A(dez)) * alift +
-        ((A(dexaey) + A(aexdey)) * A(cez) + (A(aexcey) + A(cexaey)) * A(dez) + (A(cexdey) + A(dexcey)) * A(aez)) * blift +
-        ((A(aexbey) + A(bexaey)) * A(dez) + (A(bexdey) + A(dexbey)) * A(aez) + (A(dexaey) + A(aexdey)) * A(bez)) * clift +
-        ((A(bexcey) + A(cexbey)) * A(aez) + (A(cexaey) + A(aexcey)) * A(bez) + (A(aexbey) + A(bexaey)) * A(cez)) * dlift;
-    constexpr double u = 0x1p-53;
-    return std::fabs(det) > (16.0 + 224.0 * u) * u * permanent && permanent < 1e250;
-}
-
-// Pairs of Delaunay cells (or hull facets) lying on one sphere (or one plane): their vertices
-// form a cluster whose triangulation is not unique.
-struct DegenerateClusters {
-    std::vector<std::pair<CellHandle, CellHandle>> links;
-
-    // Every pair of sites inside each cluster.
-    void addPairs(const Dt &dt, std::vector<std::pair<int, int>> &pairs) const
-    {
-        if (links.empty())
-            return;
-        std::map<CellHandle, int> id;
-        for (const auto &[a, b] : links) {
-            id.emplace(a, static_cast<int>(id.size()));
-            id.emplace(b, static_cast<int>(id.size()));
-        }
-        std::vector<int> parent(id.size());
-        std::iota(parent.begin(), parent.end(), 0);
-        const auto find = [&](int x) {
-            while (parent[x] != x)
-                x = parent[x] = parent[parent[x]];
-            return x;
-        };
-        for (const auto &[a, b] : links)
-            parent[find(id[a])] = find(id[b]);
-        std::map<int, std::vector<int>> members;
-        for (const auto &[cell, index] : id)
-            for (int v = 0; v <= dt.dimension(); ++v)
-                if (!dt.is_infinite(cell->vertex(v)))
-                    members[find(index)].push_back(cell->vertex(v)->info());
-        for (auto &[root, sites] : members) {
-            std::sort(sites.begin(), sites.end());
-            sites.erase(std::unique(sites.begin(), sites.end()), sites.end());
-            for (std::size_t a = 0; a < sites.size(); ++a)
-                for (std::size_t b = a + 1; b < sites.size(); ++b)
-                    pairs.emplace_back(sites[a], sites[b]);
-        }
-    }
-};
-
-// Degenerate adjacencies of a 3D triangulation (its Delaunay edges come from the cells).
-void collectDegenerate3(const Dt &dt, DegenerateClusters &clusters)
-{
-    const K::Side_of_oriented_sphere_3 sideOfSphere = dt.geom_traits().side_of_oriented_sphere_3_object();
-    const K::Orientation_3 orientation = dt.geom_traits().orientation_3_object();
-    const auto sideOfCircle = dt.geom_traits().coplanar_side_of_bounded_circle_3_object();
-    for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
-        const CellHandle ch = c;
-        const bool infinite = dt.is_infinite(ch);
-        for (int f = 0; f < 4; ++f) {
-            const CellHandle n = c->neighbor(f);
-            if (!(ch < n))
-                continue; // each adjacency once
-            const bool nInfinite = dt.is_infinite(n);
-            const auto opposite = n->vertex(n->index(ch));
-            if (!infinite && !nInfinite) {
-                if (!certainlyNotCospherical(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
-                                             c->vertex(3)->point(), opposite->point()) &&
-                    sideOfSphere(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
-                                 c->vertex(3)->point(), opposite->point()) == CGAL::ON_ORIENTED_BOUNDARY)
-                    clusters.links.emplace_back(ch, n);
-            } else if (infinite && nInfinite) {
-                // Two hull facets sharing an edge: degenerate when their four sites are cocircular.
-                K::Point_3 p[3];
-                int m = 0;
-                for (int v = 0; v < 4; ++v)
-                    if (!dt.is_infinite(c->vertex(v)))
-                        p[m++] = c->vertex(v)->point();
-                if (m == 3 && orientation(p[0], p[1], p[2], opposite->point()) == CGAL::COPLANAR &&
-                    sideOfCircle(p[0], p[1], p[2], opposite->point()) == CGAL::ON_BOUNDARY)
-                    clusters.links.emplace_back(ch, n);
-            }
-        }
-    }
-}
-
-void collectDimension2(const Dt &dt, std::vector<std::pair<int, int>> &pairs, DegenerateClusters &clusters)
-{
-    const auto sideOfCircle = dt.geom_traits().coplanar_side_of_bounded_circle_3_object();
-    for (auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f) {
-        const CellHandle c = f->first;
-        for (int a = 0; a < 3; ++a) {
-            pairs.emplace_back(c->vertex(a)->info(), c->vertex((a + 1) % 3)->info());
-            const CellHandle n = c->neighbor(a);
-            if (!(c < n) || dt.is_infinite(n))
-                continue;
-            const auto opposite = n->vertex(n->index(c));
-            if (sideOfCircle(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
-                             opposite->point()) == CGAL::ON_BOUNDARY)
-                clusters.links.emplace_back(c, n);
-        }
-    }
-}
+// Nearest sites listed per site; beyond them, sitesBeyondList() completes a list on demand.
+constexpr int kNearest = 16;
 
 } // namespace
 
-struct SiteDelaunay::KdTree {
+struct VoronoiNeighbours::KdTree {
     struct Cloud {
         const Vec3 *points = nullptr;
-        std::vector<int> ids; // visible sites
-        std::size_t kdtree_get_point_count() const { return ids.size(); }
-        double kdtree_get_pt(std::size_t i, std::size_t dim) const { return points[ids[i]][static_cast<int>(dim)]; }
+        std::size_t count = 0;
+        std::size_t kdtree_get_point_count() const { return count; }
+        double kdtree_get_pt(std::size_t i, std::size_t dim) const { return points[i][static_cast<int>(dim)]; }
         template <class B> bool kdtree_get_bbox(B &) const { return false; }
     };
-    using Index = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3>;
+    using Index = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3, int>;
     Cloud cloud;
     std::unique_ptr<Index> index;
 };
 
-SiteDelaunay::SiteDelaunay() : m_kdOnce(std::make_unique<std::once_flag>()) {}
-SiteDelaunay::~SiteDelaunay() = default;
-SiteDelaunay::SiteDelaunay(SiteDelaunay &&) noexcept = default;
-SiteDelaunay &SiteDelaunay::operator=(SiteDelaunay &&) noexcept = default;
+VoronoiNeighbours::VoronoiNeighbours() : m_kdOnce(std::make_unique<std::once_flag>()) {}
+VoronoiNeighbours::~VoronoiNeighbours() = default;
+VoronoiNeighbours::VoronoiNeighbours(VoronoiNeighbours &&) noexcept = default;
+VoronoiNeighbours &VoronoiNeighbours::operator=(VoronoiNeighbours &&) noexcept = default;
 
-SiteDelaunay::SiteDelaunay(std::vector<Vec3> sites)
-    : m_sites(std::move(sites)), m_kdOnce(std::make_unique<std::once_flag>())
+VoronoiNeighbours::VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch search)
+    : m_search(search), m_sites(std::move(sites)), m_kdOnce(std::make_unique<std::once_flag>())
 {
-    if (m_sites.size() > static_cast<std::size_t>(std::numeric_limits<int>::max() / 4))
+    if (m_sites.size() > static_cast<std::size_t>(std::numeric_limits<int>::max() / 32))
         throw InputError("too many sites: " + std::to_string(m_sites.size()));
     const int n = siteCount();
     for (int i = 0; i < n; ++i)
         if (!m_sites[i].allFinite())
             throw InputError("site " + std::to_string(i) + " has a non-finite coordinate");
-
-    m_hidden.assign(m_sites.size(), 0);
-    std::vector<std::pair<K::Point_3, int>> points;
-    points.reserve(n);
-    for (int s = 0; s < n; ++s)
-        points.emplace_back(toPoint(m_sites[s]), s);
-    Dt dt(points.begin(), points.end());
-    m_dimension = dt.dimension();
-    keepLowestDuplicates(dt);
+    if (search == NeighbourSearch::Delaunay) {
+        detail::DelaunayLists lists = detail::delaunayNeighbourLists(m_sites);
+        m_hidden = std::move(lists.hidden);
+        m_offsets = std::move(lists.offsets);
+        m_neighbours = std::move(lists.neighbours);
+        m_dimension = lists.dimension;
+        if (m_offsets.empty())
+            m_offsets.assign(m_sites.size() + 1, 0);
+    } else {
+        buildNearest();
+    }
     for (int s = 0; s < n && m_firstVisible < 0; ++s)
         if (!m_hidden[s])
             m_firstVisible = s;
+    sortByDistance();
+}
 
-    // Neighbours: per site, the other vertices of its cells (with repetitions), de-duplicated;
-    // in parallel, the search for degenerate clusters, whose pairs are merged in afterwards.
-    std::vector<std::pair<int, int>> pairs; // edges of a lower-dimensional triangulation
-    DegenerateClusters clusters;
-    if (m_dimension == 2) {
-        collectDimension2(dt, pairs, clusters);
-    } else if (m_dimension == 1) {
-        for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
-            pairs.emplace_back(e->first->vertex(e->second)->info(), e->first->vertex(e->third)->info());
-    }
-    const auto extract = [&] {
-        std::vector<int> rawOffsets(n + 1, 0);
-        if (m_dimension == 3)
-            for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-                for (int v = 0; v < 4; ++v)
-                    rawOffsets[c->vertex(v)->info() + 1] += 3;
-        for (const auto &[a, b] : pairs) {
-            ++rawOffsets[a + 1];
-            ++rawOffsets[b + 1];
-        }
-        std::partial_sum(rawOffsets.begin(), rawOffsets.end(), rawOffsets.begin());
-        std::vector<int> raw(rawOffsets.back());
-        {
-            std::vector<int> fill(rawOffsets.begin(), rawOffsets.end() - 1);
-            if (m_dimension == 3)
-                for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
-                    const int ids[4] = {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
-                                        c->vertex(3)->info()};
-                    for (int v = 0; v < 4; ++v)
-                        for (int w = 1; w < 4; ++w)
-                            raw[fill[ids[v]]++] = ids[(v + w) % 4];
-                }
-            for (const auto &[a, b] : pairs) {
-                raw[fill[a]++] = b;
-                raw[fill[b]++] = a;
-            }
-        }
-        std::vector<int> stamp(n, -1);
-        m_offsets.assign(n + 1, 0);
-        m_neighbours.clear();
-        m_neighbours.reserve(raw.size() / 3 + 16);
-        for (int i = 0; i < n; ++i) {
-            for (int k = rawOffsets[i]; k < rawOffsets[i + 1]; ++k) {
-                const int j = raw[k];
-                if (j != i && stamp[j] != i) {
-                    stamp[j] = i;
-                    m_neighbours.push_back(j);
-                }
-            }
-            m_offsets[i + 1] = static_cast<int>(m_neighbours.size());
-        }
-    };
-    if (m_dimension == 3)
-        tbb::parallel_invoke(extract, [&] { collectDegenerate3(dt, clusters); });
-    else
-        extract();
-    std::vector<std::pair<int, int>> extra;
-    clusters.addPairs(dt, extra);
-    if (!extra.empty()) {
-        std::vector<std::vector<int>> lists(n);
-        for (int i = 0; i < n; ++i)
-            lists[i].assign(neighboursBegin(i), neighboursEnd(i));
-        for (const auto &[a, b] : extra) {
-            lists[a].push_back(b);
-            lists[b].push_back(a);
-        }
-        m_neighbours.clear();
-        for (int i = 0; i < n; ++i) {
-            std::sort(lists[i].begin(), lists[i].end());
-            lists[i].erase(std::unique(lists[i].begin(), lists[i].end()), lists[i].end());
-            m_neighbours.insert(m_neighbours.end(), lists[i].begin(), lists[i].end());
-            m_offsets[i + 1] = static_cast<int>(m_neighbours.size());
-        }
-    }
+const VoronoiNeighbours::KdTree &VoronoiNeighbours::kdTree() const
+{
+    std::call_once(*m_kdOnce, [this] {
+        m_kdTree = std::make_unique<KdTree>();
+        m_kdTree->cloud.points = m_sites.data();
+        m_kdTree->cloud.count = m_sites.size();
+        m_kdTree->index = std::make_unique<KdTree::Index>(3, m_kdTree->cloud,
+                                                          nanoflann::KDTreeSingleIndexAdaptorParams(10));
+        m_kdTree->index->buildIndex();
+    });
+    return *m_kdTree;
+}
 
+void VoronoiNeighbours::buildNearest()
+{
+    const int n = siteCount();
+    const int k = std::min(n, kNearest + 1); // the site itself comes back too
+    m_offsets.assign(n + 1, 0);
+    m_neighbours.assign(static_cast<std::size_t>(n) * (k - 1 > 0 ? k - 1 : 0), -1);
+    m_complete.assign(n, std::numeric_limits<double>::infinity());
+    m_hidden.assign(n, 0);
+    const KdTree &tree = kdTree();
+    tbb::parallel_for(tbb::blocked_range<int>(0, n, 512), [&](const tbb::blocked_range<int> &r) {
+        std::vector<int> ids(k);
+        std::vector<double> d2(k);
+        for (int i = r.begin(); i < r.end(); ++i) {
+            const double query[3] = {m_sites[i].x(), m_sites[i].y(), m_sites[i].z()};
+            const std::size_t found = tree.index->knnSearch(query, k, ids.data(), d2.data());
+            int m = 0;
+            double farthest = 0;
+            for (std::size_t a = 0; a < found; ++a) {
+                if (ids[a] == i)
+                    continue;
+                if (m < k - 1)
+                    m_neighbours[static_cast<std::size_t>(i) * (k - 1) + m++] = ids[a];
+                farthest = std::max(farthest, (m_sites[ids[a]] - m_sites[i]).norm());
+                if (m_sites[ids[a]] == m_sites[i] && ids[a] < i)
+                    m_hidden[i] = 1; // a lower index owns this point
+            }
+            // All sites strictly closer than the farthest found one are listed, unless the
+            // tree returned fewer than asked (then every site is listed).
+            if (static_cast<int>(found) == k && k < n)
+                m_complete[i] = farthest;
+        }
+    });
+    // Every list has k − 1 slots; compact the unused ones (only when the site itself was missed).
+    std::vector<int> compact;
+    compact.reserve(m_neighbours.size());
+    for (int i = 0; i < n; ++i) {
+        for (int a = 0; a < k - 1; ++a) {
+            const int j = m_neighbours[static_cast<std::size_t>(i) * (k - 1) + a];
+            if (j >= 0)
+                compact.push_back(j);
+        }
+        m_offsets[i + 1] = static_cast<int>(compact.size());
+    }
+    m_neighbours.swap(compact);
+}
+
+void VoronoiNeighbours::sortByDistance()
+{
+    const int n = siteCount();
     m_distances.resize(m_neighbours.size());
     tbb::parallel_for(tbb::blocked_range<int>(0, n, 256), [&](const tbb::blocked_range<int> &r) {
         std::vector<std::pair<double, int>> tmp;
@@ -285,75 +141,74 @@ SiteDelaunay::SiteDelaunay(std::vector<Vec3> sites)
     });
 }
 
-// CGAL keeps one vertex per position and gives it the info of the last duplicate inserted. Under
-// the perturbation the lowest index owns the point: give it the vertex, hide the others.
-template <class Triangulation> void SiteDelaunay::keepLowestDuplicates(Triangulation &dt)
+void VoronoiNeighbours::sitesBeyondList(int i, double radius, std::vector<std::pair<double, int>> &out) const
 {
-    const int n = siteCount();
-    std::vector<char> present(n, 0);
-    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
-        present[v->info()] = 1;
-    for (int s = 0; s < n; ++s) {
-        if (present[s])
+    out.clear();
+    const double complete = completeRadius(i);
+    if (!(radius >= complete))
+        return;
+    const double query[3] = {m_sites[i].x(), m_sites[i].y(), m_sites[i].z()};
+    std::vector<std::pair<int, double>> matches;
+    nanoflann::SearchParams params;
+    params.sorted = false;
+    // A little wider than asked: distances are recomputed and filtered exactly as in the lists.
+    const double r = radius * (1 + 1e-9) + 1e-300;
+    kdTree().index->radiusSearch(query, r * r, matches, params);
+    for (const auto &[j, d2] : matches) {
+        if (j == i)
             continue;
-        const auto v = dt.nearest_vertex(toPoint(m_sites[s])); // the vertex at the same position
-        if (s < v->info()) {
-            m_hidden[v->info()] = 1;
-            v->info() = s;
-        } else {
-            m_hidden[s] = 1;
-        }
+        const double d = (m_sites[j] - m_sites[i]).norm();
+        if (d > radius || d < complete)
+            continue;
+        // At exactly the complete radius, a site may be listed already (ties cut the k nearest).
+        bool listed = false;
+        for (int k = m_offsets[i + 1] - 1; k >= m_offsets[i] && m_distances[k] >= d; --k)
+            listed = listed || m_neighbours[k] == j;
+        if (!listed)
+            out.emplace_back(d, j);
     }
+    std::sort(out.begin(), out.end());
 }
 
-std::vector<std::array<int, 2>> SiteDelaunay::neighbourPairs() const
+int VoronoiNeighbours::approximateNearest(const Vec3 &q) const
 {
-    std::vector<std::array<int, 2>> result;
-    for (int i = 0; i < siteCount(); ++i)
-        for (const int *j = neighboursBegin(i); j != neighboursEnd(i); ++j)
-            if (i < *j)
-                result.push_back({i, *j});
-    std::sort(result.begin(), result.end());
-    return result;
-}
-
-int SiteDelaunay::approximateNearest(const Vec3 &q) const
-{
-    std::call_once(*m_kdOnce, [this] {
-        m_kdTree = std::make_unique<KdTree>();
-        m_kdTree->cloud.points = m_sites.data();
-        for (int i = 0; i < siteCount(); ++i)
-            if (!m_hidden[i])
-                m_kdTree->cloud.ids.push_back(i);
-        m_kdTree->index = std::make_unique<KdTree::Index>(3, m_kdTree->cloud,
-                                                          nanoflann::KDTreeSingleIndexAdaptorParams(10));
-        m_kdTree->index->buildIndex();
-    });
-    unsigned int index = 0;
+    int index = 0;
     double distance = 0;
     const double query[3] = {q.x(), q.y(), q.z()};
-    m_kdTree->index->knnSearch(query, 1, &index, &distance);
-    return m_kdTree->cloud.ids[index];
+    kdTree().index->knnSearch(query, 1, &index, &distance);
+    return index;
 }
 
-int SiteDelaunay::owner(const Vec3 &q, int hint) const
+int VoronoiNeighbours::owner(const Vec3 &q, int hint) const
 {
     if (m_firstVisible < 0)
         return -1;
     int c = (hint >= 0 && hint < siteCount() && !m_hidden[hint]) ? hint : approximateNearest(q);
+    if (m_hidden[c])
+        c = m_firstVisible;
+    std::vector<std::pair<double, int>> farther;
     for (;;) {
         const Vec3 &pc = m_sites[c];
-        // Beyond twice the distance to q, no neighbour can be closer to q (security radius).
+        // Beyond twice the distance to q, no site can be closer to q (security radius).
         const double limit = 2.0 * (q - pc).norm() * (1.0 + 1e-12);
         const int *nb = neighboursBegin(c);
         const double *dist = neighbourDistances(c);
         const int count = neighbourCount(c);
         int next = -1;
-        for (int k = 0; k < count && dist[k] <= limit; ++k) {
+        int k = 0;
+        for (; k < count && dist[k] <= limit; ++k) {
             if (rvd::sideOfInputVertex(q, pc, c, m_sites[nb[k]], nb[k]) < 0) {
                 next = nb[k];
                 break;
             }
+        }
+        if (next < 0 && k == count && limit >= completeRadius(c)) {
+            sitesBeyondList(c, limit, farther);
+            for (const auto &[d, l] : farther)
+                if (rvd::sideOfInputVertex(q, pc, c, m_sites[l], l) < 0) {
+                    next = l;
+                    break;
+                }
         }
         if (next < 0)
             return c;

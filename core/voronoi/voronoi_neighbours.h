@@ -1,66 +1,89 @@
-// Sites in 3D and their Voronoi neighbours from the Delaunay triangulation (thesis §1.1;
-// CGAL Delaunay_triangulation_3 with exact predicates). Rebuilt at every CVT iteration.
+// Sites in 3D and, for each, the sites whose bisectors may bound its Voronoi cell, sorted by
+// distance: what the restricted Voronoi diagram clips with (thesis §1.1, §1.2.2). Rebuilt at
+// every CVT iteration. Two ways to get them, giving the same exact diagram:
 //
-// Neighbours are the Delaunay edges plus, where sites are cospherical (several Delaunay cells
-// share one circumsphere) or coplanar on the hull, every pair of such a cluster. The Voronoi
-// cell of a site is then exactly the intersection of the half-spaces of its neighbours under
-// the symbolic perturbation of rvd_predicates.h, whatever triangulation CGAL chose for the
-// degenerate cluster (a regular grid of sites is the typical case).
+//  - Delaunay (default): the Delaunay neighbours (CGAL Delaunay_triangulation_3, exact
+//    predicates) plus, where sites are cospherical (several Delaunay cells share one sphere) or
+//    cocircular on the hull, every pair of such a cluster, so that the list holds every
+//    neighbour of the perturbed diagram of rvd_predicates.h whatever triangulation CGAL chose
+//    for the degenerate cluster (a regular grid of sites is the typical case).
+//  - NearestNeighbours: the k nearest sites from a kd-tree (nanoflann), with the radius within
+//    which the list is complete; a user that needs farther sites asks sitesBeyondList(). With the
+//    security radius (clipping stops at twice the farthest polygon vertex), any complete list
+//    of nearby sites gives the exact cell (Lévy & Bonneel 2013, "Variational anisotropic
+//    surface meshing with Voronoi parallel linear enumeration", §4). Parallel, and faster than
+//    the Delaunay triangulation, which runs on one thread.
 #pragma once
 
 #include "model/model.h"
 
+#include <limits>
 #include <memory>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 namespace stratamesh {
 
-class SiteDelaunay {
-public:
-    SiteDelaunay();
-    // Builds the triangulation of the sites. Exactly duplicated sites are kept but hidden: the
-    // lowest index owns the point, the others have empty cells. Throws InputError on a
-    // non-finite coordinate.
-    explicit SiteDelaunay(std::vector<Vec3> sites);
-    ~SiteDelaunay();
-    SiteDelaunay(SiteDelaunay &&) noexcept;
-    SiteDelaunay &operator=(SiteDelaunay &&) noexcept;
+enum class NeighbourSearch { Delaunay, NearestNeighbours };
 
+class VoronoiNeighbours {
+public:
+    VoronoiNeighbours();
+    // Exactly duplicated sites are kept but hidden: the lowest index owns the point, the others
+    // have empty cells. Throws InputError on a non-finite coordinate.
+    explicit VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch search = NeighbourSearch::Delaunay);
+    ~VoronoiNeighbours();
+    VoronoiNeighbours(VoronoiNeighbours &&) noexcept;
+    VoronoiNeighbours &operator=(VoronoiNeighbours &&) noexcept;
+
+    NeighbourSearch search() const { return m_search; }
     int siteCount() const { return static_cast<int>(m_sites.size()); }
     const std::vector<Vec3> &sites() const { return m_sites; }
     const Vec3 &site(int i) const { return m_sites[i]; }
-    // Affine dimension of the sites (3 in general; 2 when all are coplanar, ...).
+    // Delaunay: affine dimension of the sites (3 in general; 2 when all are coplanar, ...).
+    // NearestNeighbours: −1 (not computed).
     int dimension() const { return m_dimension; }
     bool isHidden(int i) const { return m_hidden[i] != 0; }
 
-    // Voronoi neighbours of site i sorted by increasing distance |p_l − p_i| (ties by index).
+    // Neighbours of site i sorted by increasing distance |p_l − p_i| (ties by index).
     const int *neighboursBegin(int i) const { return m_neighbours.data() + m_offsets[i]; }
     const int *neighboursEnd(int i) const { return m_neighbours.data() + m_offsets[i + 1]; }
     // |p_l − p_i| in the same order.
     const double *neighbourDistances(int i) const { return m_distances.data() + m_offsets[i]; }
     int neighbourCount(int i) const { return m_offsets[i + 1] - m_offsets[i]; }
-    // Undirected neighbour pairs (i < j), sorted.
-    std::vector<std::array<int, 2>> neighbourPairs() const;
+    // Every site closer to site i than this is in its list (infinite for Delaunay lists, which
+    // hold all Voronoi neighbours).
+    double completeRadius(int i) const
+    {
+        return m_complete.empty() ? std::numeric_limits<double>::infinity() : m_complete[i];
+    }
+    // The sites within `radius` of site i that its list lacks (distance ≥ completeRadius(i) and
+    // not listed), as (distance, site) sorted like the lists.
+    void sitesBeyondList(int i, double radius, std::vector<std::pair<double, int>> &out) const;
 
     // The site whose perturbed Voronoi cell contains q (exact), found by a greedy walk over
     // neighbours starting from hint (any visible site; −1 to start from a nearest-site search).
     int owner(const Vec3 &q, int hint = -1) const;
 
 private:
+    struct KdTree;
+    const KdTree &kdTree() const;
     int approximateNearest(const Vec3 &q) const;
-    template <class Triangulation> void keepLowestDuplicates(Triangulation &dt);
+    void buildNearest();
+    void sortByDistance();
 
+    NeighbourSearch m_search = NeighbourSearch::Delaunay;
     std::vector<Vec3> m_sites;
     std::vector<char> m_hidden;
     std::vector<int> m_offsets;
     std::vector<int> m_neighbours;
     std::vector<double> m_distances;
+    std::vector<double> m_complete; // empty for Delaunay lists
     int m_dimension = -1;
     int m_firstVisible = -1;
 
-    struct KdTree;
-    mutable std::unique_ptr<KdTree> m_kdTree; // built on first use by owner(q, −1)
+    mutable std::unique_ptr<KdTree> m_kdTree; // built on first use
     mutable std::unique_ptr<std::once_flag> m_kdOnce;
 };
 

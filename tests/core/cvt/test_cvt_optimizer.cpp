@@ -110,6 +110,26 @@ private slots:
         QVERIFY(one.energy == two.energy);
     }
 
+    void nearestNeighbourSearchFollowsTheSamePath()
+    {
+        // Same exact diagrams, so the same optimisation up to rounding of the integrals.
+        const RestrictionDomain d = test::sphereDomain(3);
+        const std::vector<Vec3> initial = sampleSurfaces(d, 80, 13);
+        CvtParams params;
+        params.iterations = 8;
+        const CvtResult delaunay = optimizeCvt(d, initial, params);
+        params.neighbourSearch = NeighbourSearch::NearestNeighbours;
+        const CvtResult nearest = optimizeCvt(d, initial, params);
+        QCOMPARE(nearest.iterations, delaunay.iterations);
+        for (std::size_t k = 0; k < delaunay.energy.size(); ++k)
+            QVERIFY(std::abs(nearest.energy[k] - delaunay.energy[k]) <= 1e-9 * delaunay.energy[k]);
+        params.threads = 1;
+        const CvtResult one = optimizeCvt(d, initial, params);
+        params.threads = 2;
+        const CvtResult two = optimizeCvt(d, initial, params);
+        QVERIFY(one.sites == two.sites);
+    }
+
     void stopsAtGradientTolerance()
     {
         const RestrictionDomain d = test::sphereDomain(3);

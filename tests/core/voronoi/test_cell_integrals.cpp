@@ -17,7 +17,7 @@ double sum(const std::vector<double> &v) { return std::accumulate(v.begin(), v.e
 
 CellIntegrals integrate(const RestrictionDomain &d, const std::vector<Vec3> &sites)
 {
-    const SiteDelaunay dt(sites);
+    const VoronoiNeighbours dt(sites);
     CellIntegralsWorkspace ws;
     return integrateCells(d, dt, {}, ws);
 }
@@ -130,7 +130,7 @@ private slots:
         QCOMPARE(ci.area[17], 0.0);
         QCOMPARE(ci.area[39], 0.0);
         QVERIFY(ci.area[4] > 0 && ci.area[2] > 0);
-        const SiteDelaunay dt(sites);
+        const VoronoiNeighbours dt(sites);
         QVERIFY(dt.isHidden(31) && dt.isHidden(17) && dt.isHidden(39) && !dt.isHidden(4) && !dt.isHidden(2));
     }
 

@@ -224,6 +224,55 @@ private slots:
         QVERIFY(one.polygonVertices == two.polygonVertices);
     }
 
+    void nearestNeighboursGiveTheSameDiagram_data()
+    {
+        QTest::addColumn<int>("shape");
+        QTest::newRow("random sites around a sphere") << 0;
+        QTest::newRow("grid of coplanar sites") << 1;
+        QTest::newRow("dense cluster in a corner") << 2;
+        QTest::newRow("sandwiched sites") << 3;
+    }
+    void nearestNeighboursGiveTheSameDiagram()
+    {
+        // Both neighbour searches must give the same exact diagram: same symbols, same polygons.
+        QFETCH(int, shape);
+        RestrictionDomain d;
+        std::vector<Vec3> sites;
+        if (shape == 0) {
+            d = test::sphereDomain(3);
+            sites = test::randomPointsInBox(200, Vec3(-1.2, -1.2, -1.2), Vec3(1.2, 1.2, 1.2), 31);
+        } else if (shape == 1) {
+            d = test::squareDomain(16);
+            for (int j = 0; j < 6; ++j)
+                for (int i = 0; i < 6; ++i)
+                    sites.push_back({(i + 0.5) / 6, (j + 0.5) / 6, 0.0});
+        } else if (shape == 2) {
+            // Cells far larger than the 24 nearest sites reach: the lists must be completed.
+            d = test::squareDomain(12);
+            sites = test::randomPointsInBox(300, Vec3(0, 0, -0.02), Vec3(0.08, 0.08, 0.02), 32);
+            sites.push_back({0.9, 0.9, 0.5});
+        } else {
+            d = test::parallelPlanesDomain(12, 0.05);
+            sites = test::randomPointsInBox(80, Vec3(0, 0, 0.02), Vec3(1, 1, 0.03), 33);
+        }
+        const RestrictedVoronoiDiagram a = computeRestrictedVoronoi(d, sites, Progress::none(), NeighbourSearch::Delaunay);
+        const RestrictedVoronoiDiagram b =
+            computeRestrictedVoronoi(d, sites, Progress::none(), NeighbourSearch::NearestNeighbours);
+        QCOMPARE(a.vertices.size(), b.vertices.size());
+        for (std::size_t v = 0; v < a.vertices.size(); ++v) {
+            QVERIFY(a.vertices[v].symbol == b.vertices[v].symbol);
+            QVERIFY(a.vertices[v].position == b.vertices[v].position); // canonical from the symbol
+        }
+        QVERIFY(a.polygonVertices == b.polygonVertices);
+        QVERIFY(a.polygonSupports == b.polygonSupports);
+        QCOMPARE(a.linePieces.size(), b.linePieces.size());
+        QCOMPARE(a.surfaceComponents.size(), b.surfaceComponents.size());
+        for (std::size_t p = 0; p < a.polygons.size(); ++p)
+            QVERIFY(std::abs(a.polygons[p].area - b.polygons[p].area) <= 1e-12 * (1 + a.polygons[p].area));
+        QVERIFY(std::abs(polygonArea(b) - d.surfaceArea()) <= 1e-9 * d.surfaceArea());
+        verifyConsistentSymbols(d, b);
+    }
+
     void restrictedDelaunayOfSphere()
     {
         const RestrictionDomain d = test::sphereDomain(4);
