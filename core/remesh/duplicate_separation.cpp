@@ -1,5 +1,7 @@
 #include "remesh/duplicate_separation.h"
 
+#include "remesh/mesh_cleanup.h"
+
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -16,6 +18,8 @@
 namespace stratamesh {
 
 namespace {
+
+constexpr double kSliverQuality = 0.1;
 
 using K = CGAL::Simple_cartesian<double>;
 using TriangleList = std::vector<K::Triangle_3>;
@@ -99,9 +103,45 @@ std::vector<Vec3> offsetTowardsSurfaces(const Model &input, const std::vector<in
     return targets;
 }
 
+// A duplicated sliver (a cap or needle shared by two surfaces, Fig 4.9 along two contacts at
+// once) would only give slivers again when split: its shortest edge is collapsed instead, which
+// removes all its copies together and keeps every contact sealed (Algorithm 4.4).
+bool collapseSliver(EditableSoup &soup, const Model &input, int t, SimplificationLedger &ledger)
+{
+    if (soup.quality(t) >= kSliverQuality)
+        return false;
+    const OutputTriangle tri = soup.triangle(t);
+    int e = 0;
+    for (int k = 1; k < 3; ++k)
+        if ((soup.position(tri.v[(k + 1) % 3]) - soup.position(tri.v[k])).squaredNorm() <
+            (soup.position(tri.v[(e + 1) % 3]) - soup.position(tri.v[e])).squaredNorm())
+            e = k;
+    int u = tri.v[e], w = tri.v[(e + 1) % 3];
+    // The vertex that may move least stays: corners over line vertices over interior ones.
+    const auto rank = [&](int v) { return static_cast<int>(soup.vertexClass(v)); };
+    if (rank(u) > rank(w))
+        std::swap(u, w);
+    const Vec3 target = rank(u) == rank(w) && rank(w) < static_cast<int>(VertexClass::Fixed)
+                            ? Vec3(0.5 * (soup.position(u) + soup.position(w)))
+                            : soup.position(w);
+    const double moved = (soup.position(u) - target).norm();
+    LedgerRecord r;
+    r.kind = LedgerKind::DegenerateContactTriangle;
+    r.inputs = inputEntitiesOf(soup, input, {tri.v[0], tri.v[1], tri.v[2]});
+    r.outputs = {vertexRef(w)};
+    r.position = target;
+    r.size = moved;
+    r.sizeMeaning = "distance";
+    r.note = "sliver shared by two surfaces: its shortest edge collapsed (Alg 4.4)";
+    if (!soup.collapse(u, w, target, 0.0))
+        return false;
+    ledger.push_back(r);
+    return true;
+}
+
 } // namespace
 
-DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &input)
+DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &input, SimplificationLedger &ledger)
 {
     DuplicateSeparation result;
     std::map<std::array<int, 3>, std::vector<int>> bySet;
@@ -135,6 +175,10 @@ DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &
         }
         if (copies.size() < 2)
             continue;
+        if (collapseSliver(soup, input, copies.front(), ledger)) {
+            ++result.collapsedSlivers; // every copy went with its shortest edge
+            continue;
+        }
         const OutputTriangle first = soup.triangle(copies.front());
         const Vec3 a = soup.position(first.v[0]), b = soup.position(first.v[1]), c = soup.position(first.v[2]);
         const Vec3 centroid = (a + b + c) / 3.0;

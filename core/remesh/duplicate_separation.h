@@ -7,17 +7,20 @@
 #pragma once
 
 #include "remesh/editable_soup.h"
+#include "remesh/simplification_ledger.h"
 
 namespace stratamesh {
 
 struct DuplicateSeparation {
     int duplicateGroups = 0;  // sets of triangles on the same three points
     int splitTriangles = 0;   // copies split by a vertex on their input surface
+    int collapsedSlivers = 0; // duplicated slivers removed by collapsing their shortest edge
     int removedTriangles = 0; // exact copies inside one surface, dropped
     int forced = 0;           // groups whose surfaces meet under the whole triangle: small offsets
     int unseparated = 0;      // groups left as they are (degenerate triangle)
 };
 
-DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &input);
+// Collapses are ledger records (degenerate_contact_triangle).
+DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &input, SimplificationLedger &ledger);
 
 } // namespace stratamesh

@@ -97,7 +97,7 @@ RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &s
     const CleanupCounts v3 = removeValence3Vertices(soup, input, result.ledger);
     result.cleanup = removeDegenerateTriangles(soup, input, params.cleanup, result.ledger);
     result.cleanup.valence3 = v3.valence3;
-    result.duplicates = separateDuplicateTriangles(soup, input);
+    result.duplicates = separateDuplicateTriangles(soup, input, result.ledger);
     if (params.flips)
         result.cleanup.flips += improveByFlips(soup);
     if (params.smoothingPasses > 0) {

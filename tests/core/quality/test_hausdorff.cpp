@@ -1,9 +1,13 @@
 // Hausdorff distance (thesis Table 4.2) on shapes whose distance is known exactly.
 #include "quality/hausdorff.h"
+#include "quality/model_comparison.h"
+#include "model/topology.h"
 
 #include "common/error.h"
 
 #include <QtTest>
+
+#include <algorithm>
 
 using namespace stratamesh;
 
@@ -67,6 +71,31 @@ private slots:
         const std::vector<double> d = distancesToModel(a, {Vec3(0.3, -0.7, 2.0), Vec3(12, 0, 0)});
         QVERIFY(std::abs(d[0] - 2.0) < 1e-12);
         QVERIFY(std::abs(d[1] - 2.0) < 1e-12);
+    }
+
+    void comparisonRows()
+    {
+        // A square of two triangles against the same square split into four (a finer "output").
+        const Model a = recoverTopology(modelOf({rectangle(0, 2, 0, 2, 0)}));
+        Surface fine;
+        fine.name = "rect";
+        fine.vertices = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 2, 0), Vec3(0, 2, 0), Vec3(1, 1, 0.1)};
+        fine.triangles = {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+        const Model b = recoverTopology(modelOf({fine}));
+        const ModelComparison c = compareModels(a, b, HausdorffParams{4000});
+        QCOMPARE(c.input.mesh.triangles, std::size_t(2));
+        QCOMPARE(c.output.mesh.triangles, std::size_t(4));
+        QCOMPARE(c.output.mesh.vertices, std::size_t(5));
+        QCOMPARE(c.input.counts.surfaces, 1);
+        QVERIFY(std::abs(c.hausdorff.symmetric - 0.1) < 1e-12); // the raised centre
+        QVERIFY(std::abs(c.output.hausdorffPctBbox - 10.0 / std::sqrt(8.0)) < 1e-9);
+        QVERIFY(c.input.hausdorffPctBbox < 0.0);
+        QCOMPARE(c.inputQuality.total(), std::size_t(2));
+        QCOMPARE(c.outputQuality.total(), std::size_t(4));
+        QCOMPARE(c.inputMinAngle.edges(), c.outputMinAngle.edges());
+        const std::string table = formatTable42({c.input, c.output});
+        QCOMPARE(std::count(table.begin(), table.end(), '\n'), 4L); // header, rule, two rows
+        QVERIFY(table.find("| Input |") != std::string::npos);
     }
 
     void emptyModelRefused()
