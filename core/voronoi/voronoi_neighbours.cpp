@@ -70,7 +70,7 @@ const VoronoiNeighbours::KdTree &VoronoiNeighbours::kdTree() const
         m_kdTree->cloud.points = m_sites.data();
         m_kdTree->cloud.count = m_sites.size();
         m_kdTree->index = std::make_unique<KdTree::Index>(3, m_kdTree->cloud,
-                                                          nanoflann::KDTreeSingleIndexAdaptorParams(10));
+                                                          nanoflann::KDTreeSingleIndexAdaptorParams(20));
         m_kdTree->index->buildIndex();
     });
     return *m_kdTree;
