@@ -1,5 +1,6 @@
 #include "remesh/duplicate_separation.h"
 
+#include "quality/triangle_quality.h"
 #include "remesh/mesh_cleanup.h"
 
 #include <CGAL/AABB_traits.h>
@@ -183,21 +184,33 @@ DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &
         const Vec3 a = soup.position(first.v[0]), b = soup.position(first.v[1]), c = soup.position(first.v[2]);
         const Vec3 centroid = (a + b + c) / 3.0;
         // Where each surface is under the triangle, along its normal through a few interior
-        // points; keep the point where the surfaces are farthest apart, so the copies come apart
-        // even when the surfaces meet along one of the triangle's lines.
+        // points; keep the point whose fans are the best shaped among those that separate the
+        // copies (then the farthest apart), so the copies come apart even when the surfaces meet
+        // along one of the triangle's lines, without slivers.
         const Vec3 n = (b - a).cross(c - a).normalized();
+        const double tiny = 1e-9 * std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
         std::vector<Vec3> best;
-        double bestSeparation = 0.0;
-        const std::array<Vec3, 4> probes{centroid, (centroid + a) / 2, (centroid + b) / 2, (centroid + c) / 2};
+        double bestShape = -1.0, bestSeparation = 0.0;
+        std::vector<Vec3> probes{centroid};
+        for (const Vec3 &corner : {a, b, c})
+            for (double f : {0.25, 0.5})
+                probes.push_back(centroid + f * (corner - centroid));
         for (const Vec3 &probe : probes) {
             std::vector<Vec3> targets;
             for (int surface : surfaces)
                 targets.push_back(probe + n * n.dot(closestPoint(treeOf(trees, input, surface), probe) - probe));
             double separation = std::numeric_limits<double>::max();
-            for (std::size_t i = 0; i < targets.size(); ++i)
+            double shape = 1.0;
+            for (std::size_t i = 0; i < targets.size(); ++i) {
                 for (std::size_t j = i + 1; j < targets.size(); ++j)
                     separation = std::min(separation, (targets[i] - targets[j]).norm());
-            if (separation > bestSeparation) {
+                shape = std::min({shape, triangleQuality(a, b, targets[i]), triangleQuality(b, c, targets[i]),
+                                  triangleQuality(c, a, targets[i])});
+            }
+            if (separation <= tiny)
+                continue;
+            if (shape > bestShape || (shape == bestShape && separation > bestSeparation)) {
+                bestShape = shape;
                 bestSeparation = separation;
                 best = targets;
             }
