@@ -20,7 +20,7 @@ OutputMesh grid(int n, int surface = 0)
         for (int i = 0; i <= n; ++i) {
             OutputPoint p;
             p.position = Vec3(i, j, 0);
-            p.surfaces = {surface};
+            p.surfaces.assign(1, surface);
             m.points.push_back(p);
         }
     auto id = [n](int i, int j) { return j * (n + 1) + i; };
@@ -36,7 +36,7 @@ int addPoint(OutputMesh &m, const Vec3 &p, int surface)
 {
     OutputPoint op;
     op.position = p;
-    op.surfaces = {surface};
+    op.surfaces.assign(1, surface);
     m.points.push_back(op);
     return static_cast<int>(m.points.size()) - 1;
 }

@@ -16,7 +16,7 @@ OutputMesh grid(int n, double z, int surface)
         for (int i = 0; i <= n; ++i) {
             OutputPoint p;
             p.position = Vec3(i, j, z);
-            p.surfaces = {surface};
+            p.surfaces.assign(1, surface);
             m.points.push_back(p);
         }
     auto id = [n](int i, int j) { return j * (n + 1) + i; };
