@@ -128,11 +128,35 @@ void CellClipper::wholeTriangle(int t, int site, std::vector<ClipVertex> &polygo
     for (int c = 0; c < 3; ++c) {
         ClipVertex &v = polygon[c];
         v.position = m_domain.points[tri[c]] - pi;
-        v.error = 2 * kUnit * v.position.norm(); // one rounded subtraction per coordinate
+        v.error = 2 * kUnit * v.position.lpNorm<1>(); // one rounded subtraction per coordinate (|·|₂ ≤ |·|₁)
         v.u = c == 1 ? 1.0 : 0.0;
         v.v = c == 2 ? 1.0 : 0.0;
         v.out = inputEdgeSupport(c);
     }
+}
+
+ClipVertex CellClipper::symbolicCut(int t, int site, int support, int l) const
+{
+    const Triangle &tri = m_domain.triangles[t];
+    const std::vector<Vec3> &pts = m_domain.points;
+    const Vec3 &pi = m_delaunay.site(site);
+    ClipVertex x;
+    ComputedPoint p;
+    if (support < 0) {
+        const int ca = inputEdgeOf(support), cb = (ca + 1) % 3;
+        p = edgeVertexPoint(pts, m_delaunay.sites(), tri[ca], tri[cb], site, l);
+        const double tau = tri[ca] < tri[cb] ? p.t : 1.0 - p.t; // from corner ca to corner cb
+        double lambda[3] = {0, 0, 0};
+        lambda[ca] = 1.0 - tau;
+        lambda[cb] = tau;
+        x.u = lambda[1];
+        x.v = lambda[2];
+    } else {
+        p = faceVertexPoint(pts[tri[0]], pts[tri[1]], pts[tri[2]], m_delaunay.sites(), site, support, l, x.u, x.v);
+    }
+    x.position = p.position - pi;
+    x.error = p.error + 2 * kUnit * x.position.lpNorm<1>();
+    return x;
 }
 
 int CellClipper::exactSide(int t, int site, const std::vector<ClipVertex> &polygon, int k, int l) const
@@ -204,20 +228,22 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
             if (m_sides[k] == m_sides[k1])
                 continue;
             // The exact crossing lies on the exact edge [a*, b*]; its parameter is known up to
-            // the errors of the two values.
+            // the errors of the two values. Unless it is known to 1e-8 (the edge grazes the
+            // bisector, or errors have piled up), the point is recomputed from its symbol.
             const double va = m_values[k], vb = m_values[k1], gap = std::fabs(va - vb);
-            const double length = (b.position - a.position).norm();
             ClipVertex x;
-            double tau = 0.5, tauError = 1.0;
-            if (gap > 2 * bound) {
-                tau = std::clamp(va / (va - vb), 0.0, 1.0);
-                tauError = std::min(1.0, 2 * bound / (gap - 2 * bound) + 4 * kUnit);
+            if (gap > 2e8 * bound) {
+                const double tau = std::clamp(va / (va - vb), 0.0, 1.0);
+                const double tauError = 2 * bound / (gap - 2 * bound) + 4 * kUnit;
+                const double length = (b.position - a.position).lpNorm<1>(); // bounds |b − a|
+                x.position = a.position + tau * (b.position - a.position);
+                x.u = a.u + tau * (b.u - a.u);
+                x.v = a.v + tau * (b.v - a.v);
+                x.error = std::max(a.error, b.error) * (1 + 2 * tauError) + length * tauError +
+                          4 * kUnit * (a.position.lpNorm<1>() + length);
+            } else {
+                x = symbolicCut(t, site, a.out, l);
             }
-            x.position = a.position + tau * (b.position - a.position);
-            x.u = a.u + tau * (b.u - a.u);
-            x.v = a.v + tau * (b.v - a.v);
-            const double maxError = std::max(a.error, b.error);
-            x.error = maxError * (1 + 2 * tauError) + length * tauError + 4 * kUnit * (a.position.norm() + length);
             // Leaving the cell, the polygon follows the bisector; entering, it resumes the support
             // that was cut.
             x.out = m_sides[k] > 0 ? l : a.out;

@@ -120,6 +120,8 @@ private:
     // Clips [first, second] of segment s by the cell of site; first must stay.
     void clipSegment(int s, int site, SegmentEnd &first, SegmentEnd &second);
     int exactSide(int t, int site, const std::vector<ClipVertex> &polygon, int k, int l) const;
+    // The crossing of `support` with bisector(site, l), computed from its symbol.
+    ClipVertex symbolicCut(int t, int site, int support, int l) const;
     [[noreturn]] void throwInconsistent(int segment) const;
 
     const RestrictionDomain &m_domain;

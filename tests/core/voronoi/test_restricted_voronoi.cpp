@@ -8,6 +8,8 @@
 
 #include <tbb/global_control.h>
 
+#include <Eigen/Geometry>
+
 #include <map>
 #include <set>
 
@@ -271,6 +273,29 @@ private slots:
             QVERIFY(std::abs(a.polygons[p].area - b.polygons[p].area) <= 1e-12 * (1 + a.polygons[p].area));
         QVERIFY(std::abs(polygonArea(b) - d.surfaceArea()) <= 1e-9 * d.surfaceArea());
         verifyConsistentSymbols(d, b);
+    }
+
+    void everyTriangleIsTiled()
+    {
+        // Each triangle's polygons add up to its area, also where dozens of small cells crowd a
+        // large triangle and where cuts graze bisectors (positions recomputed from symbols).
+        RestrictionDomain d = test::squareDomain(6);
+        auto sites = test::randomPointsInBox(400, Vec3(0, 0, -0.01), Vec3(0.1, 0.1, 0.01), 41);
+        for (int k = 0; k < 20; ++k) // sites on the diagonal of triangle 0, equidistant pairs
+            sites.push_back({0.01 * k, 0.01 * k + 1e-12 * k, 0.0});
+        sites.push_back({0.9, 0.9, 0.5});
+        finalizeDomain(d);
+        const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(d, sites);
+        std::vector<double> tiled(d.triangles.size(), 0.0);
+        for (const RvdPolygon &p : rvd.polygons)
+            tiled[p.triangle] += p.area;
+        for (std::size_t t = 0; t < d.triangles.size(); ++t) {
+            const Triangle &tri = d.triangles[t];
+            const double area =
+                0.5 * (d.points[tri[1]] - d.points[tri[0]]).cross(d.points[tri[2]] - d.points[tri[0]]).norm();
+            QVERIFY2(std::abs(tiled[t] - area) <= 1e-12 * area, qPrintable(QString("triangle %1").arg(t)));
+        }
+        verifyConsistentSymbols(d, rvd);
     }
 
     void restrictedDelaunayOfSphere()
