@@ -1,6 +1,7 @@
 #include "remesh/duplicate_separation.h"
 
 #include "quality/triangle_quality.h"
+#include "remesh/intersection_repair.h"
 #include "remesh/mesh_cleanup.h"
 
 #include <CGAL/AABB_traits.h>
@@ -189,52 +190,87 @@ DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &
         // along one of the triangle's lines, without slivers.
         const Vec3 n = (b - a).cross(c - a).normalized();
         const double tiny = 1e-9 * std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-        std::vector<Vec3> best;
-        double bestShape = -1.0, bestSeparation = 0.0;
+        struct Candidate {
+            double shape, separation;
+            std::vector<Vec3> targets;
+        };
+        std::vector<Candidate> candidates;
         std::vector<Vec3> probes{centroid};
         for (const Vec3 &corner : {a, b, c})
             for (double f : {0.25, 0.5})
                 probes.push_back(centroid + f * (corner - centroid));
         for (const Vec3 &probe : probes) {
-            std::vector<Vec3> targets;
+            Candidate cand{1.0, std::numeric_limits<double>::max(), {}};
             for (int surface : surfaces)
-                targets.push_back(probe + n * n.dot(closestPoint(treeOf(trees, input, surface), probe) - probe));
-            double separation = std::numeric_limits<double>::max();
-            double shape = 1.0;
-            for (std::size_t i = 0; i < targets.size(); ++i) {
-                for (std::size_t j = i + 1; j < targets.size(); ++j)
-                    separation = std::min(separation, (targets[i] - targets[j]).norm());
-                shape = std::min({shape, triangleQuality(a, b, targets[i]), triangleQuality(b, c, targets[i]),
-                                  triangleQuality(c, a, targets[i])});
+                cand.targets.push_back(probe + n * n.dot(closestPoint(treeOf(trees, input, surface), probe) - probe));
+            for (std::size_t i = 0; i < cand.targets.size(); ++i) {
+                for (std::size_t j = i + 1; j < cand.targets.size(); ++j)
+                    cand.separation = std::min(cand.separation, (cand.targets[i] - cand.targets[j]).norm());
+                cand.shape = std::min({cand.shape, triangleQuality(a, b, cand.targets[i]),
+                                       triangleQuality(b, c, cand.targets[i]), triangleQuality(c, a, cand.targets[i])});
             }
-            if (separation <= tiny)
-                continue;
-            if (shape > bestShape || (shape == bestShape && separation > bestSeparation)) {
-                bestShape = shape;
-                bestSeparation = separation;
-                best = targets;
-            }
+            if (cand.separation > tiny)
+                candidates.push_back(std::move(cand));
         }
-        if (best.empty()) {
-            best = offsetTowardsSurfaces(input, surfaces, a, b, c, onLine);
+        std::sort(candidates.begin(), candidates.end(), [](const Candidate &x, const Candidate &y) {
+            return x.shape != y.shape ? x.shape > y.shape : x.separation > y.separation;
+        });
+        if (candidates.empty()) {
+            std::vector<Vec3> forced = offsetTowardsSurfaces(input, surfaces, a, b, c, onLine);
             ++result.forced;
-            if (best.empty()) {
+            if (forced.empty()) {
                 ++result.unseparated;
                 continue;
             }
+            candidates.push_back({0.0, 0.0, std::move(forced)});
         }
-        for (std::size_t i = 0; i < copies.size(); ++i) {
-            const OutputTriangle tri = soup.triangle(copies[i]);
-            OutputPoint p;
-            p.position = best[i];
-            p.origin = PointOrigin::Surface;
-            p.surfaces = {surfaces[i]};
-            const int v = soup.addPoint(p);
-            soup.removeTriangle(copies[i]);
-            for (int k = 0; k < 3; ++k)
-                soup.addTriangle({tri.v[k], tri.v[(k + 1) % 3], v}, tri.surface);
-            ++result.splitTriangles;
+        // The best-shaped split that crosses nothing around it (else the one crossing least).
+        std::vector<std::array<int, 3>> copyCorners;
+        for (int t : copies)
+            copyCorners.push_back(soup.triangle(t).v);
+        // Splits are tried in place and undone (the copies come back as new triangles; the
+        // vertices of an undone split stay unused and are dropped with the result).
+        auto split = [&](const Candidate &cand) {
+            std::vector<int> added;
+            for (std::size_t i = 0; i < copies.size(); ++i) {
+                OutputPoint p;
+                p.position = cand.targets[i];
+                p.origin = PointOrigin::Surface;
+                p.surfaces = {surfaces[i]};
+                const int v = soup.addPoint(p);
+                soup.removeTriangle(copies[i]);
+                for (int k = 0; k < 3; ++k)
+                    soup.addTriangle({copyCorners[i][k], copyCorners[i][(k + 1) % 3], v}, surfaces[i]);
+                added.push_back(v);
+            }
+            return added;
+        };
+        auto undo = [&](const std::vector<int> &added) {
+            for (std::size_t i = 0; i < copies.size(); ++i) {
+                const std::vector<int> fan = soup.vertexTriangles(added[i]);
+                for (int t : fan)
+                    soup.removeTriangle(t);
+                copies[i] = soup.addTriangle(copyCorners[i], surfaces[i]);
+            }
+        };
+        int leastCrossings = std::numeric_limits<int>::max();
+        std::size_t chosen = 0;
+        for (std::size_t c = 0; c < candidates.size(); ++c) {
+            const std::vector<int> added = split(candidates[c]);
+            const int crossings = intersectionsAroundVertices(soup, added);
+            if (crossings == 0) {
+                leastCrossings = 0;
+                break;
+            }
+            undo(added);
+            if (crossings < leastCrossings) {
+                leastCrossings = crossings;
+                chosen = c;
+            }
         }
+        if (leastCrossings > 0)
+            split(candidates[chosen]);
+        result.splitTriangles += static_cast<int>(copies.size());
     }
     return result;
 }

@@ -205,7 +205,7 @@ bool EditableSoup::wouldFlip(int v, const Vec3 &target, const std::vector<int> &
     return false;
 }
 
-bool EditableSoup::collapse(int u, int w, const Vec3 &target, double minQuality)
+bool EditableSoup::collapse(int u, int w, const Vec3 &target, double minQuality, bool checkShape)
 {
     if (u == w)
         return false;
@@ -223,7 +223,7 @@ bool EditableSoup::collapse(int u, int w, const Vec3 &target, double minQuality)
         if (!found)
             return false;
     }
-    if (wouldFlip(u, target, shared, w, minQuality) || wouldFlip(w, target, shared, -1, minQuality))
+    if (checkShape && (wouldFlip(u, target, shared, w, minQuality) || wouldFlip(w, target, shared, -1, minQuality)))
         return false;
     for (int t : m_vertexTriangles[u]) {
         if (std::find(shared.begin(), shared.end(), t) != shared.end())

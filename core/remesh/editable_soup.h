@@ -49,7 +49,8 @@ public:
     // Moves u onto w (w at `target`): triangles with both die, the others now use w. Checks the
     // link condition, that no remaining triangle flips or becomes a needle worse than minQuality,
     // and that no duplicate triangle appears. Returns false (and changes nothing) when refused.
-    bool collapse(int u, int w, const Vec3 &target, double minQuality);
+    // checkShape = false skips the flip and quality checks (the caller judges the result).
+    bool collapse(int u, int w, const Vec3 &target, double minQuality, bool checkShape = true);
     // Flips the interior edge (a, b) of one surface. Refused when (c, d) is already an edge, when
     // a triangle would flip, or when the smaller quality does not improve.
     bool flip(int a, int b, bool requireImprovement = true);

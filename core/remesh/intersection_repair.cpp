@@ -64,6 +64,27 @@ bool anyIntersection(const EditableSoup &soup, const std::vector<int> &tris)
     return false;
 }
 
+// Intersecting pairs with at least one triangle around one of the vertices (each pair once).
+int intersectionsAround(const EditableSoup &soup, const std::vector<int> &vertices)
+{
+    std::vector<int> tris;
+    for (int v : vertices)
+        tris.insert(tris.end(), soup.vertexTriangles(v).begin(), soup.vertexTriangles(v).end());
+    std::sort(tris.begin(), tris.end());
+    tris.erase(std::unique(tris.begin(), tris.end()), tris.end());
+    int count = 0;
+    for (int t : tris) {
+        const BBox bt = boxOf(soup, t);
+        for (int u = 0; u < soup.triangleCapacity(); ++u) {
+            if (u == t || !soup.alive(u) || (std::binary_search(tris.begin(), tris.end(), u) && u < t))
+                continue;
+            if (bt.overlaps(boxOf(soup, u)) && pairIntersects(soup, t, u))
+                ++count;
+        }
+    }
+    return count;
+}
+
 // Flips an edge of triangle `tri` (given by its corners: a refused flip is undone by flipping
 // back, which renumbers the triangles).
 bool tryFlips(EditableSoup &soup, const std::array<int, 3> &tri)
@@ -115,7 +136,51 @@ bool tryMoves(EditableSoup &soup, const std::array<int, 3> &tri, double minQuali
     return false;
 }
 
+// Last resort (thesis §4.4.2: features below the resolution are merged): collapse an edge of
+// one of the triangles, the shortest first, when fewer triangles intersect around it after.
+bool tryCollapses(EditableSoup &soup, const Model &input, const std::array<int, 3> &a, const std::array<int, 3> &b,
+                  SimplificationLedger &ledger)
+{
+    std::vector<std::pair<double, std::pair<int, int>>> edges;
+    for (const auto &tri : {a, b})
+        for (int k = 0; k < 3; ++k) {
+            const int u = tri[k], w = tri[(k + 1) % 3];
+            edges.push_back({(soup.position(u) - soup.position(w)).norm(), {u, w}});
+        }
+    std::sort(edges.begin(), edges.end());
+    for (const auto &[length, edge] : edges) {
+        int u = edge.first, w = edge.second;
+        const auto rank = [&](int v) { return static_cast<int>(soup.vertexClass(v)); };
+        if (rank(u) > rank(w))
+            std::swap(u, w);
+        const Vec3 target = rank(u) == rank(w) ? Vec3(0.5 * (soup.position(u) + soup.position(w))) : soup.position(w);
+        LedgerRecord r;
+        r.kind = LedgerKind::CloseFeatureMerge;
+        r.inputs = inputEntitiesOf(soup, input, {u, w});
+        r.outputs = {vertexRef(w)};
+        r.position = target;
+        r.size = length;
+        r.sizeMeaning = "distance";
+        r.note = "points closer than the resolution merged to undo intersecting triangles";
+        const int before = intersectionsAround(soup, {u, w});
+        for (bool checkShape : {true, false}) {
+            EditableSoup backup = soup;
+            if (soup.collapse(u, w, target, 0.0, checkShape) && intersectionsAround(soup, {w}) < before) {
+                ledger.push_back(r);
+                return true;
+            }
+            soup = std::move(backup);
+        }
+    }
+    return false;
+}
+
 } // namespace
+
+int intersectionsAroundVertices(const EditableSoup &soup, const std::vector<int> &vertices)
+{
+    return intersectionsAround(soup, vertices);
+}
 
 std::vector<std::pair<int, int>> soupIntersections(const EditableSoup &soup)
 {
@@ -152,6 +217,18 @@ IntersectionRepairResult repairIntersections(EditableSoup &soup, const Model &in
             tryMoves(soup, b, params.minQuality);
         }
         pairs = soupIntersections(soup);
+    }
+    // Merges go on while they make progress: each one removes at least one intersecting pair.
+    for (int round = 0; params.allowMerges && round < 4 * params.maxRounds && !pairs.empty(); ++round) {
+        bool changed = false;
+        for (const auto &[t, u] : pairs) {
+            if (!soup.alive(t) || !soup.alive(u) || !pairIntersects(soup, t, u))
+                continue;
+            changed = tryCollapses(soup, input, soup.triangle(t).v, soup.triangle(u).v, ledger) || changed;
+        }
+        pairs = soupIntersections(soup);
+        if (!changed)
+            break;
     }
     result.unresolved = static_cast<int>(pairs.size());
     result.resolved = std::max(0, result.found - result.unresolved);

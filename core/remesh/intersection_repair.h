@@ -1,6 +1,8 @@
 // Resolution of intersecting output triangles by edge flips or vertex moves (thesis §4.4.5:
 // "they must be identified and the intersections must be resolved by vertex displacements or
-// edge flipping"). What stays unresolved is reported as intersection_unresolved records.
+// edge flipping"). When neither works, the shortest edge of an intersecting triangle is
+// collapsed — the points are closer than the resolution — and recorded. What stays unresolved
+// is reported as intersection_unresolved records.
 #pragma once
 
 #include "remesh/editable_soup.h"
@@ -11,6 +13,7 @@ namespace stratamesh {
 struct IntersectionRepairParams {
     int maxRounds = 5;
     double minQuality = 0.05; // moves and flips may not create worse triangles than this
+    bool allowMerges = true;  // then collapse edges of what still intersects (close_feature_merge records)
 };
 
 struct IntersectionRepairResult {
@@ -22,6 +25,9 @@ struct IntersectionRepairResult {
 IntersectionRepairResult repairIntersections(EditableSoup &soup, const Model &input,
                                              const IntersectionRepairParams &params,
                                              SimplificationLedger &ledger);
+
+// Intersecting pairs with a triangle around one of the vertices (a linear scan: for a few).
+int intersectionsAroundVertices(const EditableSoup &soup, const std::vector<int> &vertices);
 
 // Pairs of alive triangles of the soup that intersect (triangle ids of the soup).
 std::vector<std::pair<int, int>> soupIntersections(const EditableSoup &soup);

@@ -6,12 +6,14 @@
 #include "model/synthetic_models.h"
 #include "model/topology.h"
 #include "model/validity.h"
+#include "common/error.h"
 #include "remesh/output_model_builder.h"
 
 #include <Eigen/Geometry>
 #include <QtTest>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -195,6 +197,48 @@ private slots:
             QCOMPARE(s.featureName, i->featureName);
             QVERIFY(s.type == i->type);
         }
+    }
+
+    void edgeLengthAndAdaptiveDensity()
+    {
+        LayeredBoxParams bp;
+        bp.size = Vec3(1000, 600, 400);
+        bp.horizons = 1;
+        bp.edgeLength = 50;
+        const Model input = recoverTopology(layeredBox(bp));
+        QCOMPARE(sitesForEdgeLength(std::sqrt(3.0) / 2.0 * 100.0, 1.0), 100);
+        QVERIFY_THROWS_EXCEPTION(InputError, sitesForEdgeLength(1.0, 0.0));
+
+        RemeshParams params;
+        params.edgeLength = 100;
+        params.iterations = 30;
+        const RemeshResult uniform = remeshModel(input, params);
+        double sum = 0;
+        int edges = 0;
+        for (const Surface &s : uniform.model.surfaces)
+            for (const auto &[e, count] : edgeUse(s)) {
+                sum += (s.vertices[e.first] - s.vertices[e.second]).norm();
+                ++edges;
+            }
+        const double mean = sum / edges;
+        QVERIFY2(mean > 75 && mean < 125, qPrintable(QString::number(mean)));
+
+        // Thesis Fig 4.19: ρ = (1 − d/d_max)^4 from the corners puts the vertices near them.
+        params.adaptive = true;
+        const RemeshResult adaptive = remeshModel(input, params);
+        QVERIFY(checkValidity(adaptive.model).valid);
+        auto nearCorners = [&input](const Model &m) {
+            int n = 0;
+            for (const Vec3 &v : m.vertices) {
+                double d = std::numeric_limits<double>::max();
+                for (const Corner &c : input.corners)
+                    d = std::min(d, (input.vertices[c.vertex] - v).norm());
+                n += d < 150.0 ? 1 : 0;
+            }
+            return n;
+        };
+        QVERIFY2(nearCorners(adaptive.model) > 2 * nearCorners(uniform.model),
+                 qPrintable(QStringLiteral("%1 vs %2").arg(nearCorners(adaptive.model)).arg(nearCorners(uniform.model))));
     }
 
     void smallThrowCancelledByDResolution()

@@ -98,20 +98,33 @@ private slots:
         QVERIFY(soup.position(12).z() < 0.1);
     }
 
-    void unresolvableIsReported()
+    void unresolvableIsReportedOrMerged()
     {
-        // Two surfaces crossing everywhere: nothing local can fix it.
+        // Two surfaces crossing everywhere: no flip nor move can fix it.
         OutputMesh m = grid(2, 0.0, 0);
         OutputMesh v = grid(2, 0.0, 1);
         for (OutputPoint &p : v.points)
             p.position = Vec3(p.position.x(), 1.0, p.position.y() - 1.0); // vertical, through y = 1
         append(m, v);
-        EditableSoup soup(m);
+
+        EditableSoup kept(m);
         SimplificationLedger ledger;
-        const IntersectionRepairResult r = repairIntersections(soup, Model{}, {}, ledger);
+        IntersectionRepairParams noMerge;
+        noMerge.allowMerges = false;
+        const IntersectionRepairResult r = repairIntersections(kept, Model{}, noMerge, ledger);
         QVERIFY(r.found > 0);
         QVERIFY(r.unresolved > 0);
         QCOMPARE(countKind(ledger, LedgerKind::IntersectionUnresolved), r.unresolved);
+        QCOMPARE(countKind(ledger, LedgerKind::CloseFeatureMerge), 0);
+
+        // Merging the points closer than the resolution undoes (some of) it, each merge recorded.
+        EditableSoup merged(m);
+        SimplificationLedger mergeLedger;
+        const IntersectionRepairResult rm = repairIntersections(merged, Model{}, {}, mergeLedger);
+        QCOMPARE(rm.found, r.found);
+        QVERIFY(rm.unresolved < r.unresolved);
+        QVERIFY(countKind(mergeLedger, LedgerKind::CloseFeatureMerge) > 0);
+        QCOMPARE(static_cast<int>(soupIntersections(merged).size()), rm.unresolved);
     }
 };
 
