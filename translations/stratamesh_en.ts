@@ -58,6 +58,14 @@
         <source>Unknown language &apos;%1&apos;: use fr or en.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Remesh the model with &lt;n&gt; sites once it is open (with --screenshot, the picture shows the result with its first simplification selected).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--remesh-sites needs a number of sites of at least 4, not &apos;%1&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ValidityMessages</name>
@@ -67,6 +75,65 @@
     </message>
     <message>
         <source>The model is not valid</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ComparisonTable</name>
+    <message>
+        <source>Input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surfaces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min angle (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Angle &lt; 30° (% triangles)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mean quality Q</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hausdorff (% bbox diagonal)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sampling time (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mesh building time (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>As thesis Table 4.2: entities counted without the box; Q is 1 for an equilateral triangle.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -109,6 +176,120 @@
     </message>
     <message>
         <source>Legend</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::LedgerPanel</name>
+    <message>
+        <source>No simplification</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kind:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All kinds</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::LedgerTableModel</name>
+    <message>
+        <source>Kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input entities</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corner merge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Multi-point merge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close feature merge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Degenerate contact triangle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Degenerate border triangle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Valence-3 vertex removed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surface lost</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Line lost</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corner lost</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surface created</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Line created</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corner created</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unresolved intersection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (distance)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (area)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (length)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -273,6 +454,116 @@
         <source>Main Toolbar</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remesh…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remesh all the surfaces at a chosen resolution, keeping the model conformal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Cancel Remeshing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop the remeshing; the input model is left as it is</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the remeshed model as a Gocad Model3d (.ml) or TSurf (.ts) file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simplifications</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Simplifications</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input vs Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Input vs Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remeshing %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed with %1 sites in %2 s: %3 triangles, %n simplification(s) recorded</source>
+        <translation>
+            <numerusform>Remeshed with %1 sites in %2 s: %3 triangles, %n simplification recorded</numerusform>
+            <numerusform>Remeshed with %1 sites in %2 s: %3 triangles, %n simplifications recorded</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed: %n simplification(s) — see Simplifications</source>
+        <translation>
+            <numerusform>Remeshed: %n simplification — see Simplifications</numerusform>
+            <numerusform>Remeshed: %n simplifications — see Simplifications</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remeshing failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remeshing failed — see Messages</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remeshing cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output: %1 sites, %2 triangles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gocad Model3d (*.ml)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gocad TSurf (*.ts)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Remeshed Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remeshed model saved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not save the remeshed model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Remeshed Model &amp;As…</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>
@@ -329,6 +620,88 @@
     </message>
     <message>
         <source>Sample model</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::RemeshController</name>
+    <message>
+        <source>Remeshing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comparing with the input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remeshing stopped without a result</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::RemeshDialog</name>
+    <message>
+        <source>Number of &amp;sites:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Target &amp;edge length:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Adaptive density (more sites near corners)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remesh Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sites spread over all the surfaces; each becomes about one vertex.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The number of sites is derived from the total area for this edge length.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parts of features closer than this distance are merged (thesis Alg. 4.2, step 4); 0 keeps them apart.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Iterations of the centroidal Voronoi optimisation of the sites (thesis: 100).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seed of the initial random sampling: the same seed gives the same mesh.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Site density grows near corners, so small features keep more triangles (thesis Fig. 4.19).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;d_resolution:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Iterations:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ra&amp;ndom seed:</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

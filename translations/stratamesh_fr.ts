@@ -58,6 +58,14 @@
         <source>Unknown language &apos;%1&apos;: use fr or en.</source>
         <translation>Langue « %1 » inconnue : utilisez fr ou en.</translation>
     </message>
+    <message>
+        <source>Remesh the model with &lt;n&gt; sites once it is open (with --screenshot, the picture shows the result with its first simplification selected).</source>
+        <translation>Remailler le modèle avec &lt;n&gt; sites une fois ouvert (avec --screenshot, l&apos;image montre le résultat, sa première simplification sélectionnée).</translation>
+    </message>
+    <message>
+        <source>--remesh-sites needs a number of sites of at least 4, not &apos;%1&apos;.</source>
+        <translation>--remesh-sites demande un nombre de sites d&apos;au moins 4, pas « %1 ».</translation>
+    </message>
 </context>
 <context>
     <name>ValidityMessages</name>
@@ -68,6 +76,65 @@
     <message>
         <source>The model is not valid</source>
         <translation>Le modèle n&apos;est pas valide</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ComparisonTable</name>
+    <message>
+        <source>Input</source>
+        <translation>Entrée</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Sortie</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Sommets</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Triangles</translation>
+    </message>
+    <message>
+        <source>Surfaces</source>
+        <translation>Surfaces</translation>
+    </message>
+    <message>
+        <source>Lines</source>
+        <translation>Lignes</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Coins</translation>
+    </message>
+    <message>
+        <source>Min angle (°)</source>
+        <translation>Angle min. (°)</translation>
+    </message>
+    <message>
+        <source>Angle &lt; 30° (% triangles)</source>
+        <translation>Angle &lt; 30° (% des triangles)</translation>
+    </message>
+    <message>
+        <source>Mean quality Q</source>
+        <translation>Qualité moyenne Q</translation>
+    </message>
+    <message>
+        <source>Hausdorff (% bbox diagonal)</source>
+        <translation>Hausdorff (% diagonale de la boîte)</translation>
+    </message>
+    <message>
+        <source>Sampling time (s)</source>
+        <translation>Temps d&apos;échantillonnage (s)</translation>
+    </message>
+    <message>
+        <source>Mesh building time (s)</source>
+        <translation>Temps de construction du maillage (s)</translation>
+    </message>
+    <message>
+        <source>As thesis Table 4.2: entities counted without the box; Q is 1 for an equilateral triangle.</source>
+        <translation>Comme la table 4.2 de la thèse : entités comptées sans la boîte ; Q vaut 1 pour un triangle équilatéral.</translation>
     </message>
 </context>
 <context>
@@ -110,6 +177,120 @@
     <message>
         <source>Legend</source>
         <translation>Légende</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::LedgerPanel</name>
+    <message>
+        <source>No simplification</source>
+        <translation>Aucune simplification</translation>
+    </message>
+    <message>
+        <source>Kind:</source>
+        <translation>Type :</translation>
+    </message>
+    <message>
+        <source>All kinds</source>
+        <translation>Tous les types</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::LedgerTableModel</name>
+    <message>
+        <source>Kind</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>Input entities</source>
+        <translation>Entités d&apos;entrée</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Sortie</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Taille</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Remarque</translation>
+    </message>
+    <message>
+        <source>Corner merge</source>
+        <translation>Fusion de coins</translation>
+    </message>
+    <message>
+        <source>Multi-point merge</source>
+        <translation>Fusion multipoint</translation>
+    </message>
+    <message>
+        <source>Close feature merge</source>
+        <translation>Fusion d&apos;éléments proches</translation>
+    </message>
+    <message>
+        <source>Degenerate contact triangle</source>
+        <translation>Triangle dégénéré au contact</translation>
+    </message>
+    <message>
+        <source>Degenerate border triangle</source>
+        <translation>Triangle dégénéré au bord</translation>
+    </message>
+    <message>
+        <source>Valence-3 vertex removed</source>
+        <translation>Sommet de valence 3 supprimé</translation>
+    </message>
+    <message>
+        <source>Surface lost</source>
+        <translation>Surface perdue</translation>
+    </message>
+    <message>
+        <source>Line lost</source>
+        <translation>Ligne perdue</translation>
+    </message>
+    <message>
+        <source>Corner lost</source>
+        <translation>Coin perdu</translation>
+    </message>
+    <message>
+        <source>Surface created</source>
+        <translation>Surface créée</translation>
+    </message>
+    <message>
+        <source>Line created</source>
+        <translation>Ligne créée</translation>
+    </message>
+    <message>
+        <source>Corner created</source>
+        <translation>Coin créé</translation>
+    </message>
+    <message>
+        <source>Unresolved intersection</source>
+        <translation>Intersection non résolue</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation>sommet %1</translation>
+    </message>
+    <message>
+        <source>%1 (distance)</source>
+        <translation>%1 (distance)</translation>
+    </message>
+    <message>
+        <source>%1 (area)</source>
+        <translation>%1 (aire)</translation>
+    </message>
+    <message>
+        <source>%1 (length)</source>
+        <translation>%1 (longueur)</translation>
     </message>
 </context>
 <context>
@@ -273,6 +454,116 @@
         <source>Main Toolbar</source>
         <translation>Barre d&apos;outils principale</translation>
     </message>
+    <message>
+        <source>&amp;Mesh</source>
+        <translation>&amp;Maillage</translation>
+    </message>
+    <message>
+        <source>&amp;Remesh…</source>
+        <translation>&amp;Remailler…</translation>
+    </message>
+    <message>
+        <source>Remesh all the surfaces at a chosen resolution, keeping the model conformal</source>
+        <translation>Remailler toutes les surfaces à la résolution choisie en gardant le modèle conforme</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel Remeshing</source>
+        <translation>&amp;Annuler le remaillage</translation>
+    </message>
+    <message>
+        <source>Stop the remeshing; the input model is left as it is</source>
+        <translation>Arrêter le remaillage ; le modèle d&apos;entrée reste tel quel</translation>
+    </message>
+    <message>
+        <source>Write the remeshed model as a Gocad Model3d (.ml) or TSurf (.ts) file</source>
+        <translation>Écrire le modèle remaillé dans un fichier Gocad Model3d (.ml) ou TSurf (.ts)</translation>
+    </message>
+    <message>
+        <source>Simplifications</source>
+        <translation>Simplifications</translation>
+    </message>
+    <message>
+        <source>&amp;Simplifications</source>
+        <translation>&amp;Simplifications</translation>
+    </message>
+    <message>
+        <source>Input vs Output</source>
+        <translation>Entrée et sortie</translation>
+    </message>
+    <message>
+        <source>&amp;Input vs Output</source>
+        <translation>&amp;Entrée et sortie</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Annulation…</translation>
+    </message>
+    <message>
+        <source>Remeshing %1…</source>
+        <translation>Remaillage de %1…</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed with %1 sites in %2 s: %3 triangles, %n simplification(s) recorded</source>
+        <translation>
+            <numerusform>Remaillé avec %1 sites en %2 s : %3 triangles, %n simplification enregistrée</numerusform>
+            <numerusform>Remaillé avec %1 sites en %2 s : %3 triangles, %n simplifications enregistrées</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed: %n simplification(s) — see Simplifications</source>
+        <translation>
+            <numerusform>Remaillé : %n simplification — voir Simplifications</numerusform>
+            <numerusform>Remaillé : %n simplifications — voir Simplifications</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remeshing failed: %1</source>
+        <translation>Échec du remaillage : %1</translation>
+    </message>
+    <message>
+        <source>Remeshing failed — see Messages</source>
+        <translation>Échec du remaillage — voir Messages</translation>
+    </message>
+    <message>
+        <source>Remeshing cancelled</source>
+        <translation>Remaillage annulé</translation>
+    </message>
+    <message>
+        <source>Input: %1</source>
+        <translation>Entrée : %1</translation>
+    </message>
+    <message>
+        <source>Output: %1 sites, %2 triangles</source>
+        <translation>Sortie : %1 sites, %2 triangles</translation>
+    </message>
+    <message>
+        <source>Gocad Model3d (*.ml)</source>
+        <translation>Gocad Model3d (*.ml)</translation>
+    </message>
+    <message>
+        <source>Gocad TSurf (*.ts)</source>
+        <translation>Gocad TSurf (*.ts)</translation>
+    </message>
+    <message>
+        <source>Save Remeshed Model</source>
+        <translation>Enregistrer le modèle remaillé</translation>
+    </message>
+    <message>
+        <source>Remeshed model saved</source>
+        <translation>Modèle remaillé enregistré</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 enregistré</translation>
+    </message>
+    <message>
+        <source>Could not save the remeshed model</source>
+        <translation>Impossible d&apos;enregistrer le modèle remaillé</translation>
+    </message>
+    <message>
+        <source>Save Remeshed Model &amp;As…</source>
+        <translation>Enregistrer le modèle remaillé &amp;sous…</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>
@@ -330,6 +621,88 @@
     <message>
         <source>Sample model</source>
         <translation>Modèle d&apos;exemple</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::RemeshController</name>
+    <message>
+        <source>Remeshing</source>
+        <translation>Remaillage</translation>
+    </message>
+    <message>
+        <source>Comparing with the input</source>
+        <translation>Comparaison avec l&apos;entrée</translation>
+    </message>
+    <message>
+        <source>Remeshing stopped without a result</source>
+        <translation>Le remaillage s&apos;est arrêté sans résultat</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::RemeshDialog</name>
+    <message>
+        <source>Number of &amp;sites:</source>
+        <translation>Nombre de &amp;sites :</translation>
+    </message>
+    <message>
+        <source>Target &amp;edge length:</source>
+        <translation>&amp;Longueur d&apos;arête visée :</translation>
+    </message>
+    <message>
+        <source>&amp;Adaptive density (more sites near corners)</source>
+        <translation>Densité &amp;adaptative (plus de sites près des coins)</translation>
+    </message>
+    <message>
+        <source>Remesh Model</source>
+        <translation>Remailler le modèle</translation>
+    </message>
+    <message>
+        <source>Sites spread over all the surfaces; each becomes about one vertex.</source>
+        <translation>Sites répartis sur toutes les surfaces ; chacun devient à peu près un sommet.</translation>
+    </message>
+    <message>
+        <source>The number of sites is derived from the total area for this edge length.</source>
+        <translation>Le nombre de sites est déduit de l&apos;aire totale pour cette longueur d&apos;arête.</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Désactivé</translation>
+    </message>
+    <message>
+        <source>Parts of features closer than this distance are merged (thesis Alg. 4.2, step 4); 0 keeps them apart.</source>
+        <translation>Les parties d&apos;éléments plus proches que cette distance sont fusionnées (thèse, alg. 4.2, étape 4) ; 0 les garde séparées.</translation>
+    </message>
+    <message>
+        <source>Iterations of the centroidal Voronoi optimisation of the sites (thesis: 100).</source>
+        <translation>Itérations de l&apos;optimisation de Voronoï centroïdale des sites (thèse : 100).</translation>
+    </message>
+    <message>
+        <source>Seed of the initial random sampling: the same seed gives the same mesh.</source>
+        <translation>Graine de l&apos;échantillonnage aléatoire initial : la même graine donne le même maillage.</translation>
+    </message>
+    <message>
+        <source>Site density grows near corners, so small features keep more triangles (thesis Fig. 4.19).</source>
+        <translation>La densité de sites croît près des coins, les petits éléments gardent ainsi plus de triangles (thèse, fig. 4.19).</translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation>Résolution</translation>
+    </message>
+    <message>
+        <source>&amp;d_resolution:</source>
+        <translation>&amp;d_resolution :</translation>
+    </message>
+    <message>
+        <source>&amp;Iterations:</source>
+        <translation>&amp;Itérations :</translation>
+    </message>
+    <message>
+        <source>&amp;Remesh</source>
+        <translation>&amp;Remailler</translation>
+    </message>
+    <message>
+        <source>Ra&amp;ndom seed:</source>
+        <translation>&amp;Graine aléatoire :</translation>
     </message>
 </context>
 </TS>

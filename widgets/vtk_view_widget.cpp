@@ -302,6 +302,7 @@ void VtkViewWidget::onVtkEvent(vtkObject *, unsigned long eventId, void *clientD
     }
     case vtkCommand::RenderEvent:
         self->update();
+        emit self->cameraMovedByUser();
         break;
     default: // WindowFrameEvent: Qt swaps; ExitEvent: ignored on purpose
         break;

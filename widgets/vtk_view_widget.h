@@ -42,6 +42,10 @@ public:
     QSize minimumSizeHint() const override;
     QSize sizeHint() const override;
 
+signals:
+    // The user moved the camera (mouse, wheel, keys): views sharing the camera repaint on it.
+    void cameraMovedByUser();
+
 protected:
     void initializeGL() override;
     void resizeGL(int w, int h) override;

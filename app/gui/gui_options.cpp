@@ -43,6 +43,13 @@ bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exi
                                      QCoreApplication::translate("GuiOptions", "Start with the box surfaces shown."));
     const QCommandLineOption showEdges(QStringLiteral("show-edges"),
                                        QCoreApplication::translate("GuiOptions", "Start with triangle edges shown."));
+    const QCommandLineOption remeshSites(
+        QStringLiteral("remesh-sites"),
+        QCoreApplication::translate("GuiOptions",
+                                    "Remesh the model with <n> sites once it is open (with --screenshot, the "
+                                    "picture shows the result with its first simplification selected)."),
+        QStringLiteral("n"));
+    parser.addOption(remeshSites);
     parser.addOption(showBox);
     parser.addOption(showEdges);
     parser.addOption(open);
@@ -74,6 +81,18 @@ bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exi
     options.showBox = parser.isSet(showBox);
     options.showEdges = parser.isSet(showEdges);
     options.language = parser.value(lang).toLower();
+    if (parser.isSet(remeshSites)) {
+        bool ok = false;
+        options.remeshSites = parser.value(remeshSites).toInt(&ok);
+        if (!ok || options.remeshSites < 4) {
+            std::fprintf(stderr, "%s\n",
+                         qPrintable(QCoreApplication::translate("GuiOptions", "--remesh-sites needs a number of "
+                                                                              "sites of at least 4, not '%1'.")
+                                        .arg(parser.value(remeshSites))));
+            exitCode = 2;
+            return false;
+        }
+    }
     if (!options.language.isEmpty() && options.language != QLatin1String("fr") &&
         options.language != QLatin1String("en")) {
         std::fprintf(stderr, "%s\n",

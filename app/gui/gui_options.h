@@ -1,4 +1,4 @@
-// Command line of the GUI: --open FILE, --screenshot PNG, --lang fr|en.
+// Command line of the GUI: --open FILE, --screenshot PNG, --lang fr|en, --remesh-sites N.
 #pragma once
 
 #include <QString>
@@ -12,6 +12,7 @@ struct GuiOptions {
     QString language;       // "fr", "en", or empty for the system locale
     bool showBox = false;
     bool showEdges = false;
+    int remeshSites = 0;    // > 0: remesh with this many sites once the model is open
 };
 
 // The value of --lang, looked up before the full parse so that --help is translated too.

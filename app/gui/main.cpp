@@ -1,6 +1,7 @@
 // stratamesh: the desktop application.
 #include "common/version.h"
 #include "gui_options.h"
+#include "ledger_panel.h"
 #include "main_window.h"
 #include "translations.h"
 #include "vtk_view_widget.h"
@@ -31,16 +32,32 @@ int main(int argc, char **argv)
     stratamesh::MainWindow window;
     window.setBoxVisible(options.showBox);
     window.setEdgesVisible(options.showEdges);
-    if (!options.screenshotPath.isEmpty()) {
-        QObject::connect(&window, &stratamesh::MainWindow::loadFinished, &window, [&](bool ok) {
-            // Let the window lay itself out and the view render once before grabbing.
-            QTimer::singleShot(300, &window, [&, ok] {
-                const bool saved = stratamesh::saveWindowScreenshot(&window, options.screenshotPath);
-                if (!saved)
-                    std::fprintf(stderr, "stratamesh: cannot write %s\n", qPrintable(options.screenshotPath));
-                QApplication::exit(!saved ? 1 : ok ? 0 : 2);
-            });
+    const auto screenshot = [&](bool ok) {
+        // Let the window lay itself out and the view render once before grabbing.
+        QTimer::singleShot(300, &window, [&, ok] {
+            const bool saved = stratamesh::saveWindowScreenshot(&window, options.screenshotPath);
+            if (!saved)
+                std::fprintf(stderr, "stratamesh: cannot write %s\n", qPrintable(options.screenshotPath));
+            QApplication::exit(!saved ? 1 : ok ? 0 : 2);
         });
+    };
+    if (options.remeshSites > 0) {
+        QObject::connect(&window, &stratamesh::MainWindow::loadFinished, &window, [&](bool ok) {
+            stratamesh::RemeshParams params;
+            params.sites = options.remeshSites;
+            if (!ok || !window.startRemesh(params)) {
+                if (!options.screenshotPath.isEmpty())
+                    screenshot(false);
+            }
+        }, Qt::SingleShotConnection);
+        if (!options.screenshotPath.isEmpty())
+            QObject::connect(&window, &stratamesh::MainWindow::remeshFinished, &window, [&](bool ok) {
+                if (ok)
+                    window.ledgerPanel()->selectRow(0);
+                screenshot(ok);
+            });
+    } else if (!options.screenshotPath.isEmpty()) {
+        QObject::connect(&window, &stratamesh::MainWindow::loadFinished, &window, screenshot);
     }
     window.show();
     if (options.openPath.isEmpty())

@@ -1,11 +1,19 @@
 #include "main_window.h"
 
 #include "about_dialog.h"
+#include "comparison_table.h"
 #include "feature_legend.h"
+#include "ledger_panel.h"
 #include "message_panel.h"
 #include "model_scene.h"
 #include "open_model_controller.h"
+#include "position_marker.h"
+#include "remesh_controller.h"
+#include "remesh_dialog.h"
 #include "vtk_view_widget.h"
+
+#include "common/error.h"
+#include "io/gocad_writer.h"
 
 #include <QAction>
 #include <QApplication>
@@ -20,18 +28,29 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QSettings>
+#include <QSplitter>
 #include <QStatusBar>
 #include <QStyle>
 #include <QToolBar>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+
+#include <cmath>
 
 namespace stratamesh {
 
 MainWindow::MainWindow(QWidget *parent)
-    : QMainWindow(parent), m_view(new VtkViewWidget(this)), m_controller(new OpenModelController(this))
+    : QMainWindow(parent), m_view(new VtkViewWidget(this)), m_controller(new OpenModelController(this)),
+      m_outputView(new VtkViewWidget(this)), m_remeshController(new RemeshController(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
-    setCentralWidget(m_view);
+    createViews();
     m_scene = std::make_unique<ModelScene>(m_view->renderer());
+    m_outputScene = std::make_unique<ModelScene>(m_outputView->renderer());
+    m_marker = std::make_unique<PositionMarker>(m_outputView->renderer());
     m_legend = new FeatureLegend(m_view);
     setAcceptDrops(true);
 
@@ -46,11 +65,56 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_controller, &OpenModelController::loaded, this, &MainWindow::onLoaded);
     connect(m_controller, &OpenModelController::failed, this, &MainWindow::onFailed);
     connect(m_controller, &OpenModelController::finished, this, &MainWindow::loadFinished);
+    connect(m_remeshController, &RemeshController::started, this, &MainWindow::onRemeshStarted);
+    connect(m_remeshController, &RemeshController::progressChanged, this, &MainWindow::onProgress);
+    connect(m_remeshController, &RemeshController::succeeded, this, &MainWindow::onRemeshed);
+    connect(m_remeshController, &RemeshController::failed, this, &MainWindow::onRemeshFailed);
+    connect(m_remeshController, &RemeshController::cancelled, this, &MainWindow::onRemeshCancelled);
+    connect(m_remeshController, &RemeshController::finished, this, &MainWindow::remeshFinished);
     resize(1280, 800);
 }
 
 // The scene's actors must leave the renderer before the view goes.
-MainWindow::~MainWindow() { m_scene.reset(); }
+MainWindow::~MainWindow()
+{
+    m_remeshController->disconnect(this); // a running remeshing is cancelled, its outcome dropped
+    delete m_remeshController;
+    m_marker.reset();
+    m_outputScene.reset();
+    m_scene.reset();
+}
+
+// Input and output side by side, looking through one shared camera: moving either view moves
+// both, so the same place is compared.
+void MainWindow::createViews()
+{
+    const auto pane = [this](QLabel *title, VtkViewWidget *view) {
+        auto *widget = new QWidget(this);
+        auto *layout = new QVBoxLayout(widget);
+        layout->setContentsMargins(0, 0, 0, 0);
+        layout->setSpacing(2);
+        title->setAlignment(Qt::AlignCenter);
+        layout->addWidget(title);
+        layout->addWidget(view, 1);
+        return widget;
+    };
+    m_inputTitle = new QLabel(this);
+    m_outputTitle = new QLabel(this);
+    m_inputTitle->setObjectName(QStringLiteral("InputViewTitle"));
+    m_outputTitle->setObjectName(QStringLiteral("OutputViewTitle"));
+    m_splitter = new QSplitter(Qt::Horizontal, this);
+    m_splitter->addWidget(pane(m_inputTitle, m_view));
+    m_outputPane = pane(m_outputTitle, m_outputView);
+    m_splitter->addWidget(m_outputPane);
+    m_splitter->setChildrenCollapsible(false);
+    m_outputPane->hide();
+    m_inputTitle->hide();
+    setCentralWidget(m_splitter);
+
+    m_outputView->renderer()->SetActiveCamera(m_view->renderer()->GetActiveCamera());
+    connect(m_view, &VtkViewWidget::cameraMovedByUser, m_outputView, &VtkViewWidget::render);
+    connect(m_outputView, &VtkViewWidget::cameraMovedByUser, m_view, &VtkViewWidget::render);
+}
 
 void MainWindow::createActions()
 {
@@ -84,6 +148,21 @@ void MainWindow::createActions()
     m_about = new QAction(this);
     m_about->setMenuRole(QAction::AboutRole);
     connect(m_about, &QAction::triggered, this, &MainWindow::showAbout);
+    m_remesh = new QAction(this);
+    m_remesh->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_remesh->setIcon(QIcon::fromTheme(QStringLiteral("system-run"), style()->standardIcon(QStyle::SP_BrowserReload)));
+    m_remesh->setEnabled(false);
+    connect(m_remesh, &QAction::triggered, this, &MainWindow::remesh);
+    m_cancelRemesh = new QAction(this);
+    m_cancelRemesh->setIcon(style()->standardIcon(QStyle::SP_DialogCancelButton));
+    m_cancelRemesh->setEnabled(false);
+    connect(m_cancelRemesh, &QAction::triggered, this, &MainWindow::cancelRemesh);
+    m_saveRemeshed = new QAction(this);
+    m_saveRemeshed->setShortcut(QKeySequence::SaveAs);
+    m_saveRemeshed->setIcon(QIcon::fromTheme(QStringLiteral("document-save-as"), style()->standardIcon(QStyle::SP_DialogSaveButton)));
+    m_saveRemeshed->setEnabled(false);
+    connect(m_saveRemeshed, &QAction::triggered, this, &MainWindow::chooseRemeshedFile);
+
     m_aboutQt = new QAction(this);
     m_aboutQt->setMenuRole(QAction::AboutQtRole);
     connect(m_aboutQt, &QAction::triggered, qApp, &QApplication::aboutQt);
@@ -94,6 +173,7 @@ void MainWindow::createMenus()
     m_fileMenu = menuBar()->addMenu(QString());
     m_fileMenu->addAction(m_open);
     m_fileMenu->addAction(m_openSample);
+    m_fileMenu->addAction(m_saveRemeshed);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quit);
 
@@ -102,6 +182,10 @@ void MainWindow::createMenus()
     m_viewMenu->addAction(m_showEdges);
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_resetCamera);
+
+    m_meshMenu = menuBar()->addMenu(QString());
+    m_meshMenu->addAction(m_remesh);
+    m_meshMenu->addAction(m_cancelRemesh);
 
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_about);
@@ -112,6 +196,7 @@ void MainWindow::createMenus()
     m_toolBar->setMovable(false);
     m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_toolBar->addAction(m_open);
+    m_toolBar->addAction(m_remesh);
     m_toolBar->addSeparator();
     m_toolBar->addAction(m_showBox);
     m_toolBar->addAction(m_showEdges);
@@ -128,6 +213,24 @@ void MainWindow::createDocks()
     resizeDocks({m_messageDock}, {120}, Qt::Vertical);
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_messageDock->toggleViewAction());
+
+    // Remeshing docks, shown once there is a remeshing to review.
+    m_ledger = new LedgerPanel(this);
+    m_ledgerDock = new QDockWidget(this);
+    m_ledgerDock->setObjectName(QStringLiteral("SimplificationsDock"));
+    m_ledgerDock->setWidget(m_ledger);
+    addDockWidget(Qt::BottomDockWidgetArea, m_ledgerDock);
+    tabifyDockWidget(m_messageDock, m_ledgerDock);
+    m_ledgerDock->hide();
+    m_comparison = new ComparisonTable(this);
+    m_comparisonDock = new QDockWidget(this);
+    m_comparisonDock->setObjectName(QStringLiteral("ComparisonDock"));
+    m_comparisonDock->setWidget(m_comparison);
+    addDockWidget(Qt::RightDockWidgetArea, m_comparisonDock);
+    m_comparisonDock->hide();
+    m_viewMenu->addAction(m_ledgerDock->toggleViewAction());
+    m_viewMenu->addAction(m_comparisonDock->toggleViewAction());
+    connect(m_ledger, &LedgerPanel::recordSelected, this, &MainWindow::showLedgerRecord);
 }
 
 void MainWindow::createStatusBar()
@@ -140,7 +243,13 @@ void MainWindow::createStatusBar()
     m_progress->hide();
     m_countsLabel = new QLabel(this);
     statusBar()->addWidget(m_stageLabel, 1);
+    m_cancelButton = new QToolButton(this);
+    m_cancelButton->setDefaultAction(m_cancelRemesh);
+    m_cancelButton->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_cancelButton->setAutoRaise(true);
+    m_cancelButton->hide();
     statusBar()->addPermanentWidget(m_progress);
+    statusBar()->addPermanentWidget(m_cancelButton);
     statusBar()->addPermanentWidget(m_countsLabel);
 }
 
@@ -162,6 +271,18 @@ void MainWindow::retranslate()
     m_resetCamera->setStatusTip(tr("Look at the whole model from the south-west"));
     m_about->setText(tr("&About StrataMesh"));
     m_aboutQt->setText(tr("About &Qt"));
+    m_meshMenu->setTitle(tr("&Mesh"));
+    m_remesh->setText(tr("&Remesh…"));
+    m_remesh->setStatusTip(tr("Remesh all the surfaces at a chosen resolution, keeping the model conformal"));
+    m_cancelRemesh->setText(tr("&Cancel Remeshing"));
+    m_cancelRemesh->setStatusTip(tr("Stop the remeshing; the input model is left as it is"));
+    m_saveRemeshed->setText(tr("Save Remeshed Model &As…"));
+    m_saveRemeshed->setStatusTip(tr("Write the remeshed model as a Gocad Model3d (.ml) or TSurf (.ts) file"));
+    m_ledgerDock->setWindowTitle(tr("Simplifications"));
+    m_ledgerDock->toggleViewAction()->setText(tr("&Simplifications"));
+    m_comparisonDock->setWindowTitle(tr("Input vs Output"));
+    m_comparisonDock->toggleViewAction()->setText(tr("&Input vs Output"));
+    updateViewTitles();
     m_toolBar->setWindowTitle(tr("Main Toolbar"));
     m_messageDock->setWindowTitle(tr("Messages"));
     m_messageDock->toggleViewAction()->setText(tr("&Messages"));
@@ -198,8 +319,10 @@ void MainWindow::setBoxVisible(bool visible)
     if (m_showBox->isChecked() != visible)
         m_showBox->setChecked(visible); // comes back here through toggled()
     m_scene->setBoxVisible(visible);
+    m_outputScene->setBoxVisible(visible);
     updateLegend();
     m_view->render();
+    m_outputView->render();
 }
 
 void MainWindow::setEdgesVisible(bool visible)
@@ -207,7 +330,9 @@ void MainWindow::setEdgesVisible(bool visible)
     if (m_showEdges->isChecked() != visible)
         m_showEdges->setChecked(visible);
     m_scene->setEdgesVisible(visible);
+    m_outputScene->setEdgesVisible(visible);
     m_view->render();
+    m_outputView->render();
 }
 
 void MainWindow::resetCamera()
@@ -217,6 +342,9 @@ void MainWindow::resetCamera()
         m_view->resetCamera(bounds);
     else
         m_view->resetCamera();
+    // The output view shares the camera; its clipping range follows its own actors.
+    m_outputView->renderer()->ResetCameraClippingRange();
+    m_outputView->render();
 }
 
 void MainWindow::showAbout() { showAboutDialog(this); }
@@ -236,8 +364,7 @@ void MainWindow::dropEvent(QDropEvent *event)
 
 void MainWindow::onLoadStarted(const QString &displayName)
 {
-    m_open->setEnabled(false);
-    m_openSample->setEnabled(false);
+    setBusy(true);
     m_stageLabel->setText(tr("Opening %1…").arg(displayName));
     m_progress->setValue(0);
     m_progress->show();
@@ -252,13 +379,14 @@ void MainWindow::onProgress(int percent, const QString &stage)
 
 void MainWindow::onLoaded(const LoadedModel &loaded)
 {
-    m_open->setEnabled(true);
-    m_openSample->setEnabled(true);
+    setBusy(false);
     m_progress->hide();
     m_messages->clear();
     m_displayName = loaded.displayName;
     m_counts = loaded.counts;
+    clearRemeshOutcome();
     m_scene->setModel(loaded.model);
+    m_remesh->setEnabled(true);
     updateLegend();
     resetCamera();
 
@@ -284,8 +412,7 @@ void MainWindow::onLoaded(const LoadedModel &loaded)
 
 void MainWindow::onFailed(const Message &error)
 {
-    m_open->setEnabled(true);
-    m_openSample->setEnabled(true);
+    setBusy(false);
     m_progress->hide();
     m_messages->clear();
     m_messages->addMessage(error);
@@ -316,5 +443,233 @@ void MainWindow::updateCounts()
 }
 
 void MainWindow::updateLegend() { m_legend->setEntries(m_scene->legend(), m_scene->boxVisible()); }
+
+} // namespace stratamesh
+
+namespace stratamesh {
+
+// One long job at a time: no opening while remeshing, no remeshing while opening.
+void MainWindow::setBusy(bool busy)
+{
+    m_open->setEnabled(!busy);
+    m_openSample->setEnabled(!busy);
+    m_remesh->setEnabled(!busy && m_scene->model());
+    m_saveRemeshed->setEnabled(!busy && m_outcome.has_value());
+    setAcceptDrops(!busy);
+}
+
+void MainWindow::clearRemeshOutcome()
+{
+    m_outcome.reset();
+    m_marker->hide();
+    m_outputScene->setModel(nullptr);
+    m_ledger->setLedger(nullptr);
+    m_comparison->setComparison(std::nullopt);
+    m_outputPane->hide();
+    m_inputTitle->hide();
+    m_ledgerDock->hide();
+    m_comparisonDock->hide();
+    m_saveRemeshed->setEnabled(false);
+    updateViewTitles();
+}
+
+void MainWindow::remesh()
+{
+    const auto &model = m_scene->model();
+    if (!model || m_remeshController->isBusy() || m_controller->isBusy())
+        return;
+    double bounds[6];
+    const double diagonal = m_scene->bounds(bounds) ? std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2],
+                                                                  bounds[5] - bounds[4])
+                                                    : 1.0;
+    RemeshDialog dialog(diagonal, this);
+    if (m_lastParams.sites > 0 || m_lastParams.edgeLength > 0.0)
+        dialog.setParams(m_lastParams);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    startRemesh(dialog.params());
+}
+
+bool MainWindow::startRemesh(const RemeshParams &params)
+{
+    if (m_controller->isBusy())
+        return false;
+    m_lastParams = params;
+    return m_remeshController->start(m_scene->model(), params);
+}
+
+void MainWindow::cancelRemesh()
+{
+    if (!m_remeshController->isBusy())
+        return;
+    m_remeshController->cancel();
+    m_cancelRemesh->setEnabled(false);
+    m_stageLabel->setText(tr("Cancelling…"));
+}
+
+void MainWindow::onRemeshStarted()
+{
+    setBusy(true);
+    m_cancelRemesh->setEnabled(true);
+    m_cancelButton->show();
+    m_stageLabel->setText(tr("Remeshing %1…").arg(m_displayName));
+    m_progress->setValue(0);
+    m_progress->show();
+}
+
+void MainWindow::onRemeshed(const RemeshOutcome &outcome)
+{
+    m_outcome = outcome;
+    m_cancelRemesh->setEnabled(false);
+    m_cancelButton->hide();
+    m_progress->hide();
+    setBusy(false);
+    m_marker->hide();
+    m_outputScene->setBoxVisible(m_scene->boxVisible());
+    m_outputScene->setEdgesVisible(m_scene->edgesVisible());
+    m_outputScene->setModel(outcome.output);
+    m_ledger->setLedger(outcome.ledger);
+    m_comparison->setComparison(outcome.comparison);
+    m_outputPane->show();
+    m_inputTitle->show();
+    m_ledgerDock->show();
+    m_ledgerDock->raise();
+    m_comparisonDock->show();
+    resizeDocks({m_comparisonDock}, {380}, Qt::Horizontal);
+    resizeDocks({m_ledgerDock}, {220}, Qt::Vertical);
+    // Lay the new panes out now: the camera is framed for the views' final sizes.
+    layout()->activate();
+    const int half = m_splitter->width() / 2;
+    m_splitter->setSizes({half, m_splitter->width() - half});
+    updateViewTitles();
+    resetCamera();
+
+    Message done;
+    done.text = tr("Remeshed with %1 sites in %2 s: %3 triangles, %n simplification(s) recorded", nullptr,
+                   int(outcome.ledger->size()))
+                    .arg(QLocale().toString(outcome.siteCount),
+                         QLocale().toString(outcome.milliseconds / 1000.0, 'f', 2),
+                         QLocale().toString(qulonglong(outcome.output->triangleCount())));
+    m_messages->addMessage(done);
+    m_stageLabel->setText(tr("Remeshed: %n simplification(s) — see Simplifications", nullptr,
+                             int(outcome.ledger->size())));
+}
+
+void MainWindow::onRemeshFailed(const Message &error)
+{
+    m_cancelRemesh->setEnabled(false);
+    m_cancelButton->hide();
+    m_progress->hide();
+    setBusy(false);
+    Message shown = error;
+    shown.text = tr("Remeshing failed: %1").arg(error.text);
+    m_messages->addMessage(shown);
+    m_messageDock->show();
+    m_messageDock->raise();
+    m_stageLabel->setText(tr("Remeshing failed — see Messages"));
+}
+
+void MainWindow::onRemeshCancelled()
+{
+    m_cancelRemesh->setEnabled(false);
+    m_cancelButton->hide();
+    m_progress->hide();
+    setBusy(false);
+    m_stageLabel->setText(tr("Remeshing cancelled"));
+}
+
+void MainWindow::updateViewTitles()
+{
+    if (!m_inputTitle)
+        return;
+    m_inputTitle->setText(tr("Input: %1").arg(m_displayName));
+    if (!m_outcome) {
+        m_outputTitle->clear();
+        return;
+    }
+    const QLocale locale;
+    m_outputTitle->setText(tr("Output: %1 sites, %2 triangles")
+                               .arg(locale.toString(m_outcome->siteCount),
+                                    locale.toString(qulonglong(m_outcome->output->triangleCount()))));
+}
+
+void MainWindow::showLedgerRecord(int recordIndex)
+{
+    const LedgerRecord *record =
+        m_outcome && recordIndex >= 0 && recordIndex < int(m_outcome->ledger->size())
+            ? &(*m_outcome->ledger)[std::size_t(recordIndex)]
+            : nullptr;
+    if (!record) {
+        m_marker->hide();
+        m_outputView->render();
+        return;
+    }
+    double bounds[6];
+    const double diagonal = m_outputScene->bounds(bounds) ? std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2],
+                                                                        bounds[5] - bounds[4])
+                                                          : 1.0;
+    // Big enough to be found at the whole-model zoom, never hiding the change itself entirely.
+    m_marker->show(record->position, std::max(0.012 * diagonal, 0.5 * record->size));
+    // Keep the view direction and distance, move the camera so the record is in the centre.
+    vtkCamera *camera = m_view->renderer()->GetActiveCamera();
+    double focal[3], position[3];
+    camera->GetFocalPoint(focal);
+    camera->GetPosition(position);
+    const Vec3 &p = record->position;
+    camera->SetFocalPoint(p.x(), p.y(), p.z());
+    camera->SetPosition(position[0] + p.x() - focal[0], position[1] + p.y() - focal[1], position[2] + p.z() - focal[2]);
+    m_view->renderer()->ResetCameraClippingRange();
+    m_outputView->renderer()->ResetCameraClippingRange();
+    m_view->render();
+    m_outputView->render();
+}
+
+void MainWindow::chooseRemeshedFile()
+{
+    if (!m_outcome)
+        return;
+    QSettings settings;
+    const QString dir = settings.value(QStringLiteral("lastDirectory")).toString();
+    QString selected;
+    const QString ml = tr("Gocad Model3d (*.ml)"), ts = tr("Gocad TSurf (*.ts)");
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Remeshed Model"), dir, ml + QStringLiteral(";;") + ts,
+                                                &selected);
+    if (path.isEmpty())
+        return;
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix != QLatin1String("ml") && suffix != QLatin1String("ts"))
+        path += selected == ts ? QStringLiteral(".ts") : QStringLiteral(".ml");
+    settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
+    saveRemeshedModel(path);
+}
+
+bool MainWindow::saveRemeshedModel(const QString &path)
+{
+    if (!m_outcome)
+        return false;
+    Message message;
+    message.file = path;
+    try {
+        // Both writers go through a temporary file and a rename.
+        if (QFileInfo(path).suffix().toLower() == QLatin1String("ml"))
+            writeGocadModel3d(*m_outcome->output, path.toStdString());
+        else
+            writeGocadTSurf(*m_outcome->output, path.toStdString());
+        message.text = tr("Remeshed model saved");
+        m_messages->addMessage(message);
+        m_stageLabel->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));
+        return true;
+    } catch (const FileError &e) {
+        message = {Message::Severity::Error, QString::fromStdString(e.cause()), QString::fromStdString(e.file()),
+                   e.line()};
+    } catch (const std::exception &e) {
+        message = {Message::Severity::Error, QString::fromStdString(e.what()), path, 0};
+    }
+    m_messages->addMessage(message);
+    m_messageDock->show();
+    m_messageDock->raise();
+    m_stageLabel->setText(tr("Could not save the remeshed model"));
+    return false;
+}
 
 } // namespace stratamesh

@@ -3,23 +3,31 @@
 #pragma once
 
 #include "loaded_model.h"
+#include "remesh_outcome.h"
 
 #include <QMainWindow>
 
 #include <memory>
+#include <optional>
 
 class QAction;
 class QDockWidget;
 class QLabel;
 class QProgressBar;
+class QSplitter;
 class QToolBar;
+class QToolButton;
 
 namespace stratamesh {
 
+class ComparisonTable;
 class FeatureLegend;
+class LedgerPanel;
 class MessagePanel;
 class ModelScene;
 class OpenModelController;
+class PositionMarker;
+class RemeshController;
 class VtkViewWidget;
 
 class MainWindow : public QMainWindow {
@@ -37,6 +45,19 @@ public:
     QAction *showEdgesAction() const { return m_showEdges; }
     QString statusCounts() const;
 
+    // Remeshing: the output beside the input (same camera), its ledger and comparison docks.
+    VtkViewWidget *outputView() const { return m_outputView; }
+    ModelScene *outputScene() const { return m_outputScene.get(); }
+    PositionMarker *marker() const { return m_marker.get(); }
+    RemeshController *remeshController() const { return m_remeshController; }
+    LedgerPanel *ledgerPanel() const { return m_ledger; }
+    ComparisonTable *comparisonTable() const { return m_comparison; }
+    QAction *remeshAction() const { return m_remesh; }
+    QAction *cancelRemeshAction() const { return m_cancelRemesh; }
+    QAction *saveRemeshedAction() const { return m_saveRemeshed; }
+    // The last remeshing shown, if any (cleared when another model is opened).
+    const std::optional<RemeshOutcome> &remeshOutcome() const { return m_outcome; }
+
 public slots:
     void openFile(const QString &path);
     void openSample();
@@ -45,10 +66,22 @@ public slots:
     void setEdgesVisible(bool visible);
     void resetCamera();
     void showAbout();
+    // Opens the parameter dialog, then remeshes the shown model.
+    void remesh();
+    // Remeshes the shown model with these parameters (no dialog); false when it cannot start.
+    bool startRemesh(const RemeshParams &params);
+    void cancelRemesh();
+    void chooseRemeshedFile();
+    // Writes the remeshed model (.ml: Gocad Model3d, else TSurf); errors go to the messages.
+    bool saveRemeshedModel(const QString &path);
+    // Marks a ledger record in the output view and centres the camera on it (-1: no mark).
+    void showLedgerRecord(int recordIndex);
 
 signals:
     // After a load attempt has been shown (model displayed, or error listed).
     void loadFinished(bool ok);
+    // After a remeshing has ended and its outcome (result, cancel or error) was shown.
+    void remeshFinished(bool ok);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -67,6 +100,14 @@ private:
     void onFailed(const Message &error);
     void updateCounts();
     void updateLegend();
+    void createViews();
+    void setBusy(bool busy);
+    void clearRemeshOutcome();
+    void onRemeshStarted();
+    void onRemeshed(const RemeshOutcome &outcome);
+    void onRemeshFailed(const Message &error);
+    void onRemeshCancelled();
+    void updateViewTitles();
 
     VtkViewWidget *m_view = nullptr;
     std::unique_ptr<ModelScene> m_scene;
@@ -76,6 +117,26 @@ private:
     OpenModelController *m_controller = nullptr;
     QString m_displayName;
     ModelCounts m_counts;
+
+    QSplitter *m_splitter = nullptr;
+    QLabel *m_inputTitle = nullptr;
+    QLabel *m_outputTitle = nullptr;
+    QWidget *m_outputPane = nullptr;
+    VtkViewWidget *m_outputView = nullptr;
+    std::unique_ptr<ModelScene> m_outputScene;
+    std::unique_ptr<PositionMarker> m_marker;
+    RemeshController *m_remeshController = nullptr;
+    std::optional<RemeshOutcome> m_outcome;
+    RemeshParams m_lastParams;
+    LedgerPanel *m_ledger = nullptr;
+    QDockWidget *m_ledgerDock = nullptr;
+    ComparisonTable *m_comparison = nullptr;
+    QDockWidget *m_comparisonDock = nullptr;
+    QAction *m_remesh = nullptr;
+    QAction *m_cancelRemesh = nullptr;
+    QAction *m_saveRemeshed = nullptr;
+    QMenu *m_meshMenu = nullptr;
+    QToolButton *m_cancelButton = nullptr;
 
     QAction *m_open = nullptr;
     QAction *m_openSample = nullptr;

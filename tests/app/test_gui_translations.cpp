@@ -163,7 +163,8 @@ private slots:
         QStringList menus;
         for (QAction *action : window.menuBar()->actions())
             menus << action->text();
-        QCOMPARE(menus, (QStringList{QStringLiteral("&Fichier"), QStringLiteral("&Affichage"), QStringLiteral("&Aide")}));
+        QCOMPARE(menus, (QStringList{QStringLiteral("&Fichier"), QStringLiteral("&Affichage"), QStringLiteral("&Maillage"),
+                                  QStringLiteral("&Aide")}));
         QCOMPARE(window.showBoxAction()->text(), QStringLiteral("Afficher la &boîte"));
     }
 };

@@ -1,0 +1,38 @@
+// What the remesh workflow hands to the window: the new model, its simplification ledger and
+// the Table 4.2 comparison with the input, or why there is none.
+#pragma once
+
+#include "message.h"
+#include "model/model.h"
+#include "model/model_counts.h"
+#include "quality/model_comparison.h"
+#include "remesh/simplification_ledger.h"
+#include "remesh/surface_remesher.h"
+
+#include <QMetaType>
+
+#include <memory>
+
+namespace stratamesh {
+
+struct RemeshOutcome {
+    std::shared_ptr<const Model> input; // the model that was remeshed, unchanged
+    std::shared_ptr<const Model> output;
+    std::shared_ptr<const SimplificationLedger> ledger;
+    ModelComparison comparison;
+    ModelCounts counts; // of the output, with and without the box
+    RemeshParams params;
+    int siteCount = 0;
+    qint64 milliseconds = 0;
+};
+
+struct RemeshRun {
+    enum class Status { Done, Cancelled, Failed };
+    Status status = Status::Failed;
+    RemeshOutcome outcome; // when Done
+    Message error;         // when Failed
+};
+
+} // namespace stratamesh
+
+Q_DECLARE_METATYPE(stratamesh::RemeshOutcome)

@@ -1,0 +1,91 @@
+#include "comparison_table.h"
+
+#include <QEvent>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace stratamesh {
+
+ComparisonTable::ComparisonTable(QWidget *parent)
+    : QWidget(parent), m_table(new QTableWidget(RowCount, ColumnCount, this)), m_caption(new QLabel(this))
+{
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionMode(QAbstractItemView::NoSelection);
+    m_table->setAlternatingRowColors(true);
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->horizontalHeader()->setMinimumSectionSize(70);
+    m_caption->setWordWrap(true);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(m_table, 1);
+    layout->addWidget(m_caption);
+    for (int r = 0; r < RowCount; ++r)
+        for (int c = 0; c < ColumnCount; ++c) {
+            auto *item = new QTableWidgetItem;
+            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            m_table->setItem(r, c, item);
+        }
+    retranslate();
+}
+
+void ComparisonTable::setComparison(std::optional<ModelComparison> comparison)
+{
+    m_comparison = std::move(comparison);
+    fill();
+}
+
+QString ComparisonTable::cellText(Row row, Column column) const { return m_table->item(row, column)->text(); }
+
+void ComparisonTable::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void ComparisonTable::retranslate()
+{
+    m_table->setHorizontalHeaderLabels({tr("Input"), tr("Output")});
+    m_table->setVerticalHeaderLabels({tr("Vertices"), tr("Triangles"), tr("Surfaces"), tr("Lines"), tr("Corners"),
+                                      tr("Min angle (°)"), tr("Angle < 30° (% triangles)"),
+                                      tr("Mean quality Q"), tr("Hausdorff (% bbox diagonal)"),
+                                      tr("Sampling time (s)"), tr("Mesh building time (s)")});
+    m_caption->setText(tr("As thesis Table 4.2: entities counted without the box; Q is 1 for an "
+                          "equilateral triangle."));
+    fill();
+}
+
+void ComparisonTable::fill()
+{
+    const QLocale locale;
+    const auto set = [this](int row, int column, const QString &text) { m_table->item(row, column)->setText(text); };
+    if (!m_comparison) {
+        for (int r = 0; r < RowCount; ++r)
+            for (int c = 0; c < ColumnCount; ++c)
+                set(r, c, QString());
+        return;
+    }
+    const ComparisonRow *rows[ColumnCount] = {&m_comparison->input, &m_comparison->output};
+    for (int c = 0; c < ColumnCount; ++c) {
+        const ComparisonRow &row = *rows[c];
+        set(VerticesRow, c, locale.toString(qulonglong(row.mesh.vertices)));
+        set(TrianglesRow, c, locale.toString(qulonglong(row.mesh.triangles)));
+        set(SurfacesRow, c, locale.toString(row.counts.surfaces));
+        set(LinesRow, c, locale.toString(row.counts.lines));
+        set(CornersRow, c, locale.toString(row.counts.corners));
+        set(MinAngleRow, c, locale.toString(row.mesh.minAngleDeg, 'f', 2));
+        set(Below30Row, c, locale.toString(row.mesh.pctTrianglesAngleBelow30, 'f', 1));
+        set(MeanQualityRow, c, locale.toString(row.mesh.meanQuality, 'f', 3));
+        set(HausdorffRow, c, row.hausdorffPctBbox < 0.0 ? QStringLiteral("—")
+                                                         : locale.toString(row.hausdorffPctBbox, 'f', 3));
+        const bool input = c == InputColumn;
+        set(SamplingTimeRow, c, input ? QStringLiteral("—") : locale.toString(row.samplingSeconds, 'f', 2));
+        set(MeshTimeRow, c, input ? QStringLiteral("—") : locale.toString(row.meshSeconds, 'f', 2));
+    }
+}
+
+} // namespace stratamesh
