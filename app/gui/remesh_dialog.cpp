@@ -19,10 +19,10 @@ namespace stratamesh {
 
 namespace {
 
-// Decimals enough to show 1/1000 of the model's size.
+// Decimals enough to set lengths to 1/100 000 of the model's size (d_resolution is small).
 int decimalsFor(double diagonal)
 {
-    return diagonal > 0.0 ? std::clamp(int(std::ceil(3.0 - std::log10(diagonal))), 0, 8) : 3;
+    return diagonal > 0.0 ? std::clamp(int(std::ceil(5.0 - std::log10(diagonal))), 0, 8) : 3;
 }
 
 } // namespace
