@@ -61,7 +61,7 @@ int runCvt(CommandArgs &args)
     const int seed = args.intOption(QStringLiteral("--seed"), 1, 0, std::numeric_limits<int>::max());
     const double alpha = args.doubleOption(QStringLiteral("--alpha"), 0.0, 0.0, 1.0);
     const std::optional<QString> sitesOut = args.option(QStringLiteral("--sites-out"));
-    const QString neighbours = args.option(QStringLiteral("--neighbours")).value_or(QStringLiteral("delaunay"));
+    const QString neighbours = args.option(QStringLiteral("--neighbours")).value_or(QStringLiteral("nearest"));
     const QString path = args.positional(QStringLiteral("MODEL"));
     args.finish();
     if (sites < 1)

@@ -26,6 +26,6 @@ struct CvtEvaluation {
 
 // Evaluates F and ∇F at the sites. workspace carries the owner hints between calls.
 CvtEvaluation evaluateCvtEnergy(const RestrictionDomain &domain, const std::vector<Vec3> &sites, double alpha,
-                                CellIntegralsWorkspace &workspace, NeighbourSearch search = NeighbourSearch::Delaunay);
+                                CellIntegralsWorkspace &workspace, NeighbourSearch search = NeighbourSearch::NearestNeighbours);
 
 } // namespace stratamesh

@@ -139,13 +139,13 @@ struct RestrictedVoronoiDiagram {
     }
 };
 
-// Computes the diagram (neighbours of the sites included: the Delaunay triangulation by default,
-// see voronoi_neighbours.h; the diagram is the same either way). Parallel with oneTBB; the
+// Computes the diagram (neighbours of the sites included: the k nearest sites by default, see
+// voronoi_neighbours.h; the diagram is the same with the Delaunay triangulation). Parallel with oneTBB; the
 // result is identical for any number of threads. Throws InputError on non-finite sites,
 // Cancelled when progress is cancelled.
 RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domain, const std::vector<Vec3> &sites,
                                                   Progress &progress = Progress::none(),
-                                                  NeighbourSearch search = NeighbourSearch::Delaunay);
+                                                  NeighbourSearch search = NeighbourSearch::NearestNeighbours);
 RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domain, const VoronoiNeighbours &delaunay,
                                                   Progress &progress = Progress::none());
 

@@ -2,13 +2,14 @@
 // distance: what the restricted Voronoi diagram clips with (thesis §1.1, §1.2.2). Rebuilt at
 // every CVT iteration. Two ways to get them, giving the same exact diagram:
 //
-//  - Delaunay (default): the Delaunay neighbours (CGAL Delaunay_triangulation_3, exact
+//  - Delaunay (this class's default): the Delaunay neighbours (CGAL Delaunay_triangulation_3, exact
 //    predicates) plus, where sites are cospherical (several Delaunay cells share one sphere) or
 //    cocircular on the hull, every pair of such a cluster, so that the list holds every
 //    neighbour of the perturbed diagram of rvd_predicates.h whatever triangulation CGAL chose
 //    for the degenerate cluster (a regular grid of sites is the typical case).
-//  - NearestNeighbours: the k nearest sites from a kd-tree (nanoflann), with the radius within
-//    which the list is complete; a user that needs farther sites asks sitesBeyondList(). With the
+//  - NearestNeighbours (what the CVT and computeRestrictedVoronoi use): the k nearest sites
+//    from a kd-tree (nanoflann), with the radius within which the list is complete; a user
+//    that needs farther sites asks sitesBeyondList(). With the
 //    security radius (clipping stops at twice the farthest polygon vertex), any complete list
 //    of nearby sites gives the exact cell (Lévy & Bonneel 2013, "Variational anisotropic
 //    surface meshing with Voronoi parallel linear enumeration", §4). Parallel, and faster than
