@@ -38,6 +38,14 @@ void ComparisonTable::setComparison(std::optional<ModelComparison> comparison)
     fill();
 }
 
+QSize ComparisonTable::sizeHint() const
+{
+    const int figures = m_table->fontMetrics().horizontalAdvance(QStringLiteral("000 000 000")) + 12;
+    const int width = m_table->verticalHeader()->sizeHint().width() + ColumnCount * figures +
+                      2 * m_table->frameWidth() + 2 * layout()->contentsMargins().left();
+    return {width, QWidget::sizeHint().height()};
+}
+
 QString ComparisonTable::cellText(Row row, Column column) const { return m_table->item(row, column)->text(); }
 
 void ComparisonTable::changeEvent(QEvent *event)

@@ -31,6 +31,8 @@ public:
     bool hasComparison() const { return m_comparison.has_value(); }
     // Text of a cell as shown.
     QString cellText(Row row, Column column) const;
+    // Wide enough for the measure names and both columns of figures.
+    QSize sizeHint() const override;
 
 protected:
     void changeEvent(QEvent *event) override;

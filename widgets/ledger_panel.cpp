@@ -62,8 +62,8 @@ void LedgerPanel::setLedger(std::shared_ptr<const SimplificationLedger> ledger)
                                          : QString());
     m_table->resizeColumnsToContents();
     // Long lists of entities stay readable in the tooltip; the columns stay on screen.
-    const int widest = std::max(160, m_table->viewport()->width() / 3);
-    for (int c = 0; c < LedgerTableModel::ColumnCount; ++c)
+    const int widest = m_table->fontMetrics().averageCharWidth() * 40;
+    for (int c = LedgerTableModel::InputsColumn; c < LedgerTableModel::ColumnCount; ++c)
         m_table->setColumnWidth(c, std::min(m_table->columnWidth(c), widest));
     onSelectionChanged();
 }

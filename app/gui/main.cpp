@@ -52,8 +52,10 @@ int main(int argc, char **argv)
         }, Qt::SingleShotConnection);
         if (!options.screenshotPath.isEmpty())
             QObject::connect(&window, &stratamesh::MainWindow::remeshFinished, &window, [&](bool ok) {
-                if (ok)
+                if (ok) {
                     window.ledgerPanel()->selectRow(0);
+                    window.resetCamera(); // the whole model, the marked record somewhere in it
+                }
                 screenshot(ok);
             });
     } else if (!options.screenshotPath.isEmpty()) {

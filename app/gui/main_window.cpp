@@ -528,14 +528,14 @@ void MainWindow::onRemeshed(const RemeshOutcome &outcome)
     m_outputScene->setBoxVisible(m_scene->boxVisible());
     m_outputScene->setEdgesVisible(m_scene->edgesVisible());
     m_outputScene->setModel(outcome.output);
-    m_ledger->setLedger(outcome.ledger);
-    m_comparison->setComparison(outcome.comparison);
     m_outputPane->show();
     m_inputTitle->show();
     m_ledgerDock->show();
     m_ledgerDock->raise();
     m_comparisonDock->show();
-    resizeDocks({m_comparisonDock}, {380}, Qt::Horizontal);
+    m_ledger->setLedger(outcome.ledger);
+    m_comparison->setComparison(outcome.comparison);
+    resizeDocks({m_comparisonDock}, {m_comparison->sizeHint().width()}, Qt::Horizontal);
     resizeDocks({m_ledgerDock}, {220}, Qt::Vertical);
     // Lay the new panes out now: the camera is framed for the views' final sizes.
     layout()->activate();
@@ -609,7 +609,7 @@ void MainWindow::showLedgerRecord(int recordIndex)
                                                                         bounds[5] - bounds[4])
                                                           : 1.0;
     // Big enough to be found at the whole-model zoom, never hiding the change itself entirely.
-    m_marker->show(record->position, std::max(0.012 * diagonal, 0.5 * record->size));
+    m_marker->show(record->position, std::max(0.015 * diagonal, 0.5 * record->size));
     // Keep the view direction and distance, move the camera so the record is in the centre.
     vtkCamera *camera = m_view->renderer()->GetActiveCamera();
     double focal[3], position[3];
