@@ -27,6 +27,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <vtkRenderer.h>
+
 using namespace stratamesh;
 
 namespace {
@@ -132,7 +134,6 @@ private slots:
 
     void remeshShowsOutputLedgerAndComparison()
     {
-        const QImage before = m_window->view()->grabFramebuffer();
         QVERIFY(waitForRemesh(*m_window, smallRun()));
         const auto &outcome = m_window->remeshOutcome();
         QVERIFY(outcome);
@@ -145,6 +146,8 @@ private slots:
         QCOMPARE(m_window->outputScene()->model(), outcome->output);
         QVERIFY(m_window->outputView()->isVisible());
         QVERIFY(m_window->view()->isVisible());
+        // One camera for both views: they always show the same place.
+        QCOMPARE(m_window->outputView()->renderer()->GetActiveCamera(), m_window->view()->renderer()->GetActiveCamera());
         QCOMPARE(m_window->outputScene()->surfaceActorCount(), int(outcome->output->surfaces.size()));
         QVERIFY(outcome->output->triangleCount() > 0);
         QVERIFY(outcome->output->triangleCount() < m_inputTriangles); // 300 sites for a 4520-triangle model
@@ -153,7 +156,6 @@ private slots:
         qInfo("%zu output triangles, %zu ledger records, %d saturated output pixels",
               outcome->output->triangleCount(), outcome->ledger->size(), drawn);
         QVERIFY2(drawn > output.width() * output.height() / 20, qPrintable(QString::number(drawn)));
-        Q_UNUSED(before);
 
         // One row per ledger record, the summary names every kind present.
         LedgerPanel *ledger = m_window->ledgerPanel();
@@ -228,6 +230,22 @@ private slots:
         // An unwritable path is an error message, not a crash.
         QVERIFY(!m_window->saveRemeshedModel(QStringLiteral("/nonexistent/dir/out.ml")));
         QVERIFY(m_window->messagePanel()->count(Message::Severity::Error) >= 1);
+    }
+
+    void closingWhileRemeshingStopsTheWorker()
+    {
+        auto window = std::make_unique<MainWindow>();
+        window->show();
+        QSignalSpy loaded(window.get(), &MainWindow::loadFinished);
+        window->openSample();
+        QVERIFY(loaded.wait(kTimeoutMs));
+        RemeshParams big;
+        big.sites = 50000;
+        QVERIFY(window->startRemesh(big));
+        QVERIFY(window->remeshController()->isBusy());
+        QVERIFY(!window->remeshAction()->isEnabled()); // one job at a time
+        window.reset(); // cancels and waits for the worker; nothing may arrive afterwards
+        QTest::qWait(50);
     }
 
     void openingAnotherModelClearsTheOutput()
