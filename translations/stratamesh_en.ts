@@ -136,6 +136,14 @@
         <source>As thesis Table 4.2: entities counted without the box; Q is 1 for an equilateral triangle.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Min angle (% of triangles)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quality Q (% of triangles)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::FeatureLegend</name>
@@ -176,6 +184,17 @@
     </message>
     <message>
         <source>Legend</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::HistogramChart</name>
+    <message>
+        <source>Input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

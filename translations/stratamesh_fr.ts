@@ -136,6 +136,14 @@
         <source>As thesis Table 4.2: entities counted without the box; Q is 1 for an equilateral triangle.</source>
         <translation>Comme la table 4.2 de la thèse : entités comptées sans la boîte ; Q vaut 1 pour un triangle équilatéral.</translation>
     </message>
+    <message>
+        <source>Min angle (% of triangles)</source>
+        <translation>Angle min. (% des triangles)</translation>
+    </message>
+    <message>
+        <source>Quality Q (% of triangles)</source>
+        <translation>Qualité Q (% des triangles)</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::FeatureLegend</name>
@@ -177,6 +185,17 @@
     <message>
         <source>Legend</source>
         <translation>Légende</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::HistogramChart</name>
+    <message>
+        <source>Input</source>
+        <translation>Entrée</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Sortie</translation>
     </message>
 </context>
 <context>

@@ -1,16 +1,20 @@
 #include "comparison_table.h"
 
+#include "histogram_chart.h"
+
 #include <QEvent>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
 namespace stratamesh {
 
 ComparisonTable::ComparisonTable(QWidget *parent)
-    : QWidget(parent), m_table(new QTableWidget(RowCount, ColumnCount, this)), m_caption(new QLabel(this))
+    : QWidget(parent), m_table(new QTableWidget(RowCount, ColumnCount, this)), m_caption(new QLabel(this)),
+      m_charts(new QTabWidget(this)), m_minAngle(new HistogramChart(this)), m_quality(new HistogramChart(this))
 {
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
@@ -21,8 +25,11 @@ ComparisonTable::ComparisonTable(QWidget *parent)
     m_caption->setWordWrap(true);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
-    layout->addWidget(m_table, 1);
+    layout->addWidget(m_table);
     layout->addWidget(m_caption);
+    m_charts->addTab(m_minAngle, QString());
+    m_charts->addTab(m_quality, QString());
+    layout->addWidget(m_charts, 1);
     for (int r = 0; r < RowCount; ++r)
         for (int c = 0; c < ColumnCount; ++c) {
             auto *item = new QTableWidgetItem;
@@ -62,6 +69,8 @@ void ComparisonTable::retranslate()
                                       tr("Min angle (°)"), tr("Angle < 30° (% triangles)"),
                                       tr("Mean quality Q"), tr("Hausdorff (% bbox diagonal)"),
                                       tr("Sampling time (s)"), tr("Mesh building time (s)")});
+    m_charts->setTabText(0, tr("Min angle (% of triangles)"));
+    m_charts->setTabText(1, tr("Quality Q (% of triangles)"));
     m_caption->setText(tr("As thesis Table 4.2: entities counted without the box; Q is 1 for an "
                           "equilateral triangle."));
     fill();
@@ -71,6 +80,19 @@ void ComparisonTable::fill()
 {
     const QLocale locale;
     const auto set = [this](int row, int column, const QString &text) { m_table->item(row, column)->setText(text); };
+    // The table shows all its rows and takes no more room: the charts get the rest.
+    m_table->setFixedHeight(m_table->horizontalHeader()->sizeHint().height() + m_table->verticalHeader()->length() +
+                            2 * m_table->frameWidth() + 2);
+    if (m_comparison) {
+        m_minAngle->setHistograms(QString(), m_comparison->inputMinAngle,
+                                  m_comparison->outputMinAngle, 0);
+        m_quality->setHistograms(QString(), m_comparison->inputQuality,
+                                 m_comparison->outputQuality, 2);
+    } else {
+        m_minAngle->setHistograms(QString(), std::nullopt, std::nullopt, 0);
+        m_quality->setHistograms(QString(), std::nullopt, std::nullopt, 0);
+    }
+    m_charts->setVisible(m_comparison.has_value());
     if (!m_comparison) {
         for (int r = 0; r < RowCount; ++r)
             for (int c = 0; c < ColumnCount; ++c)

@@ -12,8 +12,11 @@
 
 class QLabel;
 class QTableWidget;
+class QTabWidget;
 
 namespace stratamesh {
+
+class HistogramChart;
 
 class ComparisonTable : public QWidget {
     Q_OBJECT
@@ -31,6 +34,9 @@ public:
     bool hasComparison() const { return m_comparison.has_value(); }
     // Text of a cell as shown.
     QString cellText(Row row, Column column) const;
+    // Min angle and Q distributions of both models, below the table.
+    HistogramChart *minAngleChart() const { return m_minAngle; }
+    HistogramChart *qualityChart() const { return m_quality; }
     // Wide enough for the measure names and both columns of figures.
     QSize sizeHint() const override;
 
@@ -44,6 +50,9 @@ private:
     std::optional<ModelComparison> m_comparison;
     QTableWidget *m_table;
     QLabel *m_caption;
+    QTabWidget *m_charts;
+    HistogramChart *m_minAngle;
+    HistogramChart *m_quality;
 };
 
 } // namespace stratamesh

@@ -5,6 +5,7 @@
 #include "widgets/image_compare.h"
 
 #include "comparison_table.h"
+#include "histogram_chart.h"
 #include "io/model_reader.h"
 #include "ledger_kind_filter.h"
 #include "ledger_panel.h"
@@ -181,6 +182,18 @@ private slots:
         const double hausdorff = table->cellText(ComparisonTable::HausdorffRow, ComparisonTable::OutputColumn).toDouble();
         QVERIFY2(hausdorff > 0.0 && hausdorff < 10.0, qPrintable(QString::number(hausdorff)));
         QCOMPARE(table->cellText(ComparisonTable::HausdorffRow, ComparisonTable::InputColumn), QStringLiteral("—"));
+        // The histograms are the comparison's, bin by bin, in % of the triangles.
+        const Histogram &inQ = outcome->comparison.inputQuality, &outQ = outcome->comparison.outputQuality;
+        QCOMPARE(table->qualityChart()->binCount(), int(inQ.binCount()));
+        QCOMPARE(table->minAngleChart()->binCount(), int(outcome->comparison.outputMinAngle.binCount()));
+        double inSum = 0.0, outSum = 0.0;
+        for (int bin = 0; bin < table->qualityChart()->binCount(); ++bin) {
+            QVERIFY(qAbs(table->qualityChart()->inputPercent(bin) - 100.0 * inQ.fraction(std::size_t(bin))) < 1e-9);
+            QVERIFY(qAbs(table->qualityChart()->outputPercent(bin) - 100.0 * outQ.fraction(std::size_t(bin))) < 1e-9);
+            inSum += table->qualityChart()->inputPercent(bin);
+            outSum += table->qualityChart()->outputPercent(bin);
+        }
+        QVERIFY2(qAbs(inSum - 100.0) < 1e-6 && qAbs(outSum - 100.0) < 1e-6, qPrintable(QStringLiteral("%1 %2").arg(inSum).arg(outSum)));
 
         QVERIFY(m_window->saveRemeshedAction()->isEnabled());
         QVERIFY(m_window->remeshAction()->isEnabled());

@@ -1,0 +1,88 @@
+#include "histogram_chart.h"
+
+#include <QBarCategoryAxis>
+#include <QBarSeries>
+#include <QBarSet>
+#include <QChart>
+#include <QLocale>
+#include <QValueAxis>
+
+#include <algorithm>
+
+namespace stratamesh {
+
+HistogramChart::HistogramChart(QWidget *parent) : QChartView(new QChart, parent)
+{
+    setRenderHint(QPainter::Antialiasing);
+    chart()->legend()->setAlignment(Qt::AlignTop);
+    chart()->setMargins(QMargins(2, 2, 2, 2));
+    chart()->setBackgroundRoundness(0);
+    setMinimumHeight(150);
+}
+
+void HistogramChart::setHistograms(const QString &title, const std::optional<Histogram> &input,
+                                   const std::optional<Histogram> &output, int decimals)
+{
+    QChart *c = chart();
+    c->removeAllSeries();
+    for (QAbstractAxis *axis : c->axes()) {
+        c->removeAxis(axis);
+        delete axis;
+    }
+    m_input = m_output = nullptr;
+    m_binCount = 0;
+    c->setTitle(title);
+    c->setTitleFont([&] {
+        QFont f = c->titleFont();
+        f.setPointSizeF(f.pointSizeF() * 0.9);
+        return f;
+    }());
+    if (!input || !output || input->edges() != output->edges())
+        return;
+    m_binCount = int(input->binCount());
+    m_input = new QBarSet(tr("Input"));
+    m_output = new QBarSet(tr("Output"));
+    m_input->setColor(QColor(150, 150, 160));
+    m_output->setColor(QColor(70, 130, 200));
+    QStringList labels;
+    const QLocale locale;
+    double top = 0.0;
+    for (std::size_t i = 0; i < input->binCount(); ++i) {
+        const double a = 100.0 * input->fraction(i), b = 100.0 * output->fraction(i);
+        *m_input << a;
+        *m_output << b;
+        top = std::max({top, a, b});
+        labels << locale.toString(input->edges()[i], 'f', decimals);
+    }
+    auto *series = new QBarSeries;
+    series->append(m_input);
+    series->append(m_output);
+    series->setBarWidth(0.9);
+    c->addSeries(series);
+    auto *x = new QBarCategoryAxis;
+    x->append(labels);
+    x->setLabelsAngle(-90);
+    QFont small = x->labelsFont();
+    small.setPointSizeF(small.pointSizeF() * 0.8);
+    x->setLabelsFont(small);
+    auto *y = new QValueAxis;
+    y->setRange(0.0, top > 0.0 ? top * 1.05 : 1.0);
+    y->setLabelFormat(QStringLiteral("%.0f"));
+    y->setLabelsFont(small);
+    c->addAxis(x, Qt::AlignBottom);
+    c->addAxis(y, Qt::AlignLeft);
+    series->attachAxis(x);
+    series->attachAxis(y);
+}
+
+double HistogramChart::inputPercent(int bin) const
+{
+    return m_input && bin >= 0 && bin < m_binCount ? m_input->at(bin) : -1.0;
+}
+
+double HistogramChart::outputPercent(int bin) const
+{
+    return m_output && bin >= 0 && bin < m_binCount ? m_output->at(bin) : -1.0;
+}
+
+} // namespace stratamesh

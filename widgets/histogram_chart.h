@@ -1,0 +1,37 @@
+// Input and output of a remeshing counted in the same bins, as paired bars in % of the triangles
+// (thesis §4.5 compares the distributions of min angle and quality Q). The histograms come from
+// core/quality; this only draws them.
+#pragma once
+
+#include "quality/histogram.h"
+
+#include <QChartView>
+
+#include <optional>
+
+class QBarSet;
+
+namespace stratamesh {
+
+class HistogramChart : public QChartView {
+    Q_OBJECT
+public:
+    explicit HistogramChart(QWidget *parent = nullptr);
+
+    // `decimals`: of the bin edge labels. Both histograms must have the same edges; otherwise,
+    // or with std::nullopt, the chart is cleared.
+    void setHistograms(const QString &title, const std::optional<Histogram> &input,
+                       const std::optional<Histogram> &output, int decimals);
+
+    int binCount() const { return m_binCount; }
+    // Height of a bar in %, for tests; -1 out of range.
+    double inputPercent(int bin) const;
+    double outputPercent(int bin) const;
+
+private:
+    QBarSet *m_input = nullptr;
+    QBarSet *m_output = nullptr;
+    int m_binCount = 0;
+};
+
+} // namespace stratamesh
