@@ -2,6 +2,8 @@
 
 #include "model/topology.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <limits>
 #include <map>
@@ -103,7 +105,7 @@ LedgerRecord entityRecord(LedgerKind kind, EntityRef ref, bool isInput, const Ve
 
 } // namespace
 
-int surfaceComponentCount(const Surface &surface)
+std::vector<SurfacePart> surfaceParts(const Surface &surface)
 {
     std::vector<int> parent(surface.triangles.size());
     std::iota(parent.begin(), parent.end(), 0);
@@ -117,11 +119,27 @@ int surfaceComponentCount(const Surface &surface)
             if (!inserted)
                 parent[findRoot(parent, t)] = findRoot(parent, it->second);
         }
-    int count = 0;
-    for (int t = 0; t < static_cast<int>(parent.size()); ++t)
-        count += findRoot(parent, t) == t ? 1 : 0;
-    return count;
+    std::map<int, SurfacePart> byRoot;
+    for (int t = 0; t < static_cast<int>(parent.size()); ++t) {
+        const Triangle &tri = surface.triangles[t];
+        const Vec3 &a = surface.vertices[tri[0]], &b = surface.vertices[tri[1]], &c = surface.vertices[tri[2]];
+        const double area = 0.5 * (b - a).cross(c - a).norm();
+        SurfacePart &part = byRoot[findRoot(parent, t)];
+        part.area += area;
+        part.centroid += area * (a + b + c) / 3.0;
+        ++part.triangles;
+    }
+    std::vector<SurfacePart> parts;
+    for (auto &[root, part] : byRoot) {
+        if (part.area > 0)
+            part.centroid /= part.area;
+        parts.push_back(part);
+    }
+    std::sort(parts.begin(), parts.end(), [](const SurfacePart &x, const SurfacePart &y) { return x.area > y.area; });
+    return parts;
 }
+
+int surfaceComponentCount(const Surface &surface) { return static_cast<int>(surfaceParts(surface).size()); }
 
 void recordEntityChanges(const Model &input, const Model &output, SimplificationLedger &ledger)
 {
@@ -143,9 +161,14 @@ void recordEntityChanges(const Model &input, const Model &output, Simplification
                                           centre, 0.0, "area",
                                           outCount == 0 ? "surface entirely below the resolution"
                                                         : "a connected part of the surface disappeared"));
-        for (int k = inCount; k < outCount; ++k)
-            ledger.push_back(entityRecord(LedgerKind::SurfaceCreated, surfaceRef(output, it->second), false,
-                                          centre, 0.0, "area", "the surface was split into more parts"));
+        if (outCount > inCount) {
+            // The largest parts continue the input's; each smaller one is a new piece to review.
+            const std::vector<SurfacePart> parts = surfaceParts(output.surfaces[it->second]);
+            for (int k = inCount; k < outCount; ++k)
+                ledger.push_back(entityRecord(LedgerKind::SurfaceCreated, surfaceRef(output, it->second), false,
+                                              parts[k].centroid, parts[k].area, "area",
+                                              "the surface was split into more parts: this one is separate"));
+        }
     }
 
     std::vector<std::vector<std::string>> inKeys, outKeys;

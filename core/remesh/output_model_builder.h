@@ -18,7 +18,13 @@ Model buildOutputModel(const Model &input, const OutputMesh &mesh, Simplificatio
 // surfaces correspond by name.
 void recordEntityChanges(const Model &input, const Model &output, SimplificationLedger &ledger);
 
-// Connected components of a surface through its local edges.
+// Connected components of a surface through its local edges, largest area first.
+struct SurfacePart {
+    double area = 0;
+    Vec3 centroid = Vec3::Zero();
+    int triangles = 0;
+};
+std::vector<SurfacePart> surfaceParts(const Surface &surface);
 int surfaceComponentCount(const Surface &surface);
 
 } // namespace stratamesh

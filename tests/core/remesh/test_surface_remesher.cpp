@@ -110,6 +110,22 @@ bool mentions(const LedgerRecord &r, FeatureType type, const Model &input)
 class TestSurfaceRemesher : public QObject {
     Q_OBJECT
 private slots:
+    void surfacePartsLargestFirst()
+    {
+        // A split surface is reviewed part by part: where each extra piece is, and how big.
+        Surface s;
+        s.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 5, 0}, {9, 5, 0}, {5, 9, 0}, {9, 9, 0}};
+        s.triangles = {{0, 1, 2}, {3, 4, 5}, {4, 6, 5}};
+        const std::vector<SurfacePart> parts = surfaceParts(s);
+        QCOMPARE(static_cast<int>(parts.size()), 2);
+        QCOMPARE(surfaceComponentCount(s), 2);
+        QCOMPARE(parts[0].triangles, 2);
+        QVERIFY(std::abs(parts[0].area - 16.0) < 1e-12);
+        QVERIFY((parts[0].centroid - Vec3(7, 7, 0)).norm() < 1e-12);
+        QVERIFY(std::abs(parts[1].area - 0.5) < 1e-12);
+        QVERIFY((parts[1].centroid - Vec3(1.0 / 3, 1.0 / 3, 0)).norm() < 1e-12);
+    }
+
     void nestedSpheresGiveTwoSpheres()
     {
         // Fig 4.3: 100 sites sandwiched between two close spheres; each cell has two components.
