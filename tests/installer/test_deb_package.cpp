@@ -5,6 +5,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -76,6 +77,8 @@ private slots:
             expected << QStringLiteral("usr/bin/stratamesh");
         for (const QString &file : expected)
             QVERIFY2(QFile::exists(QDir(m_root).filePath(file)), qPrintable(file));
+        // A runtime package carries no development link (that belongs in a -dev package).
+        QVERIFY(!QFileInfo::exists(QDir(m_root).filePath(QStringLiteral("usr/lib/libstratamesh_core.so"))));
 
         QFile license(QDir(m_root).filePath(QStringLiteral("usr/share/doc/stratamesh/copyright")));
         QVERIFY(license.open(QIODevice::ReadOnly));
