@@ -301,6 +301,21 @@ private slots:
                 ++namingBoth;
         QVERIFY(namingBoth > 0);
         QVERIFY(joinedLines(merged.model) > 0);
+
+        // Cancelled means the fault strip between the two contacts is gone as a whole, and
+        // said so; kept means it is still there. Both outputs stay valid.
+        auto faultSurfaces = [](const Model &m) {
+            int n = 0;
+            for (const Surface &s : m.surfaces)
+                n += s.type == FeatureType::Fault ? 1 : 0;
+            return n;
+        };
+        QCOMPARE(faultSurfaces(input), 3);
+        QCOMPARE(faultSurfaces(kept.model), 3);
+        QCOMPARE(faultSurfaces(merged.model), 2);
+        QVERIFY(countKind(merged.ledger, LedgerKind::SurfaceLost) >= 1);
+        QVERIFY(checkValidity(kept.model).valid);
+        QVERIFY(checkValidity(merged.model).valid);
     }
 };
 
