@@ -203,14 +203,19 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
         const double h = 0.5 * dn * dn;
         const double bound = 1.01 * dn * largestError + kUnit * (8 * dn * radius + 12 * h);
         const int n = static_cast<int>(polygon.size());
-        m_sides.resize(n);
-        m_values.resize(n);
+        if (static_cast<int>(m_values.size()) < n) {
+            m_sides.resize(2 * n);
+            m_values.resize(2 * n);
+        }
+        int *const sides = m_sides.data();
+        double *const values = m_values.data();
+        const ClipVertex *const poly = polygon.data();
         int positive = 0;
         for (int k = 0; k < n; ++k) {
-            const double value = h - d.dot(polygon[k].position);
-            m_values[k] = value;
-            m_sides[k] = value > bound ? 1 : value < -bound ? -1 : exactSide(t, site, polygon, k, l);
-            positive += m_sides[k] > 0;
+            const double value = h - d.dot(poly[k].position);
+            values[k] = value;
+            sides[k] = value > bound ? 1 : value < -bound ? -1 : exactSide(t, site, polygon, k, l);
+            positive += sides[k] > 0;
         }
         if (positive == n)
             return true;
@@ -218,20 +223,25 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
             polygon.clear();
             return false;
         }
+        // The clipped polygon is built in m_next, measured on the way (same maxima as measure()).
         m_next.clear();
+        double r2 = 0, worst = 0;
         for (int k = 0; k < n; ++k) {
-            const int k1 = (k + 1) % n;
-            const ClipVertex &a = polygon[k];
-            const ClipVertex &b = polygon[k1];
-            if (m_sides[k] > 0)
+            const int k1 = k + 1 == n ? 0 : k + 1;
+            const ClipVertex &a = poly[k];
+            if (sides[k] > 0) {
                 m_next.push_back(a);
-            if (m_sides[k] == m_sides[k1])
+                r2 = std::max(r2, a.position.squaredNorm());
+                worst = std::max(worst, a.error);
+            }
+            if (sides[k] == sides[k1])
                 continue;
+            const ClipVertex &b = poly[k1];
             // The exact crossing lies on the exact edge [a*, b*]; its parameter is known up to
             // the errors of the two values. Unless it is known to 1e-8 (the edge grazes the
             // bisector, or errors have piled up), the point is recomputed from its symbol.
-            const double va = m_values[k], vb = m_values[k1], gap = std::fabs(va - vb);
-            ClipVertex x;
+            const double va = values[k], vb = values[k1], gap = std::fabs(va - vb);
+            ClipVertex &x = m_next.emplace_back();
             if (gap > 2e8 * bound) {
                 const double tau = std::clamp(va / (va - vb), 0.0, 1.0);
                 const double tauError = 2 * bound / (gap - 2 * bound) + 4 * kUnit;
@@ -246,11 +256,13 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
             }
             // Leaving the cell, the polygon follows the bisector; entering, it resumes the support
             // that was cut.
-            x.out = m_sides[k] > 0 ? l : a.out;
-            m_next.push_back(x);
+            x.out = sides[k] > 0 ? l : a.out;
+            r2 = std::max(r2, x.position.squaredNorm());
+            worst = std::max(worst, x.error);
         }
         polygon.swap(m_next);
-        measure();
+        largestError = worst;
+        radius = std::sqrt(r2) * (1 + 4 * kUnit);
         return true;
     };
     const int *nb = m_delaunay.neighboursBegin(site);
