@@ -66,6 +66,14 @@
         <source>--remesh-sites needs a number of sites of at least 4, not &apos;%1&apos;.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Measure the complexity of the model with &lt;n&gt; cells once it is open (with --screenshot, the picture shows the heat map and the Complexity dock).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--complexity-cells needs a number of cells of at least 1, not &apos;%1&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ValidityMessages</name>
@@ -143,6 +151,182 @@
     <message>
         <source>Quality Q (% of triangles)</source>
         <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ComplexityController</name>
+    <message>
+        <source>Measuring complexity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The complexity analysis stopped without a result</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ComplexityDialog</name>
+    <message>
+        <source>Complexity Analysis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Characteristic size: elements smaller than h (h² for surfaces, h³ for regions) are complex (thesis Table 3.2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Angles between elements smaller than α are complex (thesis Table 3.2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cells of the volumetric Voronoi diagram in which model elements are counted (thesis Table 3.4: 100, 1000, 10000).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seed of the initial random sites: the same seed gives the same cells.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Characteristic size &amp;h:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Angle α:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Number of &amp;cells:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ra&amp;ndom seed:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Analyse</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ComplexityPanel</name>
+    <message>
+        <source>%1 of %2 cells drawn</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Regions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surfaces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Total</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Geometric</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Size var. coeff.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Number of elements, box excluded (thesis Table 3.1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sum of C_t + C_f + C_e + C_a over the elements (thesis Table 3.2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Standard deviation / mean of the volumes, areas and lengths (thesis Table 3.3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q10</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q50 (median)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q90</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mean</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Var. coeff.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the &amp;heat map of elements per cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Draw cells with at &amp;least</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> elements</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cells meeting fewer model elements are not drawn, so the model stays visible.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Global measures (thesis Tables 3.1–3.3): none yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Elements per cell (thesis Table 3.4): none yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Global measures, box excluded (thesis Tables 3.1–3.3); geometric with h = %1 m, α = %2°.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Elements per cell (thesis Table 3.4): none.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Elements per cell (thesis Table 3.4), seed %1, %n Lloyd iteration(s); %2 cell(s) outside the model left out of the statistics.</source>
+        <translation>
+            <numerusform>Elements per cell (thesis Table 3.4), seed %1, %n Lloyd iteration; %2 cell(s) outside the model left out of the statistics.</numerusform>
+            <numerusform>Elements per cell (thesis Table 3.4), seed %1, %n Lloyd iterations; %2 cell(s) outside the model left out of the statistics.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -581,6 +765,87 @@
     </message>
     <message>
         <source>Save Remeshed Model &amp;As…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Analyse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Complexity…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measure the complexity of the model and show the elements per cell as a heat map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C&amp;ancel Complexity Analysis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop the complexity analysis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Export Complexity Cells…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the cells with their element counts as a VTK unstructured grid (.vtu)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Complexity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Elements
+per cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measuring the complexity of %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity measured with %1 cells in %2 s: %3 elements per cell at most, %4 on average</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity measured — see Complexity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity analysis failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity analysis failed — see Messages</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity analysis cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Complexity Cells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>VTK unstructured grid (*.vtu)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity cells exported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not export the complexity cells</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -66,6 +66,14 @@
         <source>--remesh-sites needs a number of sites of at least 4, not &apos;%1&apos;.</source>
         <translation>--remesh-sites demande un nombre de sites d&apos;au moins 4, pas « %1 ».</translation>
     </message>
+    <message>
+        <source>Measure the complexity of the model with &lt;n&gt; cells once it is open (with --screenshot, the picture shows the heat map and the Complexity dock).</source>
+        <translation>Mesurer la complexité du modèle avec &lt;n&gt; cellules une fois ouvert (avec --screenshot, l&apos;image montre la carte de chaleur et le panneau Complexité).</translation>
+    </message>
+    <message>
+        <source>--complexity-cells needs a number of cells of at least 1, not &apos;%1&apos;.</source>
+        <translation>--complexity-cells demande un nombre de cellules d&apos;au moins 1, pas « %1 ».</translation>
+    </message>
 </context>
 <context>
     <name>ValidityMessages</name>
@@ -143,6 +151,182 @@
     <message>
         <source>Quality Q (% of triangles)</source>
         <translation>Qualité Q (% des triangles)</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ComplexityController</name>
+    <message>
+        <source>Measuring complexity</source>
+        <translation>Mesure de la complexité</translation>
+    </message>
+    <message>
+        <source>The complexity analysis stopped without a result</source>
+        <translation>L&apos;analyse de complexité s&apos;est arrêtée sans résultat</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ComplexityDialog</name>
+    <message>
+        <source>Complexity Analysis</source>
+        <translation>Analyse de complexité</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Characteristic size: elements smaller than h (h² for surfaces, h³ for regions) are complex (thesis Table 3.2).</source>
+        <translation>Taille caractéristique : les éléments plus petits que h (h² pour les surfaces, h³ pour les régions) sont complexes (thèse, tableau 3.2).</translation>
+    </message>
+    <message>
+        <source>Angles between elements smaller than α are complex (thesis Table 3.2).</source>
+        <translation>Les angles entre éléments inférieurs à α sont complexes (thèse, tableau 3.2).</translation>
+    </message>
+    <message>
+        <source>Cells of the volumetric Voronoi diagram in which model elements are counted (thesis Table 3.4: 100, 1000, 10000).</source>
+        <translation>Cellules du diagramme de Voronoï volumique dans lesquelles les éléments du modèle sont comptés (thèse, tableau 3.4 : 100, 1000, 10000).</translation>
+    </message>
+    <message>
+        <source>Seed of the initial random sites: the same seed gives the same cells.</source>
+        <translation>Graine des sites aléatoires initiaux : la même graine donne les mêmes cellules.</translation>
+    </message>
+    <message>
+        <source>Characteristic size &amp;h:</source>
+        <translation>Taille caractéristique &amp;h :</translation>
+    </message>
+    <message>
+        <source>&amp;Angle α:</source>
+        <translation>&amp;Angle α :</translation>
+    </message>
+    <message>
+        <source>Number of &amp;cells:</source>
+        <translation>Nombre de &amp;cellules :</translation>
+    </message>
+    <message>
+        <source>Ra&amp;ndom seed:</source>
+        <translation>&amp;Graine aléatoire :</translation>
+    </message>
+    <message>
+        <source>&amp;Analyse</source>
+        <translation>&amp;Analyser</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ComplexityPanel</name>
+    <message>
+        <source>%1 of %2 cells drawn</source>
+        <translation>%1 cellules dessinées sur %2</translation>
+    </message>
+    <message>
+        <source>Regions</source>
+        <translation>Régions</translation>
+    </message>
+    <message>
+        <source>Surfaces</source>
+        <translation>Surfaces</translation>
+    </message>
+    <message>
+        <source>Lines</source>
+        <translation>Lignes</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Coins</translation>
+    </message>
+    <message>
+        <source>Total</source>
+        <translation>Total</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Geometric</source>
+        <translation>Géométrique</translation>
+    </message>
+    <message>
+        <source>Size var. coeff.</source>
+        <translation>Coeff. var. taille</translation>
+    </message>
+    <message>
+        <source>Number of elements, box excluded (thesis Table 3.1)</source>
+        <translation>Nombre d&apos;éléments, hors boîte (thèse, tableau 3.1)</translation>
+    </message>
+    <message>
+        <source>Sum of C_t + C_f + C_e + C_a over the elements (thesis Table 3.2)</source>
+        <translation>Somme de C_t + C_f + C_e + C_a sur les éléments (thèse, tableau 3.2)</translation>
+    </message>
+    <message>
+        <source>Standard deviation / mean of the volumes, areas and lengths (thesis Table 3.3)</source>
+        <translation>Écart type / moyenne des volumes, aires et longueurs (thèse, tableau 3.3)</translation>
+    </message>
+    <message>
+        <source>Cells</source>
+        <translation>Cellules</translation>
+    </message>
+    <message>
+        <source>Q10</source>
+        <translation>Q10</translation>
+    </message>
+    <message>
+        <source>Q50 (median)</source>
+        <translation>Q50 (médiane)</translation>
+    </message>
+    <message>
+        <source>Q90</source>
+        <translation>Q90</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
+    </message>
+    <message>
+        <source>Mean</source>
+        <translation>Moyenne</translation>
+    </message>
+    <message>
+        <source>Var. coeff.</source>
+        <translation>Coeff. var.</translation>
+    </message>
+    <message>
+        <source>Show the &amp;heat map of elements per cell</source>
+        <translation>Afficher la &amp;carte de chaleur des éléments par cellule</translation>
+    </message>
+    <message>
+        <source>Draw cells with at &amp;least</source>
+        <translation>Dessiner les cellules d&apos;au &amp;moins</translation>
+    </message>
+    <message>
+        <source> elements</source>
+        <translation> éléments</translation>
+    </message>
+    <message>
+        <source>Cells meeting fewer model elements are not drawn, so the model stays visible.</source>
+        <translation>Les cellules rencontrant moins d&apos;éléments du modèle ne sont pas dessinées, pour que le modèle reste visible.</translation>
+    </message>
+    <message>
+        <source>Global measures (thesis Tables 3.1–3.3): none yet.</source>
+        <translation>Mesures globales (thèse, tableaux 3.1–3.3) : aucune pour l&apos;instant.</translation>
+    </message>
+    <message>
+        <source>Elements per cell (thesis Table 3.4): none yet.</source>
+        <translation>Éléments par cellule (thèse, tableau 3.4) : aucun pour l&apos;instant.</translation>
+    </message>
+    <message>
+        <source>Global measures, box excluded (thesis Tables 3.1–3.3); geometric with h = %1 m, α = %2°.</source>
+        <translation>Mesures globales, hors boîte (thèse, tableaux 3.1–3.3) ; géométrique avec h = %1 m, α = %2°.</translation>
+    </message>
+    <message>
+        <source>Elements per cell (thesis Table 3.4): none.</source>
+        <translation>Éléments par cellule (thèse, tableau 3.4) : aucun.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Elements per cell (thesis Table 3.4), seed %1, %n Lloyd iteration(s); %2 cell(s) outside the model left out of the statistics.</source>
+        <translation>
+            <numerusform>Éléments par cellule (thèse, tableau 3.4), graine %1, %n itération de Lloyd ; %2 cellule(s) hors du modèle exclue(s) des statistiques.</numerusform>
+            <numerusform>Éléments par cellule (thèse, tableau 3.4), graine %1, %n itérations de Lloyd ; %2 cellule(s) hors du modèle exclue(s) des statistiques.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -582,6 +766,88 @@
     <message>
         <source>Save Remeshed Model &amp;As…</source>
         <translation>Enregistrer le modèle remaillé &amp;sous…</translation>
+    </message>
+    <message>
+        <source>&amp;Analyse</source>
+        <translation>A&amp;nalyse</translation>
+    </message>
+    <message>
+        <source>&amp;Complexity…</source>
+        <translation>&amp;Complexité…</translation>
+    </message>
+    <message>
+        <source>Measure the complexity of the model and show the elements per cell as a heat map</source>
+        <translation>Mesurer la complexité du modèle et afficher les éléments par cellule en carte de chaleur</translation>
+    </message>
+    <message>
+        <source>C&amp;ancel Complexity Analysis</source>
+        <translation>A&amp;nnuler l&apos;analyse de complexité</translation>
+    </message>
+    <message>
+        <source>Stop the complexity analysis</source>
+        <translation>Arrêter l&apos;analyse de complexité</translation>
+    </message>
+    <message>
+        <source>&amp;Export Complexity Cells…</source>
+        <translation>&amp;Exporter les cellules de complexité…</translation>
+    </message>
+    <message>
+        <source>Write the cells with their element counts as a VTK unstructured grid (.vtu)</source>
+        <translation>Écrire les cellules avec leur nombre d&apos;éléments en grille non structurée VTK (.vtu)</translation>
+    </message>
+    <message>
+        <source>Complexity</source>
+        <translation>Complexité</translation>
+    </message>
+    <message>
+        <source>&amp;Complexity</source>
+        <translation>&amp;Complexité</translation>
+    </message>
+    <message>
+        <source>Elements
+per cell</source>
+        <translation>Éléments
+par cellule</translation>
+    </message>
+    <message>
+        <source>Measuring the complexity of %1…</source>
+        <translation>Mesure de la complexité de %1…</translation>
+    </message>
+    <message>
+        <source>Complexity measured with %1 cells in %2 s: %3 elements per cell at most, %4 on average</source>
+        <translation>Complexité mesurée avec %1 cellules en %2 s : %3 éléments par cellule au plus, %4 en moyenne</translation>
+    </message>
+    <message>
+        <source>Complexity measured — see Complexity</source>
+        <translation>Complexité mesurée — voir Complexité</translation>
+    </message>
+    <message>
+        <source>Complexity analysis failed: %1</source>
+        <translation>Échec de l&apos;analyse de complexité : %1</translation>
+    </message>
+    <message>
+        <source>Complexity analysis failed — see Messages</source>
+        <translation>Échec de l&apos;analyse de complexité — voir Messages</translation>
+    </message>
+    <message>
+        <source>Complexity analysis cancelled</source>
+        <translation>Analyse de complexité annulée</translation>
+    </message>
+    <message>
+        <source>Export Complexity Cells</source>
+        <translation>Exporter les cellules de complexité</translation>
+    </message>
+    <message>
+        <source>VTK unstructured grid (*.vtu)</source>
+        <translation>Grille non structurée VTK (*.vtu)</translation>
+    </message>
+    <message>
+        <source>Complexity cells exported</source>
+        <translation>Cellules de complexité exportées</translation>
+    </message>
+    <message>
+        <source>Could not export the complexity cells</source>
+        <translation>Impossible d&apos;exporter les cellules de complexité</translation>
     </message>
 </context>
 <context>

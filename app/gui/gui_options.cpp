@@ -50,6 +50,13 @@ bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exi
                                     "picture shows the result with its first simplification selected)."),
         QStringLiteral("n"));
     parser.addOption(remeshSites);
+    const QCommandLineOption complexityCells(
+        QStringLiteral("complexity-cells"),
+        QCoreApplication::translate("GuiOptions",
+                                    "Measure the complexity of the model with <n> cells once it is open (with "
+                                    "--screenshot, the picture shows the heat map and the Complexity dock)."),
+        QStringLiteral("n"));
+    parser.addOption(complexityCells);
     parser.addOption(showBox);
     parser.addOption(showEdges);
     parser.addOption(open);
@@ -89,6 +96,18 @@ bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exi
                          qPrintable(QCoreApplication::translate("GuiOptions", "--remesh-sites needs a number of "
                                                                               "sites of at least 4, not '%1'.")
                                         .arg(parser.value(remeshSites))));
+            exitCode = 2;
+            return false;
+        }
+    }
+    if (parser.isSet(complexityCells)) {
+        bool ok = false;
+        options.complexityCells = parser.value(complexityCells).toInt(&ok);
+        if (!ok || options.complexityCells < 1) {
+            std::fprintf(stderr, "%s\n",
+                         qPrintable(QCoreApplication::translate("GuiOptions", "--complexity-cells needs a number of "
+                                                                              "cells of at least 1, not '%1'.")
+                                        .arg(parser.value(complexityCells))));
             exitCode = 2;
             return false;
         }

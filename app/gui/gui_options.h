@@ -1,4 +1,5 @@
-// Command line of the GUI: --open FILE, --screenshot PNG, --lang fr|en, --remesh-sites N.
+// Command line of the GUI: --open FILE, --screenshot PNG, --lang fr|en, --remesh-sites N,
+// --complexity-cells N.
 #pragma once
 
 #include <QString>
@@ -13,6 +14,7 @@ struct GuiOptions {
     bool showBox = false;
     bool showEdges = false;
     int remeshSites = 0;    // > 0: remesh with this many sites once the model is open
+    int complexityCells = 0; // > 0: measure the complexity with this many cells once it is open
 };
 
 // The value of --lang, looked up before the full parse so that --help is translated too.

@@ -58,6 +58,17 @@ int main(int argc, char **argv)
                 }
                 screenshot(ok);
             });
+    } else if (options.complexityCells > 0) {
+        QObject::connect(&window, &stratamesh::MainWindow::loadFinished, &window, [&](bool ok) {
+            stratamesh::ComplexityParams params;
+            params.cells = {options.complexityCells};
+            if (!ok || !window.startComplexity(params)) {
+                if (!options.screenshotPath.isEmpty())
+                    screenshot(false);
+            }
+        }, Qt::SingleShotConnection);
+        if (!options.screenshotPath.isEmpty())
+            QObject::connect(&window, &stratamesh::MainWindow::complexityFinished, &window, screenshot);
     } else if (!options.screenshotPath.isEmpty()) {
         QObject::connect(&window, &stratamesh::MainWindow::loadFinished, &window, screenshot);
     }

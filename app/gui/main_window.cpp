@@ -1,6 +1,8 @@
 #include "main_window.h"
 
 #include "about_dialog.h"
+#include "cell_heat_map.h"
+#include "complexity_controller.h"
 #include "comparison_table.h"
 #include "feature_legend.h"
 #include "ledger_panel.h"
@@ -44,13 +46,15 @@ namespace stratamesh {
 
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent), m_view(new VtkViewWidget(this)), m_controller(new OpenModelController(this)),
-      m_outputView(new VtkViewWidget(this)), m_remeshController(new RemeshController(this))
+      m_outputView(new VtkViewWidget(this)), m_remeshController(new RemeshController(this)),
+      m_complexityController(new ComplexityController(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
     createViews();
     m_scene = std::make_unique<ModelScene>(m_view->renderer());
     m_outputScene = std::make_unique<ModelScene>(m_outputView->renderer());
     m_marker = std::make_unique<PositionMarker>(m_outputView->renderer());
+    m_heatMap = std::make_unique<CellHeatMap>(m_view->renderer());
     m_legend = new FeatureLegend(m_view);
     setAcceptDrops(true);
 
@@ -58,6 +62,7 @@ MainWindow::MainWindow(QWidget *parent)
     createMenus();
     createDocks();
     createStatusBar();
+    createComplexityUi();
     retranslate();
 
     connect(m_controller, &OpenModelController::started, this, &MainWindow::onLoadStarted);
@@ -79,6 +84,9 @@ MainWindow::~MainWindow()
 {
     m_remeshController->disconnect(this); // a running remeshing is cancelled, its outcome dropped
     delete m_remeshController;
+    m_complexityController->disconnect(this);
+    delete m_complexityController;
+    m_heatMap.reset();
     m_marker.reset();
     m_outputScene.reset();
     m_scene.reset();
@@ -187,6 +195,8 @@ void MainWindow::createMenus()
     m_meshMenu->addAction(m_remesh);
     m_meshMenu->addAction(m_cancelRemesh);
 
+    m_analyseMenu = menuBar()->addMenu(QString());
+
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_about);
     m_helpMenu->addAction(m_aboutQt);
@@ -283,6 +293,7 @@ void MainWindow::retranslate()
     m_comparisonDock->setWindowTitle(tr("Input vs Output"));
     m_comparisonDock->toggleViewAction()->setText(tr("&Input vs Output"));
     updateViewTitles();
+    retranslateComplexity();
     m_toolBar->setWindowTitle(tr("Main Toolbar"));
     m_messageDock->setWindowTitle(tr("Messages"));
     m_messageDock->toggleViewAction()->setText(tr("&Messages"));
@@ -385,8 +396,10 @@ void MainWindow::onLoaded(const LoadedModel &loaded)
     m_displayName = loaded.displayName;
     m_counts = loaded.counts;
     clearRemeshOutcome();
+    clearComplexityOutcome();
     m_scene->setModel(loaded.model);
     m_remesh->setEnabled(true);
+    m_complexity->setEnabled(true);
     updateLegend();
     resetCamera();
 
@@ -454,6 +467,8 @@ void MainWindow::setBusy(bool busy)
     m_open->setEnabled(!busy);
     m_openSample->setEnabled(!busy);
     m_remesh->setEnabled(!busy && m_scene->model());
+    m_complexity->setEnabled(!busy && m_scene->model());
+    m_exportCells->setEnabled(!busy && m_complexityOutcome.has_value());
     m_saveRemeshed->setEnabled(!busy && m_outcome.has_value());
     setAcceptDrops(!busy);
 }
@@ -476,7 +491,7 @@ void MainWindow::clearRemeshOutcome()
 void MainWindow::remesh()
 {
     const auto &model = m_scene->model();
-    if (!model || m_remeshController->isBusy() || m_controller->isBusy())
+    if (!model || isWorking())
         return;
     double bounds[6];
     const double diagonal = m_scene->bounds(bounds) ? std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2],
@@ -492,7 +507,7 @@ void MainWindow::remesh()
 
 bool MainWindow::startRemesh(const RemeshParams &params)
 {
-    if (m_controller->isBusy())
+    if (m_controller->isBusy() || m_complexityController->isBusy())
         return false;
     m_lastParams = params;
     return m_remeshController->start(m_scene->model(), params);
@@ -511,6 +526,7 @@ void MainWindow::onRemeshStarted()
 {
     setBusy(true);
     m_cancelRemesh->setEnabled(true);
+    m_cancelButton->setDefaultAction(m_cancelRemesh);
     m_cancelButton->show();
     m_stageLabel->setText(tr("Remeshing %1…").arg(m_displayName));
     m_progress->setValue(0);

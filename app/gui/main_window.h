@@ -2,6 +2,7 @@
 // and the status bar. Loading is the OpenModelController's job.
 #pragma once
 
+#include "complexity_outcome.h"
 #include "loaded_model.h"
 #include "remesh_outcome.h"
 
@@ -20,7 +21,10 @@ class QToolButton;
 
 namespace stratamesh {
 
+class CellHeatMap;
 class ComparisonTable;
+class ComplexityController;
+class ComplexityPanel;
 class FeatureLegend;
 class LedgerPanel;
 class MessagePanel;
@@ -58,6 +62,16 @@ public:
     // The last remeshing shown, if any (cleared when another model is opened).
     const std::optional<RemeshOutcome> &remeshOutcome() const { return m_outcome; }
 
+    // Complexity analysis (thesis ch. 3): the Complexity dock and the cells heat map in the view.
+    ComplexityController *complexityController() const { return m_complexityController; }
+    ComplexityPanel *complexityPanel() const { return m_complexityPanel; }
+    CellHeatMap *heatMap() const { return m_heatMap.get(); }
+    QAction *complexityAction() const { return m_complexity; }
+    QAction *cancelComplexityAction() const { return m_cancelComplexity; }
+    QAction *exportCellsAction() const { return m_exportCells; }
+    // The last analysis shown, if any (cleared when another model is opened).
+    const std::optional<ComplexityOutcome> &complexityOutcome() const { return m_complexityOutcome; }
+
 public slots:
     void openFile(const QString &path);
     void openSample();
@@ -76,12 +90,24 @@ public slots:
     bool saveRemeshedModel(const QString &path);
     // Marks a ledger record in the output view and centres the camera on it (-1: no mark).
     void showLedgerRecord(int recordIndex);
+    // Opens the parameter dialog, then measures the complexity of the shown model.
+    void analyseComplexity();
+    // Measures with these parameters (one number of cells, no dialog); false when it cannot start.
+    bool startComplexity(const ComplexityParams &params);
+    void cancelComplexity();
+    void chooseCellsFile();
+    // Writes the cells of the last analysis with their counts (.vtu); errors go to the messages.
+    bool exportComplexityCells(const QString &path);
+    void setHeatMapVisible(bool visible);
+    void setHeatMapThreshold(int threshold);
 
 signals:
     // After a load attempt has been shown (model displayed, or error listed).
     void loadFinished(bool ok);
     // After a remeshing has ended and its outcome (result, cancel or error) was shown.
     void remeshFinished(bool ok);
+    // After a complexity analysis has ended and its outcome was shown.
+    void complexityFinished(bool ok);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -108,6 +134,16 @@ private:
     void onRemeshFailed(const Message &error);
     void onRemeshCancelled();
     void updateViewTitles();
+    void createComplexityUi();
+    void retranslateComplexity();
+    void clearComplexityOutcome();
+    void onComplexityStarted();
+    void onComplexityDone(const ComplexityOutcome &outcome);
+    void onComplexityFailed(const Message &error);
+    void onComplexityCancelled();
+    void endComplexityRun();
+    void updateHeatMapCount();
+    bool isWorking() const;
 
     VtkViewWidget *m_view = nullptr;
     std::unique_ptr<ModelScene> m_scene;
@@ -137,6 +173,17 @@ private:
     QAction *m_saveRemeshed = nullptr;
     QMenu *m_meshMenu = nullptr;
     QToolButton *m_cancelButton = nullptr;
+
+    ComplexityController *m_complexityController = nullptr;
+    std::optional<ComplexityOutcome> m_complexityOutcome;
+    ComplexityParams m_lastComplexityParams;
+    std::unique_ptr<CellHeatMap> m_heatMap;
+    ComplexityPanel *m_complexityPanel = nullptr;
+    QDockWidget *m_complexityDock = nullptr;
+    QAction *m_complexity = nullptr;
+    QAction *m_cancelComplexity = nullptr;
+    QAction *m_exportCells = nullptr;
+    QMenu *m_analyseMenu = nullptr;
 
     QAction *m_open = nullptr;
     QAction *m_openSample = nullptr;

@@ -164,7 +164,7 @@ private slots:
         for (QAction *action : window.menuBar()->actions())
             menus << action->text();
         QCOMPARE(menus, (QStringList{QStringLiteral("&Fichier"), QStringLiteral("&Affichage"), QStringLiteral("&Maillage"),
-                                  QStringLiteral("&Aide")}));
+                                  QStringLiteral("A&nalyse"), QStringLiteral("&Aide")}));
         QCOMPARE(window.showBoxAction()->text(), QStringLiteral("Afficher la &boîte"));
     }
 };
