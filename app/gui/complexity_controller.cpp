@@ -75,10 +75,16 @@ ComplexityController::ComplexityController(QObject *parent) : QObject(parent)
 {
     qRegisterMetaType<stratamesh::Message>();
     qRegisterMetaType<stratamesh::ComplexityOutcome>();
-    connect(&m_watcher, &QFutureWatcher<ComplexityRun>::progressValueChanged, this,
-            [this](int value) { emit progressChanged(value, m_watcher.progressText()); });
-    connect(&m_watcher, &QFutureWatcher<ComplexityRun>::progressTextChanged, this,
-            [this](const QString &text) { emit progressChanged(m_watcher.progressValue(), text); });
+    // The watcher's value and text signals arrive separately, and the value read with a text may
+    // be ahead of a value signal still queued: the worker only moves forward, so the bar does too.
+    connect(&m_watcher, &QFutureWatcher<ComplexityRun>::progressValueChanged, this, [this](int value) {
+        m_percent = std::max(m_percent, value);
+        emit progressChanged(m_percent, m_watcher.progressText());
+    });
+    connect(&m_watcher, &QFutureWatcher<ComplexityRun>::progressTextChanged, this, [this](const QString &text) {
+        m_percent = std::max(m_percent, m_watcher.progressValue());
+        emit progressChanged(m_percent, text);
+    });
     connect(&m_watcher, &QFutureWatcher<ComplexityRun>::finished, this, &ComplexityController::onFinished);
 }
 
@@ -96,6 +102,7 @@ bool ComplexityController::start(std::shared_ptr<const Model> model, const Compl
     if (m_pending || !model || params.cells.size() != 1)
         return false;
     m_pending = true;
+    m_percent = 0;
     m_progress = std::make_shared<Progress>();
     emit started();
     m_watcher.setFuture(QtConcurrent::run(&runComplexity, std::move(model), params, m_progress));

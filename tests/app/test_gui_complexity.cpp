@@ -143,7 +143,13 @@ private slots:
     void dockShowsTheCoreFigures()
     {
         const ComplexityParams params = smallRun();
+        QSignalSpy progress(m_window->complexityController(), &ComplexityController::progressChanged);
         QVERIFY(waitForComplexity(*m_window, params));
+        // The bar only moves forward through the stages and ends full.
+        QVERIFY(!progress.isEmpty());
+        for (qsizetype k = 1; k < progress.size(); ++k)
+            QVERIFY(progress[k].first().toInt() >= progress[k - 1].first().toInt());
+        QCOMPARE(progress.last().first().toInt(), 100);
         const auto &outcome = m_window->complexityOutcome();
         QVERIFY(outcome);
         QCOMPARE(outcome->model, m_model);
