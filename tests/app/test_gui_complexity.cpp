@@ -10,6 +10,7 @@
 #include "complexity_controller.h"
 #include "complexity_dialog.h"
 #include "complexity_panel.h"
+#include "gui_options.h"
 #include "main_window.h"
 #include "message_panel.h"
 #include "model_scene.h"
@@ -115,6 +116,21 @@ private slots:
         QCOMPARE(q.geometric.alphaDegrees, 35.0);
         QCOMPARE(q.cells, std::vector<int>{12000}); // more than 10000 cells allowed
         QCOMPARE(q.seed, std::uint64_t(42));
+    }
+
+    void commandLineOption()
+    {
+        GuiOptions options;
+        int exitCode = -1;
+        QVERIFY(parseGuiOptions({QStringLiteral("stratamesh"), QStringLiteral("--complexity-cells"),
+                                 QStringLiteral("500"), QStringLiteral("m.ml")},
+                                options, exitCode));
+        QCOMPARE(options.complexityCells, 500);
+        QCOMPARE(options.openPath, QStringLiteral("m.ml"));
+        GuiOptions bad;
+        QVERIFY(!parseGuiOptions({QStringLiteral("stratamesh"), QStringLiteral("--complexity-cells"), QStringLiteral("0")},
+                                 bad, exitCode));
+        QCOMPARE(exitCode, 2);
     }
 
     // First, while nothing was measured: a cancel must leave nothing behind.
