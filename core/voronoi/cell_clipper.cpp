@@ -274,9 +274,9 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
             return;
     if (q == count && limit() >= m_delaunay.completeRadius(site)) {
         // The list falls short of the security radius: the farther sites, from the kd-tree.
-        m_delaunay.sitesBeyondList(site, limit(), m_farther);
-        for (const auto &[dn, l] : m_farther)
-            if (dn <= limit() && !clip(l, dn))
+        const double radius0 = limit();
+        for (const auto &[dn, l] : sitesBeyondList(site, radius0))
+            if (dn <= radius0 && dn <= limit() && !clip(l, dn))
                 return;
     }
 }
@@ -323,11 +323,24 @@ void CellClipper::clipSegment(int s, int site, SegmentEnd &first, SegmentEnd &se
     for (; q < count && dist[q] <= limit; ++q)
         clip(nb[q]);
     if (q == count && limit >= m_delaunay.completeRadius(site)) {
-        m_delaunay.sitesBeyondList(site, limit, m_farther);
-        for (const auto &[dn, l] : m_farther)
-            if (dn <= limit)
+        const double radius0 = limit;
+        for (const auto &[dn, l] : sitesBeyondList(site, radius0))
+            if (dn <= radius0 && dn <= limit)
                 clip(l);
     }
+}
+
+const std::vector<std::pair<double, int>> &CellClipper::sitesBeyondList(int site, double radius)
+{
+    for (const FartherSites &f : m_farther)
+        if (f.site == site && f.radius >= radius)
+            return f.sites;
+    FartherSites &f = m_farther[m_fartherNext];
+    m_fartherNext = (m_fartherNext + 1) % static_cast<int>(m_farther.size());
+    f.site = site;
+    f.radius = radius;
+    m_delaunay.sitesBeyondList(site, radius, f.sites);
+    return f.sites;
 }
 
 void CellClipper::throwInconsistent(int segment) const

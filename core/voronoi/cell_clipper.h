@@ -21,6 +21,8 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <vector>
 
 namespace stratamesh::rvd {
@@ -123,6 +125,10 @@ private:
     // The crossing of `support` with bisector(site, l), computed from its symbol.
     ClipVertex symbolicCut(int t, int site, int support, int l) const;
     [[noreturn]] void throwInconsistent(int segment) const;
+    // The sites beyond the list of `site` within `radius` (VoronoiNeighbours::sitesBeyondList),
+    // possibly with farther ones: the caller filters by distance. Consecutive triangles clip
+    // by the same sites, so recent answers are kept.
+    const std::vector<std::pair<double, int>> &sitesBeyondList(int site, double radius);
 
     const RestrictionDomain &m_domain;
     const VoronoiNeighbours &m_delaunay;
@@ -130,7 +136,13 @@ private:
     std::vector<int> m_visited;
     std::vector<int> m_sides;
     std::vector<double> m_values;
-    std::vector<std::pair<double, int>> m_farther;
+    struct FartherSites {
+        int site = -1;
+        double radius = 0;
+        std::vector<std::pair<double, int>> sites;
+    };
+    std::array<FartherSites, 8> m_farther;
+    int m_fartherNext = 0;
 };
 
 } // namespace stratamesh::rvd
