@@ -14,17 +14,8 @@ constexpr int kPointChunk = 1024;
 constexpr int kTriangleChunk = 256;
 constexpr int kSegmentChunk = 256;
 
-struct SurfaceRecord {
-    int site;
-    double area, mass, energy;
-    Vec3 moment;
-};
-
-struct LineRecord {
-    int site;
-    double length, energy;
-    Vec3 gradient;
-};
+using detail::LineRecord;
+using detail::SurfaceRecord;
 
 int chunkCount(std::size_t n, int chunk) { return static_cast<int>((n + chunk - 1) / chunk); }
 
@@ -106,12 +97,14 @@ CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeigh
     const std::vector<Vec3> &sites = delaunay.sites();
 
     const int nt = static_cast<int>(domain.triangles.size());
-    std::vector<std::vector<SurfaceRecord>> surfaceRecords(chunkCount(nt, kTriangleChunk));
+    std::vector<std::vector<SurfaceRecord>> &surfaceRecords = workspace.surfaceRecords;
+    surfaceRecords.resize(chunkCount(nt, kTriangleChunk));
     tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(surfaceRecords.size()), 1),
                       [&](const tbb::blocked_range<int> &r) {
         rvd::CellClipper clipper(domain, delaunay);
         for (int c = r.begin(); c < r.end(); ++c) {
             std::vector<SurfaceRecord> &out = surfaceRecords[c];
+            out.clear();
             const int end = std::min(nt, (c + 1) * kTriangleChunk);
             for (int t = c * kTriangleChunk; t < end; ++t) {
                 const Triangle &tri = domain.triangles[t];
@@ -149,12 +142,14 @@ CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeigh
     if (!options.boundary)
         return result;
     const int nseg = static_cast<int>(domain.segments.size());
-    std::vector<std::vector<LineRecord>> lineRecords(chunkCount(nseg, kSegmentChunk));
+    std::vector<std::vector<LineRecord>> &lineRecords = workspace.lineRecords;
+    lineRecords.resize(chunkCount(nseg, kSegmentChunk));
     tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(lineRecords.size()), 1),
                       [&](const tbb::blocked_range<int> &r) {
         rvd::CellClipper clipper(domain, delaunay);
         for (int c = r.begin(); c < r.end(); ++c) {
             std::vector<LineRecord> &out = lineRecords[c];
+            out.clear();
             const int end = std::min(nseg, (c + 1) * kSegmentChunk);
             for (int s = c * kSegmentChunk; s < end; ++s) {
                 const auto &seg = domain.segments[s];

@@ -29,11 +29,28 @@ struct CellIntegrals {
     double totalEnergy() const;
 };
 
+namespace detail {
+// One cell's sums over consecutive triangles (or segments) of a chunk, before the reduction.
+struct SurfaceRecord {
+    int site;
+    double area, mass, energy;
+    Vec3 moment;
+};
+struct LineRecord {
+    int site;
+    double length, energy;
+    Vec3 gradient;
+};
+} // namespace detail
+
 // Reusable state between calls: the owners of the domain points from the previous call serve
-// as starting points of the exact owner walks (the result never depends on them).
+// as starting points of the exact owner walks (the result never depends on them), and the
+// per-chunk record buffers keep their memory.
 struct CellIntegralsWorkspace {
     std::vector<int> pointOwners;
     int siteCount = -1;
+    std::vector<std::vector<detail::SurfaceRecord>> surfaceRecords;
+    std::vector<std::vector<detail::LineRecord>> lineRecords;
 };
 
 struct CellIntegralsOptions {
