@@ -54,13 +54,13 @@ VoronoiNeighbours::VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch se
         m_dimension = lists.dimension;
         if (m_offsets.empty())
             m_offsets.assign(m_sites.size() + 1, 0);
+        sortByDistance();
     } else {
-        buildNearest();
+        buildNearest(); // sorted already
     }
     for (int s = 0; s < n && m_firstVisible < 0; ++s)
         if (!m_hidden[s])
             m_firstVisible = s;
-    sortByDistance();
 }
 
 const VoronoiNeighbours::KdTree &VoronoiNeighbours::kdTree() const
@@ -69,9 +69,9 @@ const VoronoiNeighbours::KdTree &VoronoiNeighbours::kdTree() const
         m_kdTree = std::make_unique<KdTree>();
         m_kdTree->cloud.points = m_sites.data();
         m_kdTree->cloud.count = m_sites.size();
+        // The constructor builds the index (leaves of 10: fastest for the k-nearest lists).
         m_kdTree->index = std::make_unique<KdTree::Index>(3, m_kdTree->cloud,
-                                                          nanoflann::KDTreeSingleIndexAdaptorParams(20));
-        m_kdTree->index->buildIndex();
+                                                          nanoflann::KDTreeSingleIndexAdaptorParams(10));
     });
     return *m_kdTree;
 }
@@ -85,22 +85,36 @@ void VoronoiNeighbours::buildNearest()
     m_complete.assign(n, std::numeric_limits<double>::infinity());
     m_hidden.assign(n, 0);
     const KdTree &tree = kdTree();
+    m_distances.assign(m_neighbours.size(), 0.0);
+    // Queried in the tree's leaf order (nearby sites one after another: the same nodes stay in
+    // cache); each list is sorted by distance here, as sortByDistance() would.
+    const auto &order = tree.index->vAcc;
     tbb::parallel_for(tbb::blocked_range<int>(0, n, 512), [&](const tbb::blocked_range<int> &r) {
         std::vector<int> ids(k);
         std::vector<double> d2(k);
-        for (int i = r.begin(); i < r.end(); ++i) {
+        std::vector<std::pair<double, int>> sorted;
+        sorted.reserve(k);
+        for (int position = r.begin(); position < r.end(); ++position) {
+            const int i = order[position];
             const double query[3] = {m_sites[i].x(), m_sites[i].y(), m_sites[i].z()};
             const std::size_t found = tree.index->knnSearch(query, k, ids.data(), d2.data());
-            int m = 0;
+            sorted.clear();
             double farthest = 0;
             for (std::size_t a = 0; a < found; ++a) {
                 if (ids[a] == i)
                     continue;
-                if (m < k - 1)
-                    m_neighbours[static_cast<std::size_t>(i) * (k - 1) + m++] = ids[a];
-                farthest = std::max(farthest, (m_sites[ids[a]] - m_sites[i]).norm());
+                const double d = (m_sites[ids[a]] - m_sites[i]).norm();
+                if (static_cast<int>(sorted.size()) < k - 1)
+                    sorted.emplace_back(d, ids[a]);
+                farthest = std::max(farthest, d);
                 if (m_sites[ids[a]] == m_sites[i] && ids[a] < i)
                     m_hidden[i] = 1; // a lower index owns this point
+            }
+            std::sort(sorted.begin(), sorted.end());
+            const std::size_t base = static_cast<std::size_t>(i) * (k - 1);
+            for (std::size_t a = 0; a < sorted.size(); ++a) {
+                m_neighbours[base + a] = sorted[a].second;
+                m_distances[base + a] = sorted[a].first;
             }
             // All sites strictly closer than the farthest found one are listed, unless the
             // tree returned fewer than asked (then every site is listed).
@@ -109,17 +123,20 @@ void VoronoiNeighbours::buildNearest()
         }
     });
     // Every list has k − 1 slots; compact the unused ones (only when the site itself was missed).
-    std::vector<int> compact;
-    compact.reserve(m_neighbours.size());
+    std::size_t used = 0;
     for (int i = 0; i < n; ++i) {
         for (int a = 0; a < k - 1; ++a) {
-            const int j = m_neighbours[static_cast<std::size_t>(i) * (k - 1) + a];
-            if (j >= 0)
-                compact.push_back(j);
+            const std::size_t from = static_cast<std::size_t>(i) * (k - 1) + a;
+            if (m_neighbours[from] >= 0) {
+                m_neighbours[used] = m_neighbours[from];
+                m_distances[used] = m_distances[from];
+                ++used;
+            }
         }
-        m_offsets[i + 1] = static_cast<int>(compact.size());
+        m_offsets[i + 1] = static_cast<int>(used);
     }
-    m_neighbours.swap(compact);
+    m_neighbours.resize(used);
+    m_distances.resize(used);
 }
 
 void VoronoiNeighbours::sortByDistance()
