@@ -75,10 +75,16 @@ RemeshController::RemeshController(QObject *parent) : QObject(parent)
 {
     qRegisterMetaType<stratamesh::Message>();
     qRegisterMetaType<stratamesh::RemeshOutcome>();
-    connect(&m_watcher, &QFutureWatcher<RemeshRun>::progressValueChanged, this,
-            [this](int value) { emit progressChanged(value, m_watcher.progressText()); });
-    connect(&m_watcher, &QFutureWatcher<RemeshRun>::progressTextChanged, this,
-            [this](const QString &text) { emit progressChanged(m_watcher.progressValue(), text); });
+    // The watcher's value and text signals arrive separately, and the value read with a text may
+    // be ahead of a value signal still queued: the worker only moves forward, so the bar does too.
+    connect(&m_watcher, &QFutureWatcher<RemeshRun>::progressValueChanged, this, [this](int value) {
+        m_percent = std::max(m_percent, value);
+        emit progressChanged(m_percent, m_watcher.progressText());
+    });
+    connect(&m_watcher, &QFutureWatcher<RemeshRun>::progressTextChanged, this, [this](const QString &text) {
+        m_percent = std::max(m_percent, m_watcher.progressValue());
+        emit progressChanged(m_percent, text);
+    });
     connect(&m_watcher, &QFutureWatcher<RemeshRun>::finished, this, &RemeshController::onFinished);
 }
 
@@ -96,6 +102,7 @@ bool RemeshController::start(std::shared_ptr<const Model> input, const RemeshPar
     if (m_pending || !input)
         return false;
     m_pending = true;
+    m_percent = 0;
     m_progress = std::make_shared<Progress>();
     emit started();
     m_watcher.setFuture(QtConcurrent::run(&runRemesh, std::move(input), params, m_progress));

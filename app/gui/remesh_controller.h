@@ -46,6 +46,7 @@ private:
     QFutureWatcher<RemeshRun> m_watcher;
     std::shared_ptr<Progress> m_progress;
     bool m_pending = false;
+    int m_percent = 0; // last percentage reported in this run
 };
 
 } // namespace stratamesh
