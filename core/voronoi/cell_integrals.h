@@ -51,6 +51,8 @@ struct CellIntegralsWorkspace {
     int siteCount = -1;
     std::vector<std::vector<detail::SurfaceRecord>> surfaceRecords;
     std::vector<std::vector<detail::LineRecord>> lineRecords;
+    // The neighbour lists of the previous sites, where the next k-nearest searches start.
+    NeighbourHints neighbourHints;
 };
 
 struct CellIntegralsOptions {

@@ -17,6 +17,70 @@ namespace {
 // Nearest sites listed per site; beyond them, sitesBeyondList() completes a list on demand.
 constexpr int kNearest = 16;
 
+// nanoflann result set for the k nearest that may start with guesses, so that the search prunes
+// from the start. Every point lies in one leaf, so only the guesses can come twice: they are
+// marked (marks[j] == query) and skipped. Sorted by squared distance; equal distances keep the
+// order of arrival, like nanoflann's KNNResultSet.
+class SeededKnn {
+public:
+    SeededKnn(int capacity, int *indices, double *dists, int *marks, int query)
+        : m_capacity(capacity), m_indices(indices), m_dists(dists), m_marks(marks), m_query(query)
+    {
+    }
+    // Guesses (distinct points, sorted by (squared distance, index)), before the search.
+    void seed(const std::pair<double, int> *guesses, int count)
+    {
+        m_count = std::min(count, m_capacity);
+        for (int a = 0; a < m_count; ++a) {
+            m_dists[a] = guesses[a].first;
+            m_indices[a] = guesses[a].second;
+            m_marks[guesses[a].second] = m_query;
+        }
+    }
+    std::size_t size() const { return static_cast<std::size_t>(m_count); }
+    bool full() const { return m_count == m_capacity; }
+    double worstDist() const
+    {
+        return m_count == m_capacity ? m_dists[m_capacity - 1] : std::numeric_limits<double>::max();
+    }
+    bool addPoint(double dist, int index)
+    {
+        if (m_marks[index] == m_query)
+            return true;
+        int a = m_count;
+        for (; a > 0 && m_dists[a - 1] > dist; --a)
+            if (a < m_capacity) {
+                m_dists[a] = m_dists[a - 1];
+                m_indices[a] = m_indices[a - 1];
+            }
+        if (a < m_capacity) {
+            m_dists[a] = dist;
+            m_indices[a] = index;
+        }
+        if (m_count < m_capacity)
+            ++m_count;
+        return true;
+    }
+
+private:
+    int m_capacity, m_count = 0;
+    int *m_indices;
+    double *m_dists;
+    int *m_marks;
+    int m_query;
+};
+
+// Squared distance as nanoflann's L2_Simple_Adaptor computes it.
+inline double squaredDistance(const Vec3 &a, const Vec3 &b)
+{
+    double s = 0;
+    for (int c = 0; c < 3; ++c) {
+        const double d = a[c] - b[c];
+        s += d * d;
+    }
+    return s;
+}
+
 } // namespace
 
 struct VoronoiNeighbours::KdTree {
@@ -37,7 +101,7 @@ VoronoiNeighbours::~VoronoiNeighbours() = default;
 VoronoiNeighbours::VoronoiNeighbours(VoronoiNeighbours &&) noexcept = default;
 VoronoiNeighbours &VoronoiNeighbours::operator=(VoronoiNeighbours &&) noexcept = default;
 
-VoronoiNeighbours::VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch search)
+VoronoiNeighbours::VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch search, const NeighbourHints *hints)
     : m_search(search), m_sites(std::move(sites)), m_kdOnce(std::make_unique<std::once_flag>())
 {
     if (m_sites.size() > static_cast<std::size_t>(std::numeric_limits<int>::max() / 32))
@@ -56,7 +120,7 @@ VoronoiNeighbours::VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch se
             m_offsets.assign(m_sites.size() + 1, 0);
         sortByDistance();
     } else {
-        buildNearest(); // sorted already
+        buildNearest(hints); // sorted already
     }
     for (int s = 0; s < n && m_firstVisible < 0; ++s)
         if (!m_hidden[s])
@@ -76,7 +140,7 @@ const VoronoiNeighbours::KdTree &VoronoiNeighbours::kdTree() const
     return *m_kdTree;
 }
 
-void VoronoiNeighbours::buildNearest()
+void VoronoiNeighbours::buildNearest(const NeighbourHints *hints)
 {
     const int n = siteCount();
     const int k = std::min(n, kNearest + 1); // the site itself comes back too
@@ -89,15 +153,31 @@ void VoronoiNeighbours::buildNearest()
     // Queried in the tree's leaf order (nearby sites one after another: the same nodes stay in
     // cache); each list is sorted by distance here, as sortByDistance() would.
     const auto &order = tree.index->vAcc;
+    const bool useHints = hints && hints->offsets.size() == static_cast<std::size_t>(n) + 1 &&
+                          hints->offsets.back() == static_cast<int>(hints->neighbours.size());
     tbb::parallel_for(tbb::blocked_range<int>(0, n, 512), [&](const tbb::blocked_range<int> &r) {
         std::vector<int> ids(k);
         std::vector<double> d2(k);
-        std::vector<std::pair<double, int>> sorted;
+        std::vector<std::pair<double, int>> sorted, guesses;
         sorted.reserve(k);
+        std::vector<int> marks(n, -1);
         for (int position = r.begin(); position < r.end(); ++position) {
             const int i = order[position];
             const double query[3] = {m_sites[i].x(), m_sites[i].y(), m_sites[i].z()};
-            const std::size_t found = tree.index->knnSearch(query, k, ids.data(), d2.data());
+            guesses.clear();
+            guesses.emplace_back(0.0, i);
+            if (useHints)
+                for (int h = hints->offsets[i]; h < hints->offsets[i + 1]; ++h) {
+                    const int j = hints->neighbours[h];
+                    if (j >= 0 && j < n && j != i)
+                        guesses.emplace_back(squaredDistance(m_sites[j], m_sites[i]), j);
+                }
+            std::sort(guesses.begin(), guesses.end());
+            guesses.erase(std::unique(guesses.begin(), guesses.end()), guesses.end());
+            SeededKnn result(k, ids.data(), d2.data(), marks.data(), i);
+            result.seed(guesses.data(), static_cast<int>(guesses.size()));
+            tree.index->findNeighbors(result, query, nanoflann::SearchParams());
+            const std::size_t found = result.size();
             sorted.clear();
             double farthest = 0;
             for (std::size_t a = 0; a < found; ++a) {

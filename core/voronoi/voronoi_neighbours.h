@@ -28,12 +28,21 @@ namespace stratamesh {
 
 enum class NeighbourSearch { Delaunay, NearestNeighbours };
 
+// Sites likely near each site, to start the k-nearest searches from (typically the lists of the
+// previous CVT evaluation: the sites moved little). They only make the search faster: the
+// lists found are the same.
+struct NeighbourHints {
+    std::vector<int> offsets;    // per site, CSR over neighbours; empty: no hints
+    std::vector<int> neighbours;
+};
+
 class VoronoiNeighbours {
 public:
     VoronoiNeighbours();
     // Exactly duplicated sites are kept but hidden: the lowest index owns the point, the others
     // have empty cells. Throws InputError on a non-finite coordinate.
-    explicit VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch search = NeighbourSearch::Delaunay);
+    explicit VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch search = NeighbourSearch::Delaunay,
+                               const NeighbourHints *hints = nullptr);
     ~VoronoiNeighbours();
     VoronoiNeighbours(VoronoiNeighbours &&) noexcept;
     VoronoiNeighbours &operator=(VoronoiNeighbours &&) noexcept;
@@ -63,6 +72,13 @@ public:
     // not listed), as (distance, site) sorted like the lists.
     void sitesBeyondList(int i, double radius, std::vector<std::pair<double, int>> &out) const;
 
+    // The lists as hints for the next sites (NearestNeighbours: same sites count expected).
+    void exportHints(NeighbourHints &hints) const
+    {
+        hints.offsets = m_offsets;
+        hints.neighbours = m_neighbours;
+    }
+
     // The site whose perturbed Voronoi cell contains q (exact), found by a greedy walk over
     // neighbours starting from hint (any visible site; −1 to start from a nearest-site search).
     int owner(const Vec3 &q, int hint = -1) const;
@@ -71,7 +87,7 @@ private:
     struct KdTree;
     const KdTree &kdTree() const;
     int approximateNearest(const Vec3 &q) const;
-    void buildNearest();
+    void buildNearest(const NeighbourHints *hints);
     void sortByDistance();
 
     NeighbourSearch m_search = NeighbourSearch::Delaunay;

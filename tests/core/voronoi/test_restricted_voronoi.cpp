@@ -275,6 +275,46 @@ private slots:
         verifyConsistentSymbols(d, b);
     }
 
+    void neighbourHintsGiveTheSameLists()
+    {
+        // Hints only start the k-nearest searches: whatever they hold (the lists of moved sites,
+        // repeated, out of range or wrong entries), the lists, distances and complete radii
+        // are those found without them.
+        std::vector<Vec3> sites = test::randomPointsInBox(400, Vec3(0, 0, 0), Vec3(1, 1, 0.1), 41);
+        const VoronoiNeighbours before(sites, NeighbourSearch::NearestNeighbours);
+        NeighbourHints hints;
+        before.exportHints(hints);
+        QCOMPARE(static_cast<int>(hints.offsets.size()), 401);
+        for (std::size_t i = 0; i < sites.size(); ++i)
+            sites[i] += 0.02 * Vec3(std::sin(3.0 * i), std::cos(5.0 * i), 0.1 * std::sin(7.0 * i));
+        NeighbourHints bad = hints;
+        for (std::size_t h = 0; h < bad.neighbours.size(); h += 3)
+            bad.neighbours[h] = h % 2 ? -5 : static_cast<int>((h * 7919) % 400);
+        if (!bad.neighbours.empty())
+            bad.neighbours[0] = 100000;
+        const VoronoiNeighbours plain(sites, NeighbourSearch::NearestNeighbours);
+        for (const NeighbourHints *h : {&hints, &bad}) {
+            const VoronoiNeighbours hinted(sites, NeighbourSearch::NearestNeighbours, h);
+            for (int i = 0; i < plain.siteCount(); ++i) {
+                QCOMPARE(hinted.neighbourCount(i), plain.neighbourCount(i));
+                QCOMPARE(hinted.completeRadius(i), plain.completeRadius(i));
+                for (int k = 0; k < plain.neighbourCount(i); ++k) {
+                    QCOMPARE(hinted.neighboursBegin(i)[k], plain.neighboursBegin(i)[k]);
+                    QCOMPARE(hinted.neighbourDistances(i)[k], plain.neighbourDistances(i)[k]);
+                }
+            }
+        }
+        // The lists really are the nearest: none closer than the complete radius is missing.
+        for (int i = 0; i < plain.siteCount(); ++i) {
+            int closer = 0;
+            for (int j = 0; j < plain.siteCount(); ++j)
+                closer += j != i && (sites[j] - sites[i]).norm() < plain.completeRadius(i);
+            QVERIFY(closer <= plain.neighbourCount(i));
+            for (int k = 0; k < plain.neighbourCount(i); ++k)
+                QVERIFY(plain.neighbourDistances(i)[k] <= plain.completeRadius(i));
+        }
+    }
+
     void everyTriangleIsTiled()
     {
         // Each triangle's polygons add up to its area, also where dozens of small cells crowd a
