@@ -118,6 +118,7 @@ CellClipper::CellClipper(const RestrictionDomain &domain, const VoronoiNeighbour
     m_polygon.reserve(16);
     m_next.reserve(16);
     m_visited.reserve(16);
+    m_marks.assign(delaunay.siteCount(), 0);
 }
 
 void CellClipper::wholeTriangle(int t, int site, std::vector<ClipVertex> &polygon) const

@@ -78,15 +78,23 @@ public:
             emit(owners[0], m_polygon);
             return;
         }
+        // Sites met for this triangle are marked with a fresh stamp (no search in m_visited).
+        if (++m_stamp == 0) {
+            std::fill(m_marks.begin(), m_marks.end(), 0);
+            m_stamp = 1;
+        }
         m_visited.assign(1, owners[0]);
+        m_marks[owners[0]] = m_stamp;
         for (std::size_t q = 0; q < m_visited.size(); ++q) {
             const int site = m_visited[q];
             clipTriangle(t, site, m_polygon);
             if (m_polygon.empty())
                 continue;
             for (const ClipVertex &v : m_polygon)
-                if (v.out >= 0 && std::find(m_visited.begin(), m_visited.end(), v.out) == m_visited.end())
+                if (v.out >= 0 && m_marks[v.out] != m_stamp) {
+                    m_marks[v.out] = m_stamp;
                     m_visited.push_back(v.out);
+                }
             emit(site, m_polygon);
         }
     }
@@ -134,6 +142,8 @@ private:
     const VoronoiNeighbours &m_delaunay;
     std::vector<ClipVertex> m_polygon, m_next;
     std::vector<int> m_visited;
+    std::vector<unsigned> m_marks; // per site: the stamp of the last triangle that met it
+    unsigned m_stamp = 0;
     std::vector<int> m_sides;
     std::vector<double> m_values;
     struct FartherSites {
