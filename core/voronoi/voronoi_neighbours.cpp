@@ -245,14 +245,18 @@ void VoronoiNeighbours::sitesBeyondList(int i, double radius, std::vector<std::p
     if (!(radius >= complete))
         return;
     const double query[3] = {m_sites[i].x(), m_sites[i].y(), m_sites[i].z()};
-    std::vector<std::pair<int, double>> matches;
+    thread_local std::vector<std::pair<int, double>> matches; // keeps its memory between calls
+    matches.clear();
     nanoflann::SearchParams params;
     params.sorted = false;
     // A little wider than asked: distances are recomputed and filtered exactly as in the lists.
     const double r = radius * (1 + 1e-9) + 1e-300;
     kdTree().index->radiusSearch(query, r * r, matches, params);
+    // Clearly inside the complete radius (margin far above the rounding of d2 and of the norm):
+    // listed already, no square root needed.
+    const double inside = complete * complete * (1 - 1e-6);
     for (const auto &[j, d2] : matches) {
-        if (j == i)
+        if (j == i || d2 < inside)
             continue;
         const double d = (m_sites[j] - m_sites[i]).norm();
         if (d > radius || d < complete)
