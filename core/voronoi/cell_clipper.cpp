@@ -121,7 +121,7 @@ CellClipper::CellClipper(const RestrictionDomain &domain, const VoronoiNeighbour
     m_marks.assign(delaunay.siteCount(), 0);
 }
 
-void CellClipper::wholeTriangle(int t, int site, std::vector<ClipVertex> &polygon) const
+void CellClipper::wholeTriangle(int t, int site, ClipPolygon &polygon) const
 {
     const Triangle &tri = m_domain.triangles[t];
     const Vec3 &pi = m_delaunay.site(site);
@@ -160,7 +160,7 @@ ClipVertex CellClipper::symbolicCut(int t, int site, int support, int l) const
     return x;
 }
 
-int CellClipper::exactSide(int t, int site, const std::vector<ClipVertex> &polygon, int k, int l) const
+int CellClipper::exactSide(int t, int site, const ClipPolygon &polygon, int k, int l) const
 {
     const std::vector<Vec3> &sites = m_delaunay.sites();
     const Vec3 &pi = sites[site], &pl = sites[l];
@@ -178,7 +178,7 @@ int CellClipper::exactSide(int t, int site, const std::vector<ClipVertex> &polyg
     return sideOfFaceVertex(pts[tri[0]], pts[tri[1]], pts[tri[2]], pi, site, sites[in], in, sites[out], out, pl, l);
 }
 
-void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon)
+void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
 {
     wholeTriangle(t, site, polygon);
     const Vec3 &pi = m_delaunay.site(site);
@@ -227,12 +227,13 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
         }
         // The clipped polygon is built in m_next, measured on the way (same maxima as measure()).
         m_next.clear();
+        m_next.reserve(n + 1); // a convex polygon cut by a plane gains at most one vertex
         double r2 = 0, worst = 0;
         for (int k = 0; k < n; ++k) {
             const int k1 = k + 1 == n ? 0 : k + 1;
             const ClipVertex &a = poly[k];
             if (sides[k] > 0) {
-                m_next.push_back(a);
+                m_next.append() = a;
                 r2 = std::max(r2, a.position.squaredNorm());
                 worst = std::max(worst, a.error);
             }
@@ -243,7 +244,7 @@ void CellClipper::clipTriangle(int t, int site, std::vector<ClipVertex> &polygon
             // the errors of the two values. Unless it is known to 1e-8 (the edge grazes the
             // bisector, or errors have piled up), the point is recomputed from its symbol.
             const double va = values[k], vb = values[k1], gap = std::fabs(va - vb);
-            ClipVertex &x = m_next.emplace_back();
+            ClipVertex &x = m_next.append();
             if (gap > 2e8 * bound) {
                 const double tau = std::clamp(va / (va - vb), 0.0, 1.0);
                 const double tauError = 2 * bound / (gap - 2 * bound) + 4 * kUnit;

@@ -39,6 +39,44 @@ struct ClipVertex {
     int out = 0;        // support of the edge from this vertex to the next one
 };
 
+// A clipped polygon: storage that only grows, so that the clipping loops write vertices after
+// one capacity check per bisector instead of one per vertex (as std::vector::push_back does).
+class ClipPolygon {
+public:
+    int size() const { return m_count; }
+    bool empty() const { return m_count == 0; }
+    const ClipVertex *data() const { return m_storage.data(); }
+    ClipVertex *data() { return m_storage.data(); }
+    const ClipVertex &operator[](int k) const { return m_storage[k]; }
+    ClipVertex &operator[](int k) { return m_storage[k]; }
+    const ClipVertex *begin() const { return m_storage.data(); }
+    const ClipVertex *end() const { return m_storage.data() + m_count; }
+    void clear() { m_count = 0; }
+    // Room for n vertices; the vertices kept are left as they are.
+    void reserve(int n)
+    {
+        if (n > static_cast<int>(m_storage.size()))
+            m_storage.resize(2 * static_cast<std::size_t>(n));
+    }
+    // n vertices, those beyond the current count unspecified (the caller fills them).
+    void resize(int n)
+    {
+        reserve(n);
+        m_count = n;
+    }
+    // The next vertex, to be filled; reserve() must have made room.
+    ClipVertex &append() { return m_storage[m_count++]; }
+    void swap(ClipPolygon &other)
+    {
+        m_storage.swap(other.m_storage);
+        std::swap(m_count, other.m_count);
+    }
+
+private:
+    std::vector<ClipVertex> m_storage;
+    int m_count = 0;
+};
+
 // A piece of a line segment inside one cell: its ends are the segment's endpoints (site −1)
 // or its crossings with bisector(cell, site).
 struct SegmentEnd {
@@ -67,7 +105,7 @@ public:
     CellClipper(const RestrictionDomain &domain, const VoronoiNeighbours &neighbours);
 
     // Intersection of triangle t with the cell of site; empty when they do not meet.
-    void clipTriangle(int t, int site, std::vector<ClipVertex> &polygon);
+    void clipTriangle(int t, int site, ClipPolygon &polygon);
 
     // Calls emit(site, polygon) for every cell meeting triangle t, each once, in a
     // deterministic order. owners are the exact owners of the triangle's three points.
@@ -126,10 +164,10 @@ public:
     }
 
 private:
-    void wholeTriangle(int t, int site, std::vector<ClipVertex> &polygon) const;
+    void wholeTriangle(int t, int site, ClipPolygon &polygon) const;
     // Clips [first, second] of segment s by the cell of site; first must stay.
     void clipSegment(int s, int site, SegmentEnd &first, SegmentEnd &second);
-    int exactSide(int t, int site, const std::vector<ClipVertex> &polygon, int k, int l) const;
+    int exactSide(int t, int site, const ClipPolygon &polygon, int k, int l) const;
     // The crossing of `support` with bisector(site, l), computed from its symbol.
     ClipVertex symbolicCut(int t, int site, int support, int l) const;
     [[noreturn]] void throwInconsistent(int segment) const;
@@ -140,7 +178,7 @@ private:
 
     const RestrictionDomain &m_domain;
     const VoronoiNeighbours &m_delaunay;
-    std::vector<ClipVertex> m_polygon, m_next;
+    ClipPolygon m_polygon, m_next;
     std::vector<int> m_visited;
     std::vector<unsigned> m_marks; // per site: the stamp of the last triangle that met it
     unsigned m_stamp = 0;
@@ -151,7 +189,7 @@ private:
         double radius = 0;
         std::vector<std::pair<double, int>> sites;
     };
-    std::array<FartherSites, 8> m_farther;
+    std::array<FartherSites, 32> m_farther;
     int m_fartherNext = 0;
 };
 

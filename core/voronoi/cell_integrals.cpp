@@ -115,7 +115,7 @@ CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeigh
                 if (!domain.density.empty())
                     for (int k = 0; k < 3; ++k)
                         rho[k] = domain.density[tri[k]];
-                clipper.forEachTrianglePart(t, own, [&](int site, const std::vector<rvd::ClipVertex> &polygon) {
+                clipper.forEachTrianglePart(t, own, [&](int site, const rvd::ClipPolygon &polygon) {
                     const rvd::PolygonIntegrals in =
                         rvd::integratePolygon(polygon, domain.density.empty() ? nullptr : rho);
                     if (!out.empty() && out.back().site == site) {

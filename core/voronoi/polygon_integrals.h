@@ -26,7 +26,7 @@ struct PolygonIntegrals {
 
 // Integrals of a clipped polygon about its site (ClipVertex positions are relative to it);
 // rho holds the density at the input triangle's corners, or is null for ρ = 1.
-inline PolygonIntegrals integratePolygon(const std::vector<ClipVertex> &polygon, const double *rho)
+inline PolygonIntegrals integratePolygon(const ClipPolygon &polygon, const double *rho)
 {
     PolygonIntegrals r;
     const int n = static_cast<int>(polygon.size());

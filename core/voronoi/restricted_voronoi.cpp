@@ -166,7 +166,7 @@ RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domai
                 if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
                     continue;
                 const int own[3] = {owners[tri[0]], owners[tri[1]], owners[tri[2]]};
-                clipper.forEachTrianglePart(t, own, [&](int site, const std::vector<rvd::ClipVertex> &poly) {
+                clipper.forEachTrianglePart(t, own, [&](int site, const rvd::ClipPolygon &poly) {
                     const rvd::PolygonIntegrals in = rvd::integratePolygon(poly, nullptr);
                     const int n = static_cast<int>(poly.size());
                     Vec3 centroid = sites[site] + in.firstMoment / in.area;
