@@ -202,7 +202,14 @@ void VoronoiNeighbours::buildNearest(const NeighbourHints *hints)
                 m_complete[i] = farthest;
         }
     });
-    // Every list has k − 1 slots; compact the unused ones (only when the site itself was missed).
+    // Every list has k − 1 slots; compact the unused ones (only when the site itself was missed,
+    // or k > n: rare, so full lists skip the serial copy).
+    const std::size_t slots = static_cast<std::size_t>(k > 1 ? k - 1 : 0);
+    if (std::find(m_neighbours.begin(), m_neighbours.end(), -1) == m_neighbours.end()) {
+        for (int i = 0; i < n; ++i)
+            m_offsets[i + 1] = static_cast<int>((i + 1) * slots);
+        return;
+    }
     std::size_t used = 0;
     for (int i = 0; i < n; ++i) {
         for (int a = 0; a < k - 1; ++a) {
