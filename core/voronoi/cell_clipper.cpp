@@ -182,8 +182,9 @@ void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
 {
     wholeTriangle(t, site, polygon);
     const Vec3 &pi = m_delaunay.site(site);
-    // Largest |x'| and largest position error over the polygon.
-    double radius = 0, largestError = 0;
+    // Largest |x'| and largest position error over the polygon, and the security radius they
+    // give (updated with them: it is compared for every bisector).
+    double radius = 0, largestError = 0, reach = 0;
     const auto measure = [&] {
         double r2 = 0;
         largestError = 0;
@@ -192,9 +193,9 @@ void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
             largestError = std::max(largestError, v.error);
         }
         radius = std::sqrt(r2) * (1 + 4 * kUnit);
+        reach = 2.0 * (radius + largestError) * (1.0 + 1e-12);
     };
     measure();
-    const auto limit = [&] { return 2.0 * (radius + largestError) * (1.0 + 1e-12); };
     // Clips by bisector(site, l); false once the polygon is empty. Inlined in both loops below
     // (called for every bisector test, its call overhead was a tenth of its cost).
     const auto clip = [&](int l, double dn) __attribute__((always_inline)) {
@@ -266,20 +267,21 @@ void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
         polygon.swap(m_next);
         largestError = worst;
         radius = std::sqrt(r2) * (1 + 4 * kUnit);
+        reach = 2.0 * (radius + largestError) * (1.0 + 1e-12);
         return true;
     };
     const int *nb = m_delaunay.neighboursBegin(site);
     const double *dist = m_delaunay.neighbourDistances(site);
     const int count = m_delaunay.neighbourCount(site);
     int q = 0;
-    for (; q < count && dist[q] <= limit(); ++q)
+    for (; q < count && dist[q] <= reach; ++q)
         if (!clip(nb[q], dist[q]))
             return;
-    if (q == count && limit() >= m_delaunay.completeRadius(site)) {
+    if (q == count && reach >= m_delaunay.completeRadius(site)) {
         // The list falls short of the security radius: the farther sites, from the kd-tree.
-        const double radius0 = limit();
+        const double radius0 = reach;
         for (const auto &[dn, l] : sitesBeyondList(site, radius0))
-            if (dn <= radius0 && dn <= limit() && !clip(l, dn))
+            if (dn <= radius0 && dn <= reach && !clip(l, dn))
                 return;
     }
 }
