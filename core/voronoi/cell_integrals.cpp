@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <mutex>
 
 namespace stratamesh {
 namespace {
@@ -18,6 +19,27 @@ using detail::LineRecord;
 using detail::SurfaceRecord;
 
 int chunkCount(std::size_t n, int chunk) { return static_cast<int>((n + chunk - 1) / chunk); }
+
+// Folds the records of each chunk into the per-site sums in chunk order while later chunks are
+// still being clipped (a serial fold after the loop left one thread idle): the thread that
+// finishes a chunk folds every finished chunk next in order. The additions per site come in the
+// same order as in a serial fold, so the sums are bit-identical.
+class OrderedFold {
+public:
+    explicit OrderedFold(int chunks) : m_done(chunks, 0) {}
+    template <class Fold> void finished(int chunk, Fold &&fold)
+    {
+        const std::lock_guard<std::mutex> lock(m_mutex);
+        m_done[chunk] = 1;
+        while (m_next < static_cast<int>(m_done.size()) && m_done[m_next])
+            fold(m_next++);
+    }
+
+private:
+    std::mutex m_mutex;
+    std::vector<char> m_done;
+    int m_next = 0;
+};
 
 // F_B of one piece C1C2 of cell p (thesis Fig 4.2) and its gradient. A piece end lying on
 // bisector(p, o) moves along its segment (direction d) when p or o moves:
@@ -99,6 +121,15 @@ CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeigh
     const int nt = static_cast<int>(domain.triangles.size());
     std::vector<std::vector<SurfaceRecord>> &surfaceRecords = workspace.surfaceRecords;
     surfaceRecords.resize(chunkCount(nt, kTriangleChunk));
+    OrderedFold surfaceFold(static_cast<int>(surfaceRecords.size()));
+    const auto foldSurface = [&](int c) {
+        for (const SurfaceRecord &rec : surfaceRecords[c]) {
+            result.area[rec.site] += rec.area;
+            result.mass[rec.site] += rec.mass;
+            result.energy[rec.site] += rec.energy;
+            result.moment[rec.site] += rec.moment;
+        }
+    };
     tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(surfaceRecords.size()), 1),
                       [&](const tbb::blocked_range<int> &r) {
         rvd::CellClipper clipper(domain, delaunay);
@@ -129,15 +160,9 @@ CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeigh
                     }
                 });
             }
+            surfaceFold.finished(c, foldSurface);
         }
     });
-    for (const auto &records : surfaceRecords)
-        for (const SurfaceRecord &rec : records) {
-            result.area[rec.site] += rec.area;
-            result.mass[rec.site] += rec.mass;
-            result.energy[rec.site] += rec.energy;
-            result.moment[rec.site] += rec.moment;
-        }
 
     if (!options.boundary)
         return result;
