@@ -172,7 +172,11 @@ void VoronoiNeighbours::buildNearest(const NeighbourHints *hints)
                     if (j >= 0 && j < n && j != i)
                         guesses.emplace_back(squaredDistance(m_sites[j], m_sites[i]), j);
                 }
-            std::sort(guesses.begin(), guesses.end());
+            // The hints are the previous list, sorted by the previous distances: nearly sorted,
+            // which an insertion sort handles in about one comparison per guess.
+            for (std::size_t a = 1; a < guesses.size(); ++a)
+                for (std::size_t b = a; b > 0 && guesses[b] < guesses[b - 1]; --b)
+                    std::swap(guesses[b], guesses[b - 1]);
             guesses.erase(std::unique(guesses.begin(), guesses.end()), guesses.end());
             SeededKnn result(k, ids.data(), d2.data(), marks.data(), i);
             result.seed(guesses.data(), static_cast<int>(guesses.size()));
@@ -190,7 +194,10 @@ void VoronoiNeighbours::buildNearest(const NeighbourHints *hints)
                 if (m_sites[ids[a]] == m_sites[i] && ids[a] < i)
                     m_hidden[i] = 1; // a lower index owns this point
             }
-            std::sort(sorted.begin(), sorted.end());
+            // Found in squared-distance order: (distance, index) order is almost the same.
+            for (std::size_t a = 1; a < sorted.size(); ++a)
+                for (std::size_t b = a; b > 0 && sorted[b] < sorted[b - 1]; --b)
+                    std::swap(sorted[b], sorted[b - 1]);
             const std::size_t base = static_cast<std::size_t>(i) * (k - 1);
             for (std::size_t a = 0; a < sorted.size(); ++a) {
                 m_neighbours[base + a] = sorted[a].second;
