@@ -196,22 +196,28 @@ void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
         reach = 2.0 * (radius + largestError) * (1.0 + 1e-12);
     };
     measure();
+    // Loaded once here rather than through the members for every bisector.
+    const Vec3 *const siteData = m_delaunay.sites().data();
+    int *sides = m_sides.data();
+    double *values = m_values.data();
+    int valueCapacity = static_cast<int>(m_values.size());
     // Clips by bisector(site, l); false once the polygon is empty. Inlined in both loops below
     // (called for every bisector test, its call overhead was a tenth of its cost).
     const auto clip = [&](int l, double dn) __attribute__((always_inline)) {
         // In the site's frame, π_l − π_i = 2·(h − d·x') with d = p_l − p_i, h = |d|²/2 and
         // dn = |d| rounded. The bound covers the rounding of d, h and the dot product, and the
         // error of x'.
-        const Vec3 d = m_delaunay.site(l) - pi;
+        const Vec3 d = siteData[l] - pi;
         const double h = 0.5 * dn * dn;
         const double bound = 1.01 * dn * largestError + kUnit * (8 * dn * radius + 12 * h);
         const int n = static_cast<int>(polygon.size());
-        if (static_cast<int>(m_values.size()) < n) {
+        if (valueCapacity < n) {
             m_sides.resize(2 * n);
             m_values.resize(2 * n);
+            sides = m_sides.data();
+            values = m_values.data();
+            valueCapacity = 2 * n;
         }
-        int *const sides = m_sides.data();
-        double *const values = m_values.data();
         const ClipVertex *const poly = polygon.data();
         int positive = 0;
         for (int k = 0; k < n; ++k) {
