@@ -3,6 +3,7 @@
 #include "voronoi/cell_clipper.h"
 #include "voronoi/polygon_integrals.h"
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -122,6 +123,9 @@ CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeigh
     std::vector<std::vector<SurfaceRecord>> &surfaceRecords = workspace.surfaceRecords;
     surfaceRecords.resize(chunkCount(nt, kTriangleChunk));
     OrderedFold surfaceFold(static_cast<int>(surfaceRecords.size()));
+    // One clipper per thread for the whole loop (not per task): its marks and its answers about
+    // sites beyond the lists stay warm from one task to the next.
+    tbb::enumerable_thread_specific<rvd::CellClipper> clippers([&] { return rvd::CellClipper(domain, delaunay); });
     const auto foldSurface = [&](int c) {
         for (const SurfaceRecord &rec : surfaceRecords[c]) {
             result.area[rec.site] += rec.area;
@@ -132,7 +136,7 @@ CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeigh
     };
     tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(surfaceRecords.size()), 1),
                       [&](const tbb::blocked_range<int> &r) {
-        rvd::CellClipper clipper(domain, delaunay);
+        rvd::CellClipper &clipper = clippers.local();
         for (int c = r.begin(); c < r.end(); ++c) {
             std::vector<SurfaceRecord> &out = surfaceRecords[c];
             out.clear();
