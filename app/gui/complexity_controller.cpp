@@ -1,10 +1,10 @@
 #include "complexity_controller.h"
 
+#include "error_message.h"
 #include "common/error.h"
 #include "common/progress.h"
 
 #include <QElapsedTimer>
-#include <QEventLoop>
 #include <QPromise>
 #include <QtConcurrent>
 
@@ -58,11 +58,8 @@ void runComplexity(QPromise<ComplexityRun> &promise, std::shared_ptr<const Model
         run.status = ComplexityRun::Status::Done;
     } catch (const Cancelled &) {
         run.status = ComplexityRun::Status::Cancelled;
-    } catch (const FileError &e) {
-        run.error = {Message::Severity::Error, QString::fromStdString(e.cause()), QString::fromStdString(e.file()),
-                     e.line()};
     } catch (const std::exception &e) {
-        run.error = {Message::Severity::Error, QString::fromStdString(e.what()), QString(), 0};
+        run.error = errorMessage(e);
     }
     run.outcome.milliseconds = timer.elapsed();
     promise.setProgressValueAndText(100, QString());
@@ -71,76 +68,35 @@ void runComplexity(QPromise<ComplexityRun> &promise, std::shared_ptr<const Model
 
 } // namespace
 
-ComplexityController::ComplexityController(QObject *parent) : QObject(parent)
+ComplexityController::ComplexityController(QObject *parent) : WorkflowJob(parent)
 {
-    qRegisterMetaType<stratamesh::Message>();
     qRegisterMetaType<stratamesh::ComplexityOutcome>();
-    // The watcher's value and text signals arrive separately, and the value read with a text may
-    // be ahead of a value signal still queued: the worker only moves forward, so the bar does too.
-    connect(&m_watcher, &QFutureWatcher<ComplexityRun>::progressValueChanged, this, [this](int value) {
-        m_percent = std::max(m_percent, value);
-        emit progressChanged(m_percent, m_watcher.progressText());
-    });
-    connect(&m_watcher, &QFutureWatcher<ComplexityRun>::progressTextChanged, this, [this](const QString &text) {
-        m_percent = std::max(m_percent, m_watcher.progressValue());
-        emit progressChanged(m_percent, text);
-    });
+    relayProgress(m_watcher);
     connect(&m_watcher, &QFutureWatcher<ComplexityRun>::finished, this, &ComplexityController::onFinished);
 }
 
-ComplexityController::~ComplexityController()
-{
-    m_watcher.disconnect(this);
-    if (m_progress)
-        m_progress->cancel();
-    m_watcher.cancel();
-    m_watcher.waitForFinished();
-}
+ComplexityController::~ComplexityController() { stop(m_watcher); }
 
 bool ComplexityController::start(std::shared_ptr<const Model> model, const ComplexityParams &params)
 {
-    if (m_pending || !model || params.cells.size() != 1)
+    if (!model || params.cells.size() != 1)
         return false;
-    m_pending = true;
-    m_percent = 0;
-    m_progress = std::make_shared<Progress>();
-    emit started();
-    m_watcher.setFuture(QtConcurrent::run(&runComplexity, std::move(model), params, m_progress));
+    std::shared_ptr<Progress> progress = begin();
+    if (!progress)
+        return false;
+    m_watcher.setFuture(QtConcurrent::run(&runComplexity, std::move(model), params, std::move(progress)));
     return true;
-}
-
-void ComplexityController::cancel()
-{
-    if (m_pending && m_progress)
-        m_progress->cancel();
-}
-
-void ComplexityController::waitForFinished()
-{
-    if (!m_pending)
-        return;
-    QEventLoop loop;
-    connect(this, &ComplexityController::finished, &loop, &QEventLoop::quit);
-    if (m_pending)
-        loop.exec();
 }
 
 void ComplexityController::onFinished()
 {
-    m_pending = false;
-    m_progress.reset();
     const QFuture<ComplexityRun> future = m_watcher.future();
     ComplexityRun run;
     if (future.resultCount() > 0)
         run = future.result();
     else
         run.error = {Message::Severity::Error, tr("The complexity analysis stopped without a result"), QString(), 0};
-    switch (run.status) {
-    case ComplexityRun::Status::Done: emit succeeded(run.outcome); break;
-    case ComplexityRun::Status::Cancelled: emit cancelled(); break;
-    case ComplexityRun::Status::Failed: emit failed(run.error); break;
-    }
-    emit finished(run.status == ComplexityRun::Status::Done);
+    end(run.status, run.error, [&] { emit succeeded(run.outcome); });
 }
 
 } // namespace stratamesh

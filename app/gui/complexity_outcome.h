@@ -4,6 +4,7 @@
 
 #include "complexity/complexity_report.h"
 #include "message.h"
+#include "workflow_job.h"
 #include "model/model.h"
 
 #include <QMetaType>
@@ -24,7 +25,7 @@ struct ComplexityOutcome {
 };
 
 struct ComplexityRun {
-    enum class Status { Done, Cancelled, Failed };
+    using Status = RunStatus;
     Status status = Status::Failed;
     ComplexityOutcome outcome; // when Done
     Message error;             // when Failed

@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "error_message.h"
 #include "about_dialog.h"
 #include "cell_heat_map.h"
 #include "complexity_controller.h"
@@ -675,11 +676,8 @@ bool MainWindow::saveRemeshedModel(const QString &path)
         m_messages->addMessage(message);
         m_stageLabel->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));
         return true;
-    } catch (const FileError &e) {
-        message = {Message::Severity::Error, QString::fromStdString(e.cause()), QString::fromStdString(e.file()),
-                   e.line()};
     } catch (const std::exception &e) {
-        message = {Message::Severity::Error, QString::fromStdString(e.what()), path, 0};
+        message = errorMessage(e, path);
     }
     m_messages->addMessage(message);
     m_messageDock->show();

@@ -1,5 +1,6 @@
 // The complexity analysis part of the main window (thesis ch. 3): the Analyse menu, the
 // Complexity dock and the heat map of elements per cell in the 3D view (Fig 3.7).
+#include "error_message.h"
 #include "main_window.h"
 
 #include "cell_heat_map.h"
@@ -243,11 +244,8 @@ bool MainWindow::exportComplexityCells(const QString &path)
         m_messages->addMessage(message);
         m_stageLabel->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));
         return true;
-    } catch (const FileError &e) {
-        message = {Message::Severity::Error, QString::fromStdString(e.cause()), QString::fromStdString(e.file()),
-                   e.line()};
     } catch (const std::exception &e) {
-        message = {Message::Severity::Error, QString::fromStdString(e.what()), path, 0};
+        message = errorMessage(e, path);
     }
     m_messages->addMessage(message);
     m_messageDock->show();

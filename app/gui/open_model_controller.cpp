@@ -1,5 +1,6 @@
 #include "open_model_controller.h"
 
+#include "error_message.h"
 #include "validity_messages.h"
 
 #include "common/error.h"
@@ -53,11 +54,8 @@ void loadModel(QPromise<LoadResult> &promise, const QString &path, const QString
         result.loaded.counts = countEntities(model);
         result.loaded.model = std::make_shared<const Model>(std::move(model));
         result.ok = true;
-    } catch (const FileError &e) {
-        result.error = {Message::Severity::Error, QString::fromStdString(e.cause()),
-                        QString::fromStdString(e.file()), e.line()};
     } catch (const std::exception &e) {
-        result.error = {Message::Severity::Error, QString::fromStdString(e.what()), path, 0};
+        result.error = errorMessage(e, path);
     }
     result.loaded.milliseconds = timer.elapsed();
     promise.setProgressValueAndText(100, QString());

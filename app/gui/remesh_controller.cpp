@@ -1,11 +1,11 @@
 #include "remesh_controller.h"
 
+#include "error_message.h"
 #include "common/error.h"
 #include "common/progress.h"
 #include "model/model_counts.h"
 
 #include <QElapsedTimer>
-#include <QEventLoop>
 #include <QPromise>
 #include <QtConcurrent>
 
@@ -58,11 +58,8 @@ void runRemesh(QPromise<RemeshRun> &promise, std::shared_ptr<const Model> input,
         run.status = RemeshRun::Status::Done;
     } catch (const Cancelled &) {
         run.status = RemeshRun::Status::Cancelled;
-    } catch (const FileError &e) {
-        run.error = {Message::Severity::Error, QString::fromStdString(e.cause()), QString::fromStdString(e.file()),
-                     e.line()};
     } catch (const std::exception &e) {
-        run.error = {Message::Severity::Error, QString::fromStdString(e.what()), QString(), 0};
+        run.error = errorMessage(e);
     }
     run.outcome.milliseconds = timer.elapsed();
     promise.setProgressValueAndText(100, QString());
@@ -71,76 +68,35 @@ void runRemesh(QPromise<RemeshRun> &promise, std::shared_ptr<const Model> input,
 
 } // namespace
 
-RemeshController::RemeshController(QObject *parent) : QObject(parent)
+RemeshController::RemeshController(QObject *parent) : WorkflowJob(parent)
 {
-    qRegisterMetaType<stratamesh::Message>();
     qRegisterMetaType<stratamesh::RemeshOutcome>();
-    // The watcher's value and text signals arrive separately, and the value read with a text may
-    // be ahead of a value signal still queued: the worker only moves forward, so the bar does too.
-    connect(&m_watcher, &QFutureWatcher<RemeshRun>::progressValueChanged, this, [this](int value) {
-        m_percent = std::max(m_percent, value);
-        emit progressChanged(m_percent, m_watcher.progressText());
-    });
-    connect(&m_watcher, &QFutureWatcher<RemeshRun>::progressTextChanged, this, [this](const QString &text) {
-        m_percent = std::max(m_percent, m_watcher.progressValue());
-        emit progressChanged(m_percent, text);
-    });
+    relayProgress(m_watcher);
     connect(&m_watcher, &QFutureWatcher<RemeshRun>::finished, this, &RemeshController::onFinished);
 }
 
-RemeshController::~RemeshController()
-{
-    m_watcher.disconnect(this);
-    if (m_progress)
-        m_progress->cancel();
-    m_watcher.cancel();
-    m_watcher.waitForFinished();
-}
+RemeshController::~RemeshController() { stop(m_watcher); }
 
 bool RemeshController::start(std::shared_ptr<const Model> input, const RemeshParams &params)
 {
-    if (m_pending || !input)
+    if (!input)
         return false;
-    m_pending = true;
-    m_percent = 0;
-    m_progress = std::make_shared<Progress>();
-    emit started();
-    m_watcher.setFuture(QtConcurrent::run(&runRemesh, std::move(input), params, m_progress));
+    std::shared_ptr<Progress> progress = begin();
+    if (!progress)
+        return false;
+    m_watcher.setFuture(QtConcurrent::run(&runRemesh, std::move(input), params, std::move(progress)));
     return true;
-}
-
-void RemeshController::cancel()
-{
-    if (m_pending && m_progress)
-        m_progress->cancel();
-}
-
-void RemeshController::waitForFinished()
-{
-    if (!m_pending)
-        return;
-    QEventLoop loop;
-    connect(this, &RemeshController::finished, &loop, &QEventLoop::quit);
-    if (m_pending)
-        loop.exec();
 }
 
 void RemeshController::onFinished()
 {
-    m_pending = false;
-    m_progress.reset();
     const QFuture<RemeshRun> future = m_watcher.future();
     RemeshRun run;
     if (future.resultCount() > 0)
         run = future.result();
     else
         run.error = {Message::Severity::Error, tr("Remeshing stopped without a result"), QString(), 0};
-    switch (run.status) {
-    case RemeshRun::Status::Done: emit succeeded(run.outcome); break;
-    case RemeshRun::Status::Cancelled: emit cancelled(); break;
-    case RemeshRun::Status::Failed: emit failed(run.error); break;
-    }
-    emit finished(run.status == RemeshRun::Status::Done);
+    end(run.status, run.error, [&] { emit succeeded(run.outcome); });
 }
 
 } // namespace stratamesh

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "message.h"
+#include "workflow_job.h"
 #include "model/model.h"
 #include "model/model_counts.h"
 #include "quality/model_comparison.h"
@@ -27,7 +28,7 @@ struct RemeshOutcome {
 };
 
 struct RemeshRun {
-    enum class Status { Done, Cancelled, Failed };
+    using Status = RunStatus;
     Status status = Status::Failed;
     RemeshOutcome outcome; // when Done
     Message error;         // when Failed
