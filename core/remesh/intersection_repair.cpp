@@ -64,27 +64,6 @@ bool anyIntersection(const EditableSoup &soup, const std::vector<int> &tris)
     return false;
 }
 
-// Intersecting pairs with at least one triangle around one of the vertices (each pair once).
-int intersectionsAround(const EditableSoup &soup, const std::vector<int> &vertices)
-{
-    std::vector<int> tris;
-    for (int v : vertices)
-        tris.insert(tris.end(), soup.vertexTriangles(v).begin(), soup.vertexTriangles(v).end());
-    std::sort(tris.begin(), tris.end());
-    tris.erase(std::unique(tris.begin(), tris.end()), tris.end());
-    int count = 0;
-    for (int t : tris) {
-        const BBox bt = boxOf(soup, t);
-        for (int u = 0; u < soup.triangleCapacity(); ++u) {
-            if (u == t || !soup.alive(u) || (std::binary_search(tris.begin(), tris.end(), u) && u < t))
-                continue;
-            if (bt.overlaps(boxOf(soup, u)) && pairIntersects(soup, t, u))
-                ++count;
-        }
-    }
-    return count;
-}
-
 // Flips an edge of triangle `tri` (given by its corners: a refused flip is undone by flipping
 // back, which renumbers the triangles).
 bool tryFlips(EditableSoup &soup, const std::array<int, 3> &tri)
@@ -162,10 +141,10 @@ bool tryCollapses(EditableSoup &soup, const Model &input, const std::array<int, 
         r.size = length;
         r.sizeMeaning = "distance";
         r.note = "points closer than the resolution merged to undo intersecting triangles";
-        const int before = intersectionsAround(soup, {u, w});
+        const int before = intersectionsAroundVertices(soup, {u, w});
         for (bool checkShape : {true, false}) {
             EditableSoup backup = soup;
-            if (soup.collapse(u, w, target, 0.0, checkShape) && intersectionsAround(soup, {w}) < before) {
+            if (soup.collapse(u, w, target, 0.0, checkShape) && intersectionsAroundVertices(soup, {w}) < before) {
                 ledger.push_back(r);
                 return true;
             }
@@ -179,7 +158,22 @@ bool tryCollapses(EditableSoup &soup, const Model &input, const std::array<int, 
 
 int intersectionsAroundVertices(const EditableSoup &soup, const std::vector<int> &vertices)
 {
-    return intersectionsAround(soup, vertices);
+    std::vector<int> tris;
+    for (int v : vertices)
+        tris.insert(tris.end(), soup.vertexTriangles(v).begin(), soup.vertexTriangles(v).end());
+    std::sort(tris.begin(), tris.end());
+    tris.erase(std::unique(tris.begin(), tris.end()), tris.end());
+    int count = 0;
+    for (int t : tris) {
+        const BBox bt = boxOf(soup, t);
+        for (int u = 0; u < soup.triangleCapacity(); ++u) {
+            if (u == t || !soup.alive(u) || (std::binary_search(tris.begin(), tris.end(), u) && u < t))
+                continue;
+            if (bt.overlaps(boxOf(soup, u)) && pairIntersects(soup, t, u))
+                ++count;
+        }
+    }
+    return count;
 }
 
 std::vector<std::pair<int, int>> soupIntersections(const EditableSoup &soup)
