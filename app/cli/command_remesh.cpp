@@ -1,5 +1,5 @@
 // stratamesh-cli remesh MODEL (--sites N | --edge-length L) [--d-resolution D] [--iterations 100]
-//     [--seed S] [--adaptive] [--merge-all] -o OUT.(ml|ts) --report REPORT.json
+//     [--seed S] [--adaptive] [--merge-all] [--strip-factor F] -o OUT.(ml|ts) --report REPORT.json
 // Remeshes every surface of a model at once at the chosen resolution (thesis ch. 4), writes the
 // new model, and a JSON report: input and output (counts and mesh as `info --json`, validity),
 // the Hausdorff distance, histograms, timings, the simplification ledger and the CVT energy.
@@ -118,6 +118,8 @@ int runRemesh(CommandArgs &args)
     params.seed = static_cast<unsigned>(args.intOption(QStringLiteral("--seed"), 1, 0, 2147483647));
     params.adaptive = args.flag(QStringLiteral("--adaptive"));
     params.mergeAllExtraPoints = args.flag(QStringLiteral("--merge-all"));
+    params.stripWidthFactor =
+        args.doubleOption(QStringLiteral("--strip-factor"), params.stripWidthFactor, 0.0, 1.0);
     const std::optional<QString> output = args.option(QStringLiteral("-o"));
     const std::optional<QString> reportPath = args.option(QStringLiteral("--report"));
     const QString path = args.positional(QStringLiteral("MODEL"));

@@ -24,6 +24,7 @@ struct CleanupParams {
 };
 
 struct CleanupCounts {
+    int lineFins = 0; // line_fins.h
     int valence3 = 0;
     int borderTriangles = 0;
     int contactTriangles = 0;

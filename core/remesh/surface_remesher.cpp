@@ -8,11 +8,15 @@
 #include "remesh/duplicate_separation.h"
 #include "remesh/editable_soup.h"
 #include "remesh/input_projector.h"
+#include "remesh/line_fins.h"
 #include "remesh/mesh_smoothing.h"
 #include "remesh/output_model_builder.h"
 #include "remesh/output_points.h"
+#include "remesh/strip_collapse.h"
 #include "voronoi/restricted_voronoi.h"
 #include "voronoi/restriction_domain.h"
+
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <chrono>
@@ -62,6 +66,29 @@ std::vector<double> adaptiveDensity(const Model &model, const RemeshParams &para
     return rho;
 }
 
+double modelArea(const Model &model)
+{
+    double area = 0.0;
+    for (const Surface &s : model.surfaces)
+        for (const Triangle &t : s.triangles)
+            area += 0.5 * (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]).norm();
+    return area;
+}
+
+StripCollapse stripsRemoved(const Model &input, double edgeLength, const RemeshParams &params,
+                            SimplificationLedger &ledger)
+{
+    if (params.stripWidthFactor > 0.0 && edgeLength > 0.0)
+        return removeThinStrips(input, params.stripWidthFactor * edgeLength, ledger);
+    StripCollapse none;
+    none.model = input;
+    return none;
+}
+
+// The mesh-building half on the model without its thin strips.
+RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec3> &sites, const RemeshParams &params,
+                           SimplificationLedger ledger, Progress &progress);
+
 } // namespace
 
 int sitesForEdgeLength(double area, double edgeLength)
@@ -72,12 +99,31 @@ int sitesForEdgeLength(double area, double edgeLength)
     return std::max(4, static_cast<int>(std::lround(n)));
 }
 
+double edgeLengthForSites(double area, int sites)
+{
+    return sites > 0 && area > 0.0 ? std::sqrt(area / (std::sqrt(3.0) / 2.0 * sites)) : 0.0;
+}
+
 RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &sites, const RemeshParams &params,
                              Progress &progress)
 {
-    const auto start = std::chrono::steady_clock::now();
     const Model input = withTopology(inputModel);
+    SimplificationLedger ledger;
+    const StripCollapse collapsed =
+        stripsRemoved(input, edgeLengthForSites(modelArea(input), static_cast<int>(sites.size())), params, ledger);
+    return meshFromSites(collapsed, sites, params, std::move(ledger), progress);
+}
+
+namespace {
+
+RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec3> &sites, const RemeshParams &params,
+                           SimplificationLedger ledger, Progress &progress)
+{
+    const auto start = std::chrono::steady_clock::now();
+    const Model &input = collapsed.model;
     RemeshResult result;
+    result.ledger = std::move(ledger);
+    result.strips = collapsed.removed;
     result.sites = sites;
     result.siteCount = static_cast<int>(sites.size());
     const RestrictionDomain domain = makeRestrictionDomain(input);
@@ -94,9 +140,11 @@ RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &s
     mesh.triangles = buildDualFaces(domain, rvd, components, points, result.faces);
     progress.tick(0.5, "post-processing");
     EditableSoup soup(std::move(mesh));
+    const int fins = removeLineFins(soup);
     const CleanupCounts v3 = removeValence3Vertices(soup, input, result.ledger);
     result.cleanup = removeDegenerateTriangles(soup, input, params.cleanup, result.ledger);
     result.cleanup.valence3 = v3.valence3;
+    result.cleanup.lineFins = fins;
     result.duplicates = separateDuplicateTriangles(soup, input, result.ledger);
     if (params.flips)
         result.cleanup.flips += improveByFlips(soup);
@@ -118,6 +166,8 @@ RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &s
     return result;
 }
 
+} // namespace
+
 RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Progress &progress)
 {
     const auto start = std::chrono::steady_clock::now();
@@ -126,9 +176,13 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         throw InputError("remesh: the number of iterations cannot be negative");
     if (params.dResolution < 0.0)
         throw InputError("remesh: d_resolution cannot be negative");
-    const RestrictionDomain domain =
-        makeRestrictionDomain(input, params.adaptive ? adaptiveDensity(input, params) : std::vector<double>{});
-    const int n = params.sites > 0 ? params.sites : sitesForEdgeLength(domain.surfaceArea(), params.edgeLength);
+    const double area = modelArea(input);
+    const int n = params.sites > 0 ? params.sites : sitesForEdgeLength(area, params.edgeLength);
+    SimplificationLedger ledger;
+    const StripCollapse collapsed = stripsRemoved(input, edgeLengthForSites(area, n), params, ledger);
+    const Model &simplified = collapsed.model;
+    const RestrictionDomain domain = makeRestrictionDomain(
+        simplified, params.adaptive ? adaptiveDensity(simplified, params) : std::vector<double>{});
     CvtParams cvt;
     cvt.iterations = params.iterations;
     cvt.alpha = params.boundaryWeight;
@@ -136,7 +190,7 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         params.iterations > 0 ? optimizeCvt(domain, sampleSurfaces(domain, n, params.seed), cvt, progress) : CvtResult{};
     const std::vector<Vec3> sites = params.iterations > 0 ? optimised.sites : sampleSurfaces(domain, n, params.seed);
     const double sampling = secondsSince(start);
-    RemeshResult result = remeshWithSites(input, sites, params, progress);
+    RemeshResult result = meshFromSites(collapsed, sites, params, std::move(ledger), progress);
     result.energy = optimised.energy;
     result.timings.samplingSeconds = sampling;
     result.timings.totalSeconds = secondsSince(start);

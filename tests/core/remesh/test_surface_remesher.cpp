@@ -317,6 +317,48 @@ private slots:
         QVERIFY(checkValidity(kept.model).valid);
         QVERIFY(checkValidity(merged.model).valid);
     }
+
+    // Four sheets around one line (a folded horizon crossing a 45° fault with no throw): the
+    // dual gave fins along the line, duplicated in two sheets (line_fins.h). Without their
+    // removal none of these runs was valid.
+    void horizonCrossingDippingFaultStaysValid()
+    {
+        LayeredBoxParams bp;
+        bp.size = Vec3(1000, 600, 400);
+        bp.horizons = 2;
+        bp.fault = true;
+        bp.faultThrow = 0;
+        bp.faultDipDegrees = 45;
+        bp.foldAmplitude = 30;
+        bp.edgeLength = 40;
+        const Model input = recoverTopology(layeredBox(bp));
+        QVERIFY(checkValidity(input).valid);
+        auto crossingLines = [](const Model &m) {
+            int n = 0;
+            for (const Line &l : m.lines) {
+                int horizons = 0, faults = 0;
+                for (int s : l.surfaces) {
+                    horizons += m.surfaces[s].type == FeatureType::Horizon ? 1 : 0;
+                    faults += m.surfaces[s].type == FeatureType::Fault ? 1 : 0;
+                }
+                n += horizons == 2 && faults == 2 ? 1 : 0;
+            }
+            return n;
+        };
+        QCOMPARE(crossingLines(input), 2);
+        for (const auto &[edge, seed] : {std::pair{150.0, 2u}, std::pair{90.0, 1u}, std::pair{60.0, 1u}}) {
+            RemeshParams params;
+            params.edgeLength = edge;
+            params.iterations = 40;
+            params.seed = seed;
+            const RemeshResult result = remeshModel(input, params);
+            const ValidityReport validity = checkValidity(result.model);
+            QVERIFY2(validity.valid, qPrintable(QStringLiteral("edge %1: %2").arg(edge).arg(
+                                         validity.problems.empty() ? QString() : QString::fromStdString(validity.problems.front().message))));
+            QVERIFY(result.cleanup.lineFins > 0);
+            QVERIFY(crossingLines(result.model) >= 2); // a corner may cut one
+        }
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSurfaceRemesher)

@@ -1,0 +1,117 @@
+// Thin strips found and removed whole before remeshing (thin_strips.h, strip_collapse.h).
+#include "model/model_counts.h"
+#include "model/region_volume.h"
+#include "model/synthetic_models.h"
+#include "model/topology.h"
+#include "model/validity.h"
+#include "remesh/strip_collapse.h"
+#include "remesh/surface_remesher.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <numeric>
+
+using namespace stratamesh;
+
+namespace {
+
+Model faultedBox(double faultThrow)
+{
+    LayeredBoxParams bp;
+    bp.size = Vec3(1000, 600, 400);
+    bp.horizons = 1;
+    bp.fault = true;
+    bp.faultThrow = faultThrow;
+    bp.edgeLength = 40;
+    return recoverTopology(layeredBox(bp));
+}
+
+// Lines where the horizon's two fault blocks meet the fault together (the throw is cancelled).
+int joinedLines(const Model &m)
+{
+    int n = 0;
+    for (const Line &l : m.lines) {
+        int horizons = 0, faults = 0;
+        for (int s : l.surfaces) {
+            horizons += m.surfaces[s].type == FeatureType::Horizon ? 1 : 0;
+            faults += m.surfaces[s].type == FeatureType::Fault ? 1 : 0;
+        }
+        n += horizons >= 2 && faults >= 1 ? 1 : 0;
+    }
+    return n;
+}
+
+} // namespace
+
+class TestThinStrips : public QObject {
+    Q_OBJECT
+private slots:
+    void stripOfSmallThrowFoundBelowItsWidthOnly()
+    {
+        const Model input = faultedBox(15);
+        const std::vector<ThinStrip> strips = findThinStrips(input, 40);
+        QCOMPARE(strips.size(), std::size_t(1));
+        const ThinStrip &s = strips.front();
+        QCOMPARE(input.surfaces[s.surface].type, FeatureType::Fault);
+        QVERIFY2(s.width >= 15 - 1e-6 && s.width < 40, qPrintable(QString::number(s.width)));
+        QVERIFY(s.length > 500);
+        for (int l : s.lines)
+            QVERIFY(std::find(input.surfaces[s.surface].lines.begin(), input.surfaces[s.surface].lines.end(), l) !=
+                    input.surfaces[s.surface].lines.end());
+        QVERIFY(findThinStrips(input, 10).empty());
+        QVERIFY(findThinStrips(faultedBox(80), 40).empty());
+    }
+
+    void removedStripLeavesValidModelWithSameVolumes()
+    {
+        const Model input = faultedBox(15);
+        QVERIFY(checkValidity(input).valid);
+        QCOMPARE(joinedLines(input), 0);
+        SimplificationLedger ledger;
+        const StripCollapse collapsed = removeThinStrips(input, 40, ledger);
+        QCOMPARE(collapsed.removed.size(), std::size_t(1));
+        const Model &out = collapsed.model;
+        QCOMPARE(out.surfaces.size(), input.surfaces.size() - 1);
+        QCOMPARE(out.regions.size(), input.regions.size());
+        const ValidityReport validity = checkValidity(out);
+        QVERIFY2(validity.valid, validity.problems.empty() ? "" : validity.problems.front().message.c_str());
+        QVERIFY(joinedLines(out) >= 1);
+        // The strip had no volume of its own: the regions still fill the box.
+        const std::vector<double> volumes = regionVolumes(out);
+        for (double v : volumes)
+            QVERIFY(v > 0);
+        const double total = std::accumulate(volumes.begin(), volumes.end(), 0.0);
+        QVERIFY2(std::abs(total - boxEnclosedVolume(out)) <= 1e-9 * total, qPrintable(QString::number(total)));
+        // Names kept, the strip's gone, and the ledger says so.
+        const std::string gone = input.surfaces[collapsed.removed.front().surface].name;
+        for (std::size_t s = 0; s < out.surfaces.size(); ++s) {
+            QVERIFY(out.surfaces[s].name != gone);
+            QCOMPARE(out.surfaces[s].name, input.surfaces[collapsed.surfaceToInput[s]].name);
+        }
+        QCOMPARE(countKind(ledger, LedgerKind::SurfaceLost), 1);
+        QCOMPARE(ledger.size(), std::size_t(2));
+        for (const LedgerRecord &r : ledger)
+            QCOMPARE(r.inputs.front().name, gone);
+    }
+
+    void remeshWithStripFactorCancelsTheThrow()
+    {
+        const Model input = faultedBox(15);
+        RemeshParams params;
+        params.edgeLength = 90;
+        params.iterations = 40;
+        params.stripWidthFactor = 0.3; // 27 m: the 15 m strip goes
+        const RemeshResult result = remeshModel(input, params);
+        QCOMPARE(result.strips.size(), std::size_t(1));
+        const ValidityReport validity = checkValidity(result.model);
+        QVERIFY2(validity.valid, validity.problems.empty() ? "" : validity.problems.front().message.c_str());
+        QVERIFY(joinedLines(result.model) >= 1);
+        QCOMPARE(countEntities(result.model).all.surfaces, countEntities(input).all.surfaces - 1);
+        params.stripWidthFactor = 0.1; // 9 m: kept
+        QVERIFY(remeshModel(input, params).strips.empty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestThinStrips)
+#include "test_thin_strips.moc"
