@@ -119,6 +119,21 @@ long long exactPredicateCount() { return g_exactCount.load(std::memory_order_rel
 
 int sideOfInputVertex(const Vec3 &q, const Vec3 &pi, int i, const Vec3 &pl, int l)
 {
+    // Static filter first (the owner walks call this for every point): the same expression in
+    // plain doubles, with the bound the Fd filter would give it (6 roundings on its longest
+    // path: 1.02·6·u·m ≤ 6.2·u·m for m computed within a few u).
+    {
+        const Vec3 sa = pi.cwiseAbs() + pl.cwiseAbs();
+        const double magnitude = sa.dot(2.0 * q.cwiseAbs() + sa);
+        const double value = (pi - pl).dot((q - pi) + (q - pl));
+        if (magnitude > 1e-250 && magnitude < 1e250) {
+            const double bound = 6.2 * 0x1p-53 * magnitude;
+            if (value > bound)
+                return 1;
+            if (value < -bound)
+                return -1;
+        }
+    }
     const int s = certainSign(powerDifference(point<Fd>(q), point<Fd>(pi), point<Fd>(pl)));
     if (s != 0)
         return s;
