@@ -121,19 +121,36 @@ CellClipper::CellClipper(const RestrictionDomain &domain, const VoronoiNeighbour
     m_marks.assign(delaunay.siteCount(), 0);
 }
 
+namespace {
+
+// The input triangle in the site's frame; r2 and largestError receive the largest |x'|² and
+// the largest position error over its corners. Inlined in clipTriangle (once per triangle–site
+// pair, its call and a second pass over the corners cost as much as the corners themselves).
+inline __attribute__((always_inline)) void siteFrameTriangle(const Triangle &tri, const std::vector<Vec3> &points,
+                                                             const Vec3 &pi, ClipPolygon &polygon, double &r2,
+                                                             double &largestError)
+{
+    polygon.resize(3);
+    ClipVertex *const v = polygon.data();
+    r2 = 0;
+    largestError = 0;
+    for (int c = 0; c < 3; ++c) {
+        v[c].position = points[tri[c]] - pi;
+        v[c].error = 2 * kUnit * v[c].position.lpNorm<1>(); // one rounded subtraction per coordinate (|·|₂ ≤ |·|₁)
+        v[c].u = c == 1 ? 1.0 : 0.0;
+        v[c].v = c == 2 ? 1.0 : 0.0;
+        v[c].out = inputEdgeSupport(c);
+        r2 = std::max(r2, v[c].position.squaredNorm());
+        largestError = std::max(largestError, v[c].error);
+    }
+}
+
+} // namespace
+
 void CellClipper::wholeTriangle(int t, int site, ClipPolygon &polygon) const
 {
-    const Triangle &tri = m_domain.triangles[t];
-    const Vec3 &pi = m_delaunay.site(site);
-    polygon.resize(3);
-    for (int c = 0; c < 3; ++c) {
-        ClipVertex &v = polygon[c];
-        v.position = m_domain.points[tri[c]] - pi;
-        v.error = 2 * kUnit * v.position.lpNorm<1>(); // one rounded subtraction per coordinate (|·|₂ ≤ |·|₁)
-        v.u = c == 1 ? 1.0 : 0.0;
-        v.v = c == 2 ? 1.0 : 0.0;
-        v.out = inputEdgeSupport(c);
-    }
+    double r2 = 0, largestError = 0;
+    siteFrameTriangle(m_domain.triangles[t], m_domain.points, m_delaunay.site(site), polygon, r2, largestError);
 }
 
 ClipVertex CellClipper::symbolicCut(int t, int site, int support, int l) const
@@ -180,22 +197,16 @@ int CellClipper::exactSide(int t, int site, const ClipPolygon &polygon, int k, i
 
 void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
 {
-    wholeTriangle(t, site, polygon);
     const Vec3 &pi = m_delaunay.site(site);
     // Largest |x'| and largest position error over the polygon, and the security radius they
     // give (updated with them: it is compared for every bisector).
     double radius = 0, largestError = 0, reach = 0;
-    const auto measure = [&] {
+    {
         double r2 = 0;
-        largestError = 0;
-        for (const ClipVertex &v : polygon) {
-            r2 = std::max(r2, v.position.squaredNorm());
-            largestError = std::max(largestError, v.error);
-        }
+        siteFrameTriangle(m_domain.triangles[t], m_domain.points, pi, polygon, r2, largestError);
         radius = std::sqrt(r2) * (1 + 4 * kUnit);
         reach = 2.0 * (radius + largestError) * (1.0 + 1e-12);
-    };
-    measure();
+    }
     // Loaded once here rather than through the members for every bisector.
     const Vec3 *const siteData = m_delaunay.sites().data();
     int *sides = m_sides.data();
@@ -232,7 +243,7 @@ void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
             polygon.clear();
             return false;
         }
-        // The clipped polygon is built in m_next, measured on the way (same maxima as measure()).
+        // The clipped polygon is built in m_next, measured on the way (same maxima as siteFrameTriangle).
         m_next.clear();
         m_next.reserve(n + 1); // a convex polygon cut by a plane gains at most one vertex
         double r2 = 0, worst = 0;
