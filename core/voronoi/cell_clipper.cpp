@@ -140,7 +140,8 @@ inline __attribute__((always_inline)) void siteFrameTriangle(const Triangle &tri
         v[c].u = c == 1 ? 1.0 : 0.0;
         v[c].v = c == 2 ? 1.0 : 0.0;
         v[c].out = inputEdgeSupport(c);
-        r2 = std::max(r2, v[c].position.squaredNorm());
+        v[c].norm2 = v[c].position.squaredNorm();
+        r2 = std::max(r2, v[c].norm2);
         largestError = std::max(largestError, v[c].error);
     }
 }
@@ -252,7 +253,7 @@ void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
             const ClipVertex &a = poly[k];
             if (sides[k] > 0) {
                 m_next.append() = a;
-                r2 = std::max(r2, a.position.squaredNorm());
+                r2 = std::max(r2, a.norm2);
                 worst = std::max(worst, a.error);
             }
             if (sides[k] == sides[k1])
@@ -278,7 +279,8 @@ void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
             // Leaving the cell, the polygon follows the bisector; entering, it resumes the support
             // that was cut.
             x.out = sides[k] > 0 ? l : a.out;
-            r2 = std::max(r2, x.position.squaredNorm());
+            x.norm2 = x.position.squaredNorm();
+            r2 = std::max(r2, x.norm2);
             worst = std::max(worst, x.error);
         }
         polygon.swap(m_next);

@@ -37,6 +37,7 @@ struct ClipVertex {
     double error = 0;   // proven bound on |position − exact point|
     double u = 0, v = 0; // barycentric weights of corners 1 and 2 of the input triangle
     int out = 0;        // support of the edge from this vertex to the next one
+    double norm2 = 0;   // |position|², kept for the security radius (set by the clipper)
 };
 
 // A clipped polygon: storage that only grows, so that the clipping loops write vertices after
