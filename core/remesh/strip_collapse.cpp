@@ -1,12 +1,14 @@
 #include "remesh/strip_collapse.h"
 
 #include "model/topology.h"
+#include "model/validity.h"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <unordered_map>
 
@@ -116,15 +118,6 @@ MergedLines mergeLines(const Model &m, const std::vector<int> &a, std::vector<in
     merged.endOf[a.front()] = merged.endOf[b.front()] = 0;
     merged.endOf[a.back()] = merged.endOf[b.back()] = merged.chainOfA.back();
     return merged;
-}
-
-
-// A triangle too thin (smallest angle under about 0.006°) for its orientation to mean anything:
-// the input has such slivers along lines, some turned over.
-bool isFlat(const Vec3 &normal, const Vec3 &a, const Vec3 &b, const Vec3 &c)
-{
-    const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-    return normal.norm() <= 1e-4 * longest;
 }
 
 
@@ -241,6 +234,68 @@ bool refillStar(const Surface &in, const std::vector<int> &global, const std::ve
     return true;
 }
 
+
+// Input slivers with three corners on a line (a kink of it) are no longer flat once the line has
+// moved, and can cut the surfaces across it: each is dropped and the edge it closed split at its
+// middle corner, as line_fins.h does in the output.
+template <class IsChain>
+void unfoldAlongLine(Surface &surface, std::vector<Vec3> &before, const IsChain &isChain)
+{
+    for (int pass = 0; pass < 4; ++pass) {
+        std::map<std::pair<int, int>, int> directed;
+        for (std::size_t k = 0; k < surface.triangles.size(); ++k)
+            for (int e = 0; e < 3; ++e)
+                directed[{surface.triangles[k][e], surface.triangles[k][(e + 1) % 3]}] = static_cast<int>(k);
+        std::vector<char> dead(surface.triangles.size(), 0);
+        std::vector<Triangle> added;
+        std::vector<Vec3> addedBefore;
+        for (std::size_t k = 0; k < surface.triangles.size(); ++k) {
+            const Triangle t = surface.triangles[k];
+            if (dead[k] || !isChain(t[0]) || !isChain(t[1]) || !isChain(t[2]))
+                continue;
+            int mid = 0;
+            double widest = 2.0;
+            for (int i = 0; i < 3; ++i) {
+                const Vec3 &m = surface.vertices[t[i]];
+                const Vec3 u = surface.vertices[t[(i + 1) % 3]] - m, w = surface.vertices[t[(i + 2) % 3]] - m;
+                const double c = u.norm() > 0 && w.norm() > 0 ? u.dot(w) / (u.norm() * w.norm()) : 1.0;
+                if (c < widest) {
+                    widest = c;
+                    mid = i;
+                }
+            }
+            const int m = t[mid], p = t[(mid + 1) % 3], q = t[(mid + 2) % 3];
+            auto across = directed.find({q, p});
+            if (across == directed.end() || dead[across->second])
+                continue;
+            const Triangle other = surface.triangles[across->second];
+            int x = -1;
+            for (int v : other)
+                if (v != p && v != q)
+                    x = v;
+            if (x == m || isChain(x) || directed.count({m, x}) || directed.count({x, m}))
+                continue;
+            dead[k] = dead[across->second] = 1;
+            added.push_back({q, m, x});
+            added.push_back({m, p, x});
+            addedBefore.insert(addedBefore.end(), 2, before[across->second]);
+        }
+        if (added.empty())
+            return;
+        std::vector<Triangle> kept;
+        std::vector<Vec3> keptBefore;
+        for (std::size_t k = 0; k < surface.triangles.size(); ++k)
+            if (!dead[k]) {
+                kept.push_back(surface.triangles[k]);
+                keptBefore.push_back(before[k]);
+            }
+        kept.insert(kept.end(), added.begin(), added.end());
+        keptBefore.insert(keptBefore.end(), addedBefore.begin(), addedBefore.end());
+        surface.triangles = std::move(kept);
+        before = std::move(keptBefore);
+    }
+}
+
 // Collapses one strip of `m`; false (m unchanged) when it cannot be done cleanly.
 bool collapseStrip(Model &m, const ThinStrip &strip)
 {
@@ -329,7 +384,13 @@ bool collapseStrip(Model &m, const ThinStrip &strip)
         auto isChain = [&](int id) {
             return std::any_of(chainLocal.begin(), chainLocal.end(), [id](const auto &kv) { return kv.second == id; });
         };
-        std::vector<Vec3> before; // normal of the input triangle each output one comes from
+        std::vector<Vec3> vertexNormals(in.vertices.size(), Vec3::Zero()); // area-weighted
+        for (const Triangle &t : in.triangles) {
+            const Vec3 n = (in.vertices[t[1]] - in.vertices[t[0]]).cross(in.vertices[t[2]] - in.vertices[t[0]]);
+            for (int v : t)
+                vertexNormals[v] += n;
+        }
+        std::vector<Vec3> before; // the surface's normal where each output triangle comes from
         const int last = static_cast<int>(merged.chain.size()) - 1;
         std::vector<Triangle> star; // triangles around an end: filled again once the end is a point
         for (const Triangle &t : in.triangles) {
@@ -342,9 +403,9 @@ bool collapseStrip(Model &m, const ThinStrip &strip)
                 star.push_back(t);
                 continue;
             }
-            Vec3 normal = (in.vertices[t[1]] - in.vertices[t[0]]).cross(in.vertices[t[2]] - in.vertices[t[0]]);
-            if (isFlat(normal, in.vertices[t[0]], in.vertices[t[1]], in.vertices[t[2]]))
-                normal = Vec3::Zero(); // flat in the input already: nothing to keep
+            // The surface's way round here: input slivers along lines are sometimes turned over
+            // (their own normal says nothing), the area around their corners is not.
+            const Vec3 normal = vertexNormals[t[0]] + vertexNormals[t[1]] + vertexNormals[t[2]];
             int split = -1;
             std::vector<int> between;
             for (int e = 0; e < 3; ++e) {
@@ -384,10 +445,13 @@ bool collapseStrip(Model &m, const ThinStrip &strip)
         }
         if (!star.empty() && !refillStar(in, global, star, local, inserted, chainVertex, isChain, surface, before))
             return false;
+        unfoldAlongLine(surface, before, isChain);
         for (std::size_t k = 0; k < surface.triangles.size(); ++k) {
             const Triangle &t = surface.triangles[k];
             const Vec3 n = (surface.vertices[t[1]] - surface.vertices[t[0]]).cross(surface.vertices[t[2]] - surface.vertices[t[0]]);
-            if (!before[k].isZero() && !(n.dot(before[k]) > 0.0))
+            // Slivers along the line (three corners on it) were flat before and stay so.
+            const bool alongLine = isChain(t[0]) && isChain(t[1]) && isChain(t[2]);
+            if (!alongLine && !before[k].isZero() && !(n.dot(before[k]) > 0.0))
                 return false; // folded or flat: keep the strip rather than break the surface
         }
         // Drop the local vertices no triangle uses any more (the ends that shrank).
@@ -433,6 +497,7 @@ StripCollapse removeThinStrips(const Model &input, double maxWidth, Simplificati
     for (std::size_t s = 0; s < input.surfaces.size(); ++s)
         result.surfaceToInput[s] = static_cast<int>(s);
     std::vector<char> refused(input.surfaces.size(), 0); // by input surface
+    std::optional<std::map<std::string, std::size_t>> problems; // validity counts of result.model
     for (;;) {
         const std::vector<ThinStrip> strips = findThinStrips(result.model, maxWidth);
         auto next = std::find_if(strips.begin(), strips.end(),
@@ -446,6 +511,20 @@ StripCollapse removeThinStrips(const Model &input, double maxWidth, Simplificati
             refused[inputSurface] = 1;
             continue;
         }
+        // Exact checks decide, not the construction: a removal that adds any problem (two
+        // surfaces crossing where a line was bent, say) is undone.
+        if (!problems)
+            problems = checkValidity(result.model).counts;
+        const std::map<std::string, std::size_t> after = checkValidity(model).counts;
+        const bool worse = std::any_of(after.begin(), after.end(), [&](const auto &check) {
+            auto before = problems->find(check.first);
+            return check.second > (before == problems->end() ? 0 : before->second);
+        });
+        if (worse) {
+            refused[inputSurface] = 1;
+            continue;
+        }
+        problems = after;
         const Surface &gone = result.model.surfaces[strip.surface];
         double area = 0.0;
         Vec3 centre = Vec3::Zero();

@@ -24,7 +24,7 @@ struct StripCollapse {
 // Removes the thin strips of `input` (with topology) narrower than `maxWidth`, one at a time
 // (removing one can make a neighbour a strip of merged lines), and records each in the ledger:
 // a close_feature_merge of its two lines and a surface_lost. A strip whose removal would join a
-// surface to itself, or leave a triangle degenerate, is kept.
+// surface to itself, fold a triangle, or add any problem to the validity report, is kept.
 StripCollapse removeThinStrips(const Model &input, double maxWidth, SimplificationLedger &ledger);
 
 } // namespace stratamesh
