@@ -24,8 +24,9 @@ struct PolygonIntegrals {
     }
 };
 
-// Integrals of a clipped polygon about its site (ClipVertex positions are relative to it);
-// rho holds the density at the input triangle's corners, or is null for ρ = 1.
+// Integrals of a clipped polygon about its site (ClipVertex positions are relative to it,
+// norm2 their squared norms as the clipper sets them); rho holds the density at the input
+// triangle's corners, or is null for ρ = 1.
 inline PolygonIntegrals integratePolygon(const ClipPolygon &polygon, const double *rho)
 {
     PolygonIntegrals r;
@@ -41,7 +42,7 @@ inline PolygonIntegrals integratePolygon(const ClipPolygon &polygon, const doubl
             const Vec3 sum = x0 + x1 + x2;
             r.area += s;
             r.firstMoment += s / 3.0 * sum;
-            r.energy += s / 12.0 * (sum.squaredNorm() + x0.squaredNorm() + x1.squaredNorm() + x2.squaredNorm());
+            r.energy += s / 12.0 * (sum.squaredNorm() + polygon[0].norm2 + polygon[k].norm2 + polygon[k + 1].norm2);
         }
         r.mass = r.area;
         r.massMoment = r.firstMoment;
@@ -56,7 +57,7 @@ inline PolygonIntegrals integratePolygon(const ClipPolygon &polygon, const doubl
         const double p[3] = {r0, density(polygon[k]), density(polygon[k + 1])};
         const double s = 0.5 * (X[1] - X[0]).cross(X[2] - X[0]).norm();
         const Vec3 sum = X[0] + X[1] + X[2];
-        const double sq[3] = {X[0].squaredNorm(), X[1].squaredNorm(), X[2].squaredNorm()};
+        const double sq[3] = {polygon[0].norm2, polygon[k].norm2, polygon[k + 1].norm2};
         const double dots[3] = {X[1].dot(X[2]), X[0].dot(X[2]), X[0].dot(X[1])}; // pair opposite m
         r.area += s;
         r.firstMoment += s / 3.0 * sum;
