@@ -187,7 +187,8 @@ void VoronoiNeighbours::buildNearest(const NeighbourHints *hints)
             for (std::size_t a = 0; a < found; ++a) {
                 if (ids[a] == i)
                     continue;
-                const double d = (m_sites[ids[a]] - m_sites[i]).norm();
+                // d2 holds |p_j − p_i|² summed as Eigen's squaredNorm sums it: the same bits.
+                const double d = std::sqrt(d2[a]);
                 if (static_cast<int>(sorted.size()) < k - 1)
                     sorted.emplace_back(d, ids[a]);
                 farthest = std::max(farthest, d);
