@@ -158,49 +158,57 @@ void VoronoiNeighbours::buildNearest(const NeighbourHints *hints)
     tbb::parallel_for(tbb::blocked_range<int>(0, n, 512), [&](const tbb::blocked_range<int> &r) {
         std::vector<int> ids(k);
         std::vector<double> d2(k);
-        std::vector<std::pair<double, int>> sorted, guesses;
-        sorted.reserve(k);
+        // Plain buffers indexed by hand: the per-site bookkeeping around the search cost as much
+        // as a third of the search itself through push_back/erase.
+        std::vector<std::pair<double, int>> sortedBuffer(k), guesses(1);
+        std::pair<double, int> *const sorted = sortedBuffer.data();
         std::vector<int> marks(n, -1);
         for (int position = r.begin(); position < r.end(); ++position) {
             const int i = order[position];
             const double query[3] = {m_sites[i].x(), m_sites[i].y(), m_sites[i].z()};
-            guesses.clear();
-            guesses.emplace_back(0.0, i);
-            if (useHints)
-                for (int h = hints->offsets[i]; h < hints->offsets[i + 1]; ++h) {
-                    const int j = hints->neighbours[h];
-                    if (j >= 0 && j < n && j != i)
-                        guesses.emplace_back(squaredDistance(m_sites[j], m_sites[i]), j);
-                }
+            const int hintCount = useHints ? hints->offsets[i + 1] - hints->offsets[i] : 0;
+            if (static_cast<int>(guesses.size()) < hintCount + 1)
+                guesses.resize(hintCount + 1);
+            std::pair<double, int> *const g = guesses.data();
+            int count = 0;
+            g[count++] = {0.0, i};
+            for (int h = 0; h < hintCount; ++h) {
+                const int j = hints->neighbours[hints->offsets[i] + h];
+                if (j >= 0 && j < n && j != i)
+                    g[count++] = {squaredDistance(m_sites[j], m_sites[i]), j};
+            }
             // The hints are the previous list, sorted by the previous distances: nearly sorted,
             // which an insertion sort handles in about one comparison per guess.
-            for (std::size_t a = 1; a < guesses.size(); ++a)
-                for (std::size_t b = a; b > 0 && guesses[b] < guesses[b - 1]; --b)
-                    std::swap(guesses[b], guesses[b - 1]);
-            guesses.erase(std::unique(guesses.begin(), guesses.end()), guesses.end());
+            for (int a = 1; a < count; ++a)
+                for (int b = a; b > 0 && g[b] < g[b - 1]; --b)
+                    std::swap(g[b], g[b - 1]);
+            int distinct = count > 0 ? 1 : 0; // as std::unique
+            for (int a = 1; a < count; ++a)
+                if (!(g[a] == g[distinct - 1]))
+                    g[distinct++] = g[a];
             SeededKnn result(k, ids.data(), d2.data(), marks.data(), i);
-            result.seed(guesses.data(), static_cast<int>(guesses.size()));
+            result.seed(g, distinct);
             tree.index->findNeighbors(result, query, nanoflann::SearchParams());
             const std::size_t found = result.size();
-            sorted.clear();
+            int listed = 0;
             double farthest = 0;
             for (std::size_t a = 0; a < found; ++a) {
                 if (ids[a] == i)
                     continue;
                 // d2 holds |p_j − p_i|² summed as Eigen's squaredNorm sums it: the same bits.
                 const double d = std::sqrt(d2[a]);
-                if (static_cast<int>(sorted.size()) < k - 1)
-                    sorted.emplace_back(d, ids[a]);
+                if (listed < k - 1)
+                    sorted[listed++] = {d, ids[a]};
                 farthest = std::max(farthest, d);
-                if (m_sites[ids[a]] == m_sites[i] && ids[a] < i)
+                if (d2[a] == 0 && m_sites[ids[a]] == m_sites[i] && ids[a] < i)
                     m_hidden[i] = 1; // a lower index owns this point
             }
             // Found in squared-distance order: (distance, index) order is almost the same.
-            for (std::size_t a = 1; a < sorted.size(); ++a)
-                for (std::size_t b = a; b > 0 && sorted[b] < sorted[b - 1]; --b)
+            for (int a = 1; a < listed; ++a)
+                for (int b = a; b > 0 && sorted[b] < sorted[b - 1]; --b)
                     std::swap(sorted[b], sorted[b - 1]);
             const std::size_t base = static_cast<std::size_t>(i) * (k - 1);
-            for (std::size_t a = 0; a < sorted.size(); ++a) {
+            for (int a = 0; a < listed; ++a) {
                 m_neighbours[base + a] = sorted[a].second;
                 m_distances[base + a] = sorted[a].first;
             }
