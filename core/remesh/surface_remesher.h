@@ -28,9 +28,9 @@ struct RemeshParams {
     double dResolution = 0.0; // Alg 4.2 step 4; 0 disables the merge of close features
     bool mergeAllExtraPoints = false; // Alg 4.2 step 3 as in the thesis (see output_points.h)
     // Strips narrower than this fraction of the resolution edge length are removed whole before
-    // remeshing (strip_collapse.h); 0 keeps them. Off by default: on modelA2 (0.3) it removes
-    // two 44 m fault strips but the remesh is not valid yet (see the note on issue 4).
-    double stripWidthFactor = 0.0;
+    // remeshing (strip_collapse.h); 0 keeps them. A strip of width w holds one row of triangles of
+    // base e with base angles atan(2w/e): 39° at 0.4, so narrower strips would only give slivers.
+    double stripWidthFactor = 0.4;
     int iterations = 100;    // CVT iterations (thesis: 100)
     double boundaryWeight = 0.2; // α of F = (1 − α) F_CVT + α F_B (thesis §4.3.2)
     unsigned seed = 1;       // initial random sampling

@@ -2,7 +2,8 @@
 // valid model (sealed, conformal, no intersecting triangles) keeping the input's surface names,
 // and at ≥ 5000 sites its triangles are near-equilateral and it stays close to the input.
 // The full matrix (1000, 5000, 10000 sites) runs when STRATAMESH_FULL_REMESH_TESTS is set
-// (label slow); otherwise 1000 sites for each model and 5000 for modelA5.
+// (label slow); otherwise 1000 sites for each model, 5000 for modelA2 and modelA5, and 10000 for
+// modelA2 (its thin fault strips made it the hard case).
 #include "remesh/surface_remesher.h"
 
 #include "io/model_reader.h"
@@ -26,7 +27,8 @@ private slots:
         const bool full = qEnvironmentVariableIsSet("STRATAMESH_FULL_REMESH_TESTS");
         for (const char *m : {"modelA1", "modelA2", "modelA5"})
             for (int sites : {1000, 5000, 10000})
-                if (full || sites == 1000 || (sites == 5000 && QLatin1String(m) == QLatin1String("modelA5")))
+                if (full || sites == 1000 || (sites == 5000 && QLatin1String(m) != QLatin1String("modelA1")) ||
+                    (sites == 10000 && QLatin1String(m) == QLatin1String("modelA2")))
                     QTest::newRow(qPrintable(QStringLiteral("%1-%2").arg(m).arg(sites))) << QString(m) << sites;
     }
 
@@ -57,14 +59,13 @@ private slots:
         QVERIFY(std::abs(stats.area - computeMeshStatistics(input).area) < 0.01 * stats.area);
         if (sites < 5000)
             return;
-        // modelA2's fault throws (35 to 125 m) are far below the 5000-site resolution (~500 m
-        // edges): they are cancelled, which the Hausdorff distance measures.
-        if (model == QLatin1String("modelA2"))
-            QEXPECT_FAIL("", "modelA2: throws below the resolution are cancelled (see the ledger)", Continue);
+        // modelA2 at 5000 sites (~500 m edges): its three 44 m strips and two of its ~160 m ones
+        // on the faults are removed whole, two more (108 and 134 m) are kept, and the thin box
+        // pieces around them keep 2.7 % of the triangles under 30°.
+        if (model == QLatin1String("modelA2") && sites == 5000)
+            QEXPECT_FAIL("", "modelA2 at 5000 sites: 2.7 % of triangles under 30° (see the note on issue 4)", Continue);
         QVERIFY2(stats.pctTrianglesAngleBelow30 <= 2.0, qPrintable(QString::number(stats.pctTrianglesAngleBelow30)));
         QVERIFY2(stats.meanQuality >= 0.85, qPrintable(QString::number(stats.meanQuality)));
-        if (model == QLatin1String("modelA2"))
-            QEXPECT_FAIL("", "modelA2: throws below the resolution are cancelled (see the ledger)", Continue);
         QVERIFY2(hausdorff <= 0.5, qPrintable(QString::number(hausdorff)));
     }
 };

@@ -269,6 +269,7 @@ private slots:
         RemeshParams params;
         params.edgeLength = 90;
         params.iterations = 40;
+        params.stripWidthFactor = 0; // d_resolution alone (test_thin_strips removes whole strips)
 
         // Lines along the fault that both fault blocks of the horizon share.
         auto joinedLines = [](const Model &m) {
