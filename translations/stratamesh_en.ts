@@ -977,6 +977,18 @@ per cell</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source> × edge length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surfaces narrower than this between two long lines (a small fault throw) are removed whole before remeshing, their two lines merged into one; 0 keeps them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove thin s&amp;trips under:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>&amp;Iterations:</source>
         <translation type="unfinished"></translation>
     </message>

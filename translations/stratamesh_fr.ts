@@ -978,6 +978,18 @@ par cellule</translation>
         <translation>&amp;d_resolution :</translation>
     </message>
     <message>
+        <source> × edge length</source>
+        <translation> × longueur d&apos;arête</translation>
+    </message>
+    <message>
+        <source>Surfaces narrower than this between two long lines (a small fault throw) are removed whole before remeshing, their two lines merged into one; 0 keeps them.</source>
+        <translation>Les surfaces plus étroites que cela entre deux longues lignes (un petit rejet de faille) sont supprimées entières avant le remaillage, leurs deux lignes fusionnées en une seule ; 0 les garde.</translation>
+    </message>
+    <message>
+        <source>Remove thin s&amp;trips under:</source>
+        <translation>Supprimer les &amp;bandes fines sous :</translation>
+    </message>
+    <message>
         <source>&amp;Iterations:</source>
         <translation>&amp;Itérations :</translation>
     </message>

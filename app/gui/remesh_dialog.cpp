@@ -31,6 +31,7 @@ RemeshDialog::RemeshDialog(double diagonal, QWidget *parent)
     : QDialog(parent), m_bySites(new QRadioButton(tr("Number of &sites:"), this)),
       m_byLength(new QRadioButton(tr("Target &edge length:"), this)), m_sites(new QSpinBox(this)),
       m_edgeLength(new QDoubleSpinBox(this)), m_dResolution(new QDoubleSpinBox(this)),
+      m_stripFactor(new QDoubleSpinBox(this)),
       m_iterations(new QSpinBox(this)), m_seed(new QSpinBox(this)),
       m_adaptive(new QCheckBox(tr("&Adaptive density (more sites near corners)"), this))
 {
@@ -55,6 +56,14 @@ RemeshDialog::RemeshDialog(double diagonal, QWidget *parent)
     m_dResolution->setSpecialValueText(tr("Off"));
     m_dResolution->setToolTip(tr("Parts of features closer than this distance are merged (thesis Alg. 4.2, "
                                  "step 4); 0 keeps them apart."));
+    m_stripFactor->setDecimals(2);
+    m_stripFactor->setRange(0.0, 1.0);
+    m_stripFactor->setSingleStep(0.05);
+    m_stripFactor->setValue(RemeshParams{}.stripWidthFactor);
+    m_stripFactor->setSpecialValueText(tr("Off"));
+    m_stripFactor->setSuffix(tr(" × edge length"));
+    m_stripFactor->setToolTip(tr("Surfaces narrower than this between two long lines (a small fault throw) are "
+                                 "removed whole before remeshing, their two lines merged into one; 0 keeps them."));
     m_iterations->setRange(0, 100000);
     m_iterations->setValue(100);
     m_iterations->setToolTip(tr("Iterations of the centroidal Voronoi optimisation of the sites (thesis: 100)."));
@@ -73,6 +82,7 @@ RemeshDialog::RemeshDialog(double diagonal, QWidget *parent)
 
     auto *options = new QFormLayout;
     options->addRow(tr("&d_resolution:"), m_dResolution);
+    options->addRow(tr("Remove thin s&trips under:"), m_stripFactor);
     options->addRow(tr("&Iterations:"), m_iterations);
     options->addRow(tr("Ra&ndom seed:"), m_seed);
     options->addRow(m_adaptive);
@@ -99,6 +109,7 @@ RemeshParams RemeshDialog::params() const
     else
         p.edgeLength = m_edgeLength->value();
     p.dResolution = m_dResolution->value();
+    p.stripWidthFactor = m_stripFactor->value();
     p.iterations = m_iterations->value();
     p.seed = unsigned(m_seed->value());
     p.adaptive = m_adaptive->isChecked();
@@ -115,6 +126,7 @@ void RemeshDialog::setParams(const RemeshParams &p)
         m_edgeLength->setValue(p.edgeLength);
     }
     m_dResolution->setValue(p.dResolution);
+    m_stripFactor->setValue(p.stripWidthFactor);
     m_iterations->setValue(p.iterations);
     m_seed->setValue(int(std::min<unsigned>(p.seed, 2147483647u)));
     m_adaptive->setChecked(p.adaptive);

@@ -33,6 +33,7 @@ private:
     QSpinBox *m_sites;
     QDoubleSpinBox *m_edgeLength;
     QDoubleSpinBox *m_dResolution;
+    QDoubleSpinBox *m_stripFactor;
     QSpinBox *m_iterations;
     QSpinBox *m_seed;
     QCheckBox *m_adaptive;

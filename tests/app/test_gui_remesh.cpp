@@ -92,6 +92,13 @@ private slots:
         QCOMPARE(p.dResolution, 0.0);
         QCOMPARE(p.iterations, 100);
         QVERIFY(!p.adaptive);
+        QCOMPARE(p.stripWidthFactor, RemeshParams{}.stripWidthFactor);
+        QVERIFY(p.stripWidthFactor > 0.0);
+        if (qEnvironmentVariableIsSet("STRATAMESH_DIALOG_SHOT")) {
+            dialog.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+            dialog.grab().save(qEnvironmentVariable("STRATAMESH_DIALOG_SHOT"));
+        }
         RemeshParams byLength;
         byLength.sites = 0;
         byLength.edgeLength = 25.0;
@@ -99,6 +106,7 @@ private slots:
         byLength.iterations = 7;
         byLength.seed = 42;
         byLength.adaptive = true;
+        byLength.stripWidthFactor = 0.0;
         dialog.setParams(byLength);
         const RemeshParams q = dialog.params();
         QCOMPARE(q.sites, 0);
@@ -107,6 +115,7 @@ private slots:
         QCOMPARE(q.iterations, 7);
         QCOMPARE(q.seed, 42u);
         QVERIFY(q.adaptive);
+        QCOMPARE(q.stripWidthFactor, 0.0);
     }
 
     // First, while no output exists: a cancel must leave nothing behind.
