@@ -3,9 +3,10 @@
 // Lévy, Caumon & Botella 2014, "Automatic surface remeshing of 3D structural models at specified
 // resolution: A method based on Voronoi diagrams", Computers & Geosciences 62, 103–116).
 //
-//   sites (Alg 4.1) → restricted Voronoi diagram → cell components (Alg 4.3 step 1) → points
-//   (Alg 4.2, merges) → dual faces (Alg 4.3 step 3) → post-processing (§4.4.5, Alg 4.4) →
-//   intersection repair → new model (names kept, lines/corners/regions rebuilt) + ledger.
+//   thin strips removed whole (strip_collapse.h) → sites (Alg 4.1) → restricted Voronoi diagram
+//   → cell components (Alg 4.3 step 1) → points (Alg 4.2, merges) → dual faces (Alg 4.3 step 3)
+//   → fins along lines (line_fins.h) → post-processing (§4.4.5, Alg 4.4) → intersection repair
+//   → new model (names kept, lines/corners/regions rebuilt) + ledger.
 //
 // The input is never changed; every simplification is a ledger record.
 #pragma once
