@@ -487,6 +487,25 @@ bool collapseStrip(Model &m, const ThinStrip &strip)
     return true;
 }
 
+// The two longest boundary lines of a surface of a model with topology.
+std::vector<int> longestLines(const Model &model, int surface)
+{
+    std::vector<std::pair<double, int>> byLength;
+    for (int l : model.surfaces[surface].lines) {
+        double length = 0.0;
+        const std::vector<int> &v = model.lines[l].vertices;
+        for (std::size_t k = 1; k < v.size(); ++k)
+            length += (model.vertices[v[k]] - model.vertices[v[k - 1]]).norm();
+        byLength.emplace_back(length, l);
+    }
+    std::sort(byLength.rbegin(), byLength.rend());
+    std::vector<int> lines;
+    for (std::size_t k = 0; k < byLength.size() && k < 2; ++k)
+        lines.push_back(byLength[k].second);
+    std::sort(lines.begin(), lines.end());
+    return lines;
+}
+
 } // namespace
 
 StripCollapse removeThinStrips(const Model &input, double maxWidth, SimplificationLedger &ledger)
@@ -541,8 +560,11 @@ StripCollapse removeThinStrips(const Model &input, double maxWidth, Simplificati
                                  " m wide, limit " + std::to_string(static_cast<int>(maxWidth + 0.5)) + " m)";
         LedgerRecord merge;
         merge.kind = LedgerKind::CloseFeatureMerge;
-        merge.inputs = {surfaceRef(input, inputSurface), lineRef(result.model, strip.lines[0]),
-                        lineRef(result.model, strip.lines[1])};
+        // The lines are named as in the input: a later strip's lines exist only in the model
+        // with the earlier strips removed, the input surface's two longest lines are the same.
+        merge.inputs = {surfaceRef(input, inputSurface)};
+        for (int l : longestLines(input, inputSurface))
+            merge.inputs.push_back(lineRef(input, l));
         merge.position = centre;
         merge.size = strip.width;
         merge.sizeMeaning = "distance";

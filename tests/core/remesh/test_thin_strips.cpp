@@ -93,6 +93,14 @@ private slots:
         QCOMPARE(ledger.size(), std::size_t(2));
         for (const LedgerRecord &r : ledger)
             QCOMPARE(r.inputs.front().name, gone);
+        // The merge names the strip's two long lines, as the input numbers them.
+        const LedgerRecord &merge = ledger.front().kind == LedgerKind::CloseFeatureMerge ? ledger.front() : ledger.back();
+        QCOMPARE(merge.inputs.size(), std::size_t(3));
+        const std::vector<int> &stripLines = input.surfaces[collapsed.removed.front().surface].lines;
+        for (std::size_t k = 1; k < 3; ++k) {
+            QCOMPARE(merge.inputs[k].kind, EntityKind::Line);
+            QVERIFY(std::find(stripLines.begin(), stripLines.end(), merge.inputs[k].id) != stripLines.end());
+        }
     }
 
     void remeshWithStripFactorCancelsTheThrow()
