@@ -508,7 +508,7 @@ std::vector<int> longestLines(const Model &model, int surface)
 
 } // namespace
 
-StripCollapse removeThinStrips(const Model &input, double maxWidth, SimplificationLedger &ledger)
+StripCollapse removeThinStrips(const Model &input, double maxWidth, SimplificationLedger &ledger, Progress &progress)
 {
     StripCollapse result;
     result.model = input;
@@ -518,6 +518,7 @@ StripCollapse removeThinStrips(const Model &input, double maxWidth, Simplificati
     std::vector<char> refused(input.surfaces.size(), 0); // by input surface
     std::optional<std::map<std::string, std::size_t>> problems; // validity counts of result.model
     for (;;) {
+        progress.tick(0.0, "thin strips");
         const std::vector<ThinStrip> strips = findThinStrips(result.model, maxWidth);
         auto next = std::find_if(strips.begin(), strips.end(),
                                  [&](const ThinStrip &s) { return !refused[result.surfaceToInput[s.surface]]; });

@@ -10,6 +10,7 @@
 // its lines towards each other moves their borders away from their interiors.
 #pragma once
 
+#include "common/progress.h"
 #include "remesh/simplification_ledger.h"
 #include "remesh/thin_strips.h"
 
@@ -25,6 +26,8 @@ struct StripCollapse {
 // (removing one can make a neighbour a strip of merged lines), and records each in the ledger:
 // a close_feature_merge of its two lines and a surface_lost. A strip whose removal would join a
 // surface to itself, fold a triangle, or add any problem to the validity report, is kept.
-StripCollapse removeThinStrips(const Model &input, double maxWidth, SimplificationLedger &ledger);
+// Throws Cancelled when cancelled (checked between strips).
+StripCollapse removeThinStrips(const Model &input, double maxWidth, SimplificationLedger &ledger,
+                               Progress &progress = Progress::none());
 
 } // namespace stratamesh

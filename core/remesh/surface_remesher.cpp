@@ -76,10 +76,10 @@ double modelArea(const Model &model)
 }
 
 StripCollapse stripsRemoved(const Model &input, double edgeLength, const RemeshParams &params,
-                            SimplificationLedger &ledger)
+                            SimplificationLedger &ledger, Progress &progress)
 {
     if (params.stripWidthFactor > 0.0 && edgeLength > 0.0)
-        return removeThinStrips(input, params.stripWidthFactor * edgeLength, ledger);
+        return removeThinStrips(input, params.stripWidthFactor * edgeLength, ledger, progress);
     StripCollapse none;
     none.model = input;
     return none;
@@ -110,7 +110,8 @@ RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &s
     const Model input = withTopology(inputModel);
     SimplificationLedger ledger;
     const StripCollapse collapsed =
-        stripsRemoved(input, edgeLengthForSites(modelArea(input), static_cast<int>(sites.size())), params, ledger);
+        stripsRemoved(input, edgeLengthForSites(modelArea(input), static_cast<int>(sites.size())), params, ledger,
+                      progress);
     return meshFromSites(collapsed, sites, params, std::move(ledger), progress);
 }
 
@@ -179,7 +180,7 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     const double area = modelArea(input);
     const int n = params.sites > 0 ? params.sites : sitesForEdgeLength(area, params.edgeLength);
     SimplificationLedger ledger;
-    const StripCollapse collapsed = stripsRemoved(input, edgeLengthForSites(area, n), params, ledger);
+    const StripCollapse collapsed = stripsRemoved(input, edgeLengthForSites(area, n), params, ledger, progress);
     const Model &simplified = collapsed.model;
     const RestrictionDomain domain = makeRestrictionDomain(
         simplified, params.adaptive ? adaptiveDensity(simplified, params) : std::vector<double>{});

@@ -1,4 +1,5 @@
 // Thin strips found and removed whole before remeshing (thin_strips.h, strip_collapse.h).
+#include "common/error.h"
 #include "model/model_counts.h"
 #include "model/region_volume.h"
 #include "model/synthetic_models.h"
@@ -101,6 +102,21 @@ private slots:
             QCOMPARE(merge.inputs[k].kind, EntityKind::Line);
             QVERIFY(std::find(stripLines.begin(), stripLines.end(), merge.inputs[k].id) != stripLines.end());
         }
+    }
+
+    void cancelStopsBetweenStrips()
+    {
+        const Model input = faultedBox(15);
+        SimplificationLedger ledger;
+        Progress progress;
+        int ticks = 0;
+        Progress counting([&](double, const std::string &stage) { ticks += stage == "thin strips" ? 1 : 0; });
+        removeThinStrips(input, 40, ledger, counting);
+        QVERIFY(ticks >= 2); // one per strip tried, one to find none left
+        progress.cancel();
+        ledger.clear();
+        QVERIFY_THROWS_EXCEPTION(Cancelled, removeThinStrips(input, 40, ledger, progress));
+        QVERIFY(ledger.empty());
     }
 
     void remeshWithStripFactorCancelsTheThrow()
