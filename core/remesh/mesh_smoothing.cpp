@@ -1,9 +1,12 @@
 #include "remesh/mesh_smoothing.h"
 
 #include "quality/triangle_quality.h"
+#include "remesh/intersection_repair.h"
 
 #include <algorithm>
 #include <limits>
+#include <map>
+#include <vector>
 
 namespace stratamesh {
 
@@ -26,7 +29,11 @@ double worstQualityAround(const EditableSoup &soup, int v, const Vec3 &at)
 
 int relaxVertices(EditableSoup &soup, InputProjector &projector, const SmoothingParams &params)
 {
+    // Rings already this good after the plain move are left to it (most of them: the search
+    // costs a projection per candidate).
+    constexpr double kSearchBelow = 0.7;
     int moves = 0;
+    std::map<int, Vec3> start; // moved vertices → where the dual put them
     for (int pass = 0; pass < params.passes; ++pass) {
         int passMoves = 0;
         for (int v = 0; v < soup.pointCount(); ++v) {
@@ -41,27 +48,59 @@ int relaxVertices(EditableSoup &soup, InputProjector &projector, const Smoothing
                     sum += soup.position(w);
                 const int surface = soup.triangle(soup.vertexTriangles(v).front()).surface;
                 target = projector.onSurface(surface, sum / static_cast<double>(ring.size()));
-            } else if (c == VertexClass::Line && params.lines && !soup.point(v).lines.empty()) {
-                Vec3 sum = Vec3::Zero();
-                int count = 0;
-                for (int w : soup.neighbours(v))
-                    if (soup.isFeatureEdge(v, w)) {
-                        sum += soup.position(w);
-                        ++count;
+                // The centroid evens the ring; next to a thin piece or a line a step towards one
+                // neighbour may open the worst angle more: the best worst quality wins.
+                double best = worstQualityAround(soup, v, target);
+                const Vec3 old = soup.position(v);
+                for (int w : best < kSearchBelow ? ring : std::vector<int>{}) {
+                    const Vec3 candidate = projector.onSurface(surface, old + 0.25 * (soup.position(w) - old));
+                    const double q = worstQualityAround(soup, v, candidate);
+                    if (q > best) {
+                        best = q;
+                        target = candidate;
                     }
-                if (count != 2)
+                }
+            } else if (c == VertexClass::Line && params.lines && !soup.point(v).lines.empty()) {
+                std::vector<int> along;
+                for (int w : soup.neighbours(v))
+                    if (soup.isFeatureEdge(v, w))
+                        along.push_back(w);
+                if (along.size() != 2)
                     continue;
-                target = projector.onLines(soup.point(v).lines, sum / 2.0);
+                // The middle of the two line neighbours evens the spacing along the line, but a
+                // thin piece beside it needs its two sides staggered: slides along the line
+                // towards either neighbour compete, and the best worst quality wins.
+                const Vec3 old = soup.position(v);
+                const std::vector<int> &lines = soup.point(v).lines;
+                target = projector.onLines(lines, (soup.position(along[0]) + soup.position(along[1])) / 2.0);
+                double best = worstQualityAround(soup, v, target);
+                for (int w : best < kSearchBelow ? along : std::vector<int>{})
+                    for (double f : {0.2, 0.4}) {
+                        const Vec3 candidate = projector.onLines(lines, old + f * (soup.position(w) - old));
+                        const double q = worstQualityAround(soup, v, candidate);
+                        if (q > best) {
+                            best = q;
+                            target = candidate;
+                        }
+                    }
             } else {
                 continue;
             }
             const Vec3 old = soup.position(v);
             const double before = worstQualityAround(soup, v, old);
             for (double f : {1.0, 0.5}) {
-                const Vec3 candidate = old + f * (target - old);
+                // Half-way is put back on the input too: across a bend of the line (or of the
+                // surface) the straight middle is off it.
+                Vec3 candidate = target;
+                if (f != 1.0)
+                    candidate = c == VertexClass::Interior
+                                    ? projector.onSurface(soup.triangle(soup.vertexTriangles(v).front()).surface,
+                                                          old + f * (target - old))
+                                    : projector.onLines(soup.point(v).lines, old + f * (target - old));
                 if (worstQualityAround(soup, v, candidate) < before)
                     continue;
                 if (soup.tryMove(v, candidate, 0.0)) {
+                    start.emplace(v, old);
                     ++passMoves;
                     break;
                 }
@@ -69,6 +108,22 @@ int relaxVertices(EditableSoup &soup, InputProjector &projector, const Smoothing
         }
         moves += passMoves;
         if (passMoves == 0)
+            break;
+    }
+    // The checks above are local to each vertex's triangles; a move can still push a triangle
+    // through another surface nearby. Moved vertices of intersecting triangles go back.
+    for (int round = 0; round < 3 && !start.empty(); ++round) {
+        int restored = 0;
+        for (const auto &[a, b] : soupIntersections(soup))
+            for (int t : {a, b})
+                for (int v : soup.triangle(t).v) {
+                    auto it = start.find(v);
+                    if (it != start.end() && soup.tryMove(v, it->second, 0.0)) {
+                        start.erase(it);
+                        ++restored;
+                    }
+                }
+        if (restored == 0)
             break;
     }
     return moves;

@@ -59,11 +59,6 @@ private slots:
         QVERIFY(std::abs(stats.area - computeMeshStatistics(input).area) < 0.01 * stats.area);
         if (sites < 5000)
             return;
-        // modelA2 at 5000 sites (~500 m edges): its three 44 m strips and two of its ~160 m ones
-        // on the faults are removed whole, two more (108 and 134 m) are kept, and the thin box
-        // pieces around them keep 2.7 % of the triangles under 30°.
-        if (model == QLatin1String("modelA2") && sites == 5000)
-            QEXPECT_FAIL("", "modelA2 at 5000 sites: 2.7 % of triangles under 30° (see the note on issue 4)", Continue);
         QVERIFY2(stats.pctTrianglesAngleBelow30 <= 2.0, qPrintable(QString::number(stats.pctTrianglesAngleBelow30)));
         QVERIFY2(stats.meanQuality >= 0.85, qPrintable(QString::number(stats.meanQuality)));
         QVERIFY2(hausdorff <= 0.5, qPrintable(QString::number(hausdorff)));

@@ -166,7 +166,7 @@ private slots:
                 for (int v : {e.first, e.second}) {
                     const Vec3 &p = s.vertices[v];
                     const double d = std::min({p.x(), 10.0 - p.x(), p.y(), 10.0 - p.y()});
-                    QVERIFY2(std::abs(d) < 1e-9, "border vertex off the input border");
+                    QVERIFY2(std::abs(d) < 1e-9, qPrintable(QStringLiteral("border vertex off the input border: %1 %2 %3 d=%4").arg(p.x()).arg(p.y()).arg(p.z()).arg(d)));
                 }
         QCOMPARE(r.model.lines.size(), input.lines.size());
         // A lone square is open like its input (not sealed); everything else must be clean.
