@@ -16,6 +16,12 @@ int cornerIndex(const OutputTriangle &t, int v)
     return -1;
 }
 
+bool hasDirectedEdge(const OutputTriangle &t, int a, int b)
+{
+    const int k = cornerIndex(t, a);
+    return k >= 0 && t.v[(k + 1) % 3] == b;
+}
+
 namespace {
 
 bool sameVertexSet(std::array<int, 3> a, std::array<int, 3> b)
@@ -23,13 +29,6 @@ bool sameVertexSet(std::array<int, 3> a, std::array<int, 3> b)
     std::sort(a.begin(), a.end());
     std::sort(b.begin(), b.end());
     return a == b;
-}
-
-// True when t goes a → b (rather than b → a).
-bool hasDirectedEdge(const OutputTriangle &t, int a, int b)
-{
-    const int k = cornerIndex(t, a);
-    return k >= 0 && t.v[(k + 1) % 3] == b;
 }
 
 } // namespace

@@ -75,5 +75,7 @@ private:
 
 // Index of vertex v in triangle t (-1 when absent).
 int cornerIndex(const OutputTriangle &t, int v);
+// True when t goes a → b (rather than b → a).
+bool hasDirectedEdge(const OutputTriangle &t, int a, int b);
 
 } // namespace stratamesh

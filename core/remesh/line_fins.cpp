@@ -1,9 +1,10 @@
 #include "remesh/line_fins.h"
 
+#include "quality/triangle_quality.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <cmath>
 #include <iterator>
 
 namespace stratamesh {
@@ -20,21 +21,12 @@ bool shareLine(const OutputPoint &a, const OutputPoint &b, const OutputPoint &c)
     return false;
 }
 
-// Whether the triangle has an edge with one of the two orientations in t.
-bool hasDirected(const OutputTriangle &t, int a, int b)
-{
-    for (int k = 0; k < 3; ++k)
-        if (t.v[k] == a && t.v[(k + 1) % 3] == b)
-            return true;
-    return false;
-}
-
 } // namespace
 
 int removeLineFins(EditableSoup &soup)
 {
     // The middle point must lie nearly on the long edge: an apex angle above this.
-    const double minApexCos = std::cos(150.0 * M_PI / 180.0);
+    constexpr double minApexDeg = 150.0;
     int removed = 0;
     for (int t = 0; t < soup.triangleCapacity(); ++t) {
         if (!soup.alive(t))
@@ -43,18 +35,10 @@ int removeLineFins(EditableSoup &soup)
         if (!shareLine(soup.point(fin.v[0]), soup.point(fin.v[1]), soup.point(fin.v[2])))
             continue;
         // The middle point: the one with the widest angle.
-        int k = 0;
-        double widest = 2.0;
-        for (int i = 0; i < 3; ++i) {
-            const Vec3 &m = soup.position(fin.v[i]);
-            const Vec3 u = soup.position(fin.v[(i + 1) % 3]) - m, w = soup.position(fin.v[(i + 2) % 3]) - m;
-            const double c = u.norm() > 0 && w.norm() > 0 ? u.dot(w) / (u.norm() * w.norm()) : 1.0;
-            if (c < widest) {
-                widest = c;
-                k = i;
-            }
-        }
-        if (widest > minApexCos)
+        const std::array<double, 3> angles =
+            triangleShape(soup.position(fin.v[0]), soup.position(fin.v[1]), soup.position(fin.v[2])).anglesDeg;
+        const auto k = std::max_element(angles.begin(), angles.end()) - angles.begin();
+        if (angles[k] < minApexDeg)
             continue;
         const int m = fin.v[k], p = fin.v[(k + 1) % 3], q = fin.v[(k + 2) % 3];
         int other = -1, count = 0;
@@ -69,7 +53,7 @@ int removeLineFins(EditableSoup &soup)
         if (std::find(T.v.begin(), T.v.end(), m) != T.v.end())
             continue;
         // The fin runs p → q; its neighbour runs q → p when both turn the same way.
-        if (!hasDirected(T, q, p))
+        if (!hasDirectedEdge(T, q, p))
             continue;
         int x = -1;
         for (int v : T.v)

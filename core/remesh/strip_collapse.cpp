@@ -2,6 +2,7 @@
 
 #include "model/topology.h"
 #include "model/validity.h"
+#include "quality/triangle_quality.h"
 
 #include <Eigen/Geometry>
 
@@ -121,15 +122,6 @@ MergedLines mergeLines(const Model &m, const std::vector<int> &a, std::vector<in
 }
 
 
-// Sine of the smallest angle of a triangle (0 when flat).
-double minAngleSine(const Vec3 &a, const Vec3 &b, const Vec3 &c)
-{
-    const double twiceArea = (b - a).cross(c - a).norm();
-    const double ab = (b - a).norm(), bc = (c - b).norm(), ca = (a - c).norm();
-    const double longestProduct = std::max({ab * bc, bc * ca, ca * ab});
-    return longestProduct > 0 ? twiceArea / longestProduct : 0.0;
-}
-
 // The triangles of a surface around the ends of a strip, once each end has shrunk to a point,
 // are replaced by a triangulation of the polygon around them (ear clipping in their mean plane,
 // with the chain vertices inserted along the lines): moving the ends alone would fold the long
@@ -213,7 +205,7 @@ bool refillStar(const Surface &in, const std::vector<int> &global, const std::ve
                 // surface across the line may make the same one: a last resort only.
                 // Clipping the last vertex off the line would leave only such ears.
                 const bool onLine = (isChain(p) && isChain(c) && isChain(n)) || (!isChain(c) && offLine == 1);
-                const double quality = minAngleSine(surface.vertices[p], surface.vertices[c], surface.vertices[n]) *
+                const double quality = triangleMinAngleDeg(surface.vertices[p], surface.vertices[c], surface.vertices[n]) *
                                        (onLine ? 1e-6 : 1.0);
                 if (empty && quality > best) {
                     best = quality;
@@ -253,17 +245,9 @@ void unfoldAlongLine(Surface &surface, std::vector<Vec3> &before, const IsChain 
             const Triangle t = surface.triangles[k];
             if (dead[k] || !isChain(t[0]) || !isChain(t[1]) || !isChain(t[2]))
                 continue;
-            int mid = 0;
-            double widest = 2.0;
-            for (int i = 0; i < 3; ++i) {
-                const Vec3 &m = surface.vertices[t[i]];
-                const Vec3 u = surface.vertices[t[(i + 1) % 3]] - m, w = surface.vertices[t[(i + 2) % 3]] - m;
-                const double c = u.norm() > 0 && w.norm() > 0 ? u.dot(w) / (u.norm() * w.norm()) : 1.0;
-                if (c < widest) {
-                    widest = c;
-                    mid = i;
-                }
-            }
+            const std::array<double, 3> angles =
+                triangleShape(surface.vertices[t[0]], surface.vertices[t[1]], surface.vertices[t[2]]).anglesDeg;
+            const auto mid = std::max_element(angles.begin(), angles.end()) - angles.begin();
             const int m = t[mid], p = t[(mid + 1) % 3], q = t[(mid + 2) % 3];
             auto across = directed.find({q, p});
             if (across == directed.end() || dead[across->second])
@@ -366,10 +350,14 @@ bool collapseStrip(Model &m, const ThinStrip &strip)
         // Local vertices: the surface's own, but one per chain entry (the ends shrink to one).
         std::vector<int> local(in.vertices.size(), -1);
         std::unordered_map<int, int> chainLocal;
+        std::vector<char> onChain; // by local vertex
         auto chainVertex = [&](int c) {
             auto [it, added] = chainLocal.emplace(c, static_cast<int>(surface.vertices.size()));
-            if (added)
+            if (added) {
                 surface.vertices.push_back(merged.chain[c]);
+                onChain.resize(surface.vertices.size(), 0);
+                onChain.back() = 1;
+            }
             return it->second;
         };
         for (std::size_t v = 0; v < in.vertices.size(); ++v) {
@@ -381,9 +369,7 @@ bool collapseStrip(Model &m, const ThinStrip &strip)
                 surface.vertices.push_back(in.vertices[v]);
             }
         }
-        auto isChain = [&](int id) {
-            return std::any_of(chainLocal.begin(), chainLocal.end(), [id](const auto &kv) { return kv.second == id; });
-        };
+        auto isChain = [&](int id) { return id < static_cast<int>(onChain.size()) && onChain[id]; };
         std::vector<Vec3> vertexNormals(in.vertices.size(), Vec3::Zero()); // area-weighted
         for (const Triangle &t : in.triangles) {
             const Vec3 n = (in.vertices[t[1]] - in.vertices[t[0]]).cross(in.vertices[t[2]] - in.vertices[t[0]]);
@@ -487,25 +473,6 @@ bool collapseStrip(Model &m, const ThinStrip &strip)
     return true;
 }
 
-// The two longest boundary lines of a surface of a model with topology.
-std::vector<int> longestLines(const Model &model, int surface)
-{
-    std::vector<std::pair<double, int>> byLength;
-    for (int l : model.surfaces[surface].lines) {
-        double length = 0.0;
-        const std::vector<int> &v = model.lines[l].vertices;
-        for (std::size_t k = 1; k < v.size(); ++k)
-            length += (model.vertices[v[k]] - model.vertices[v[k - 1]]).norm();
-        byLength.emplace_back(length, l);
-    }
-    std::sort(byLength.rbegin(), byLength.rend());
-    std::vector<int> lines;
-    for (std::size_t k = 0; k < byLength.size() && k < 2; ++k)
-        lines.push_back(byLength[k].second);
-    std::sort(lines.begin(), lines.end());
-    return lines;
-}
-
 } // namespace
 
 StripCollapse removeThinStrips(const Model &input, double maxWidth, SimplificationLedger &ledger, Progress &progress)
@@ -549,9 +516,7 @@ StripCollapse removeThinStrips(const Model &input, double maxWidth, Simplificati
         double area = 0.0;
         Vec3 centre = Vec3::Zero();
         for (const Triangle &t : gone.triangles) {
-            const double ta = 0.5 * (gone.vertices[t[1]] - gone.vertices[t[0]])
-                                        .cross(gone.vertices[t[2]] - gone.vertices[t[0]])
-                                        .norm();
+            const double ta = triangleArea(gone.vertices[t[0]], gone.vertices[t[1]], gone.vertices[t[2]]);
             area += ta;
             centre += ta * (gone.vertices[t[0]] + gone.vertices[t[1]] + gone.vertices[t[2]]) / 3.0;
         }
@@ -564,7 +529,12 @@ StripCollapse removeThinStrips(const Model &input, double maxWidth, Simplificati
         // The lines are named as in the input: a later strip's lines exist only in the model
         // with the earlier strips removed, the input surface's two longest lines are the same.
         merge.inputs = {surfaceRef(input, inputSurface)};
-        for (int l : longestLines(input, inputSurface))
+        std::vector<int> inputLines;
+        for (const auto &[length, l] : boundaryLinesByLength(input, inputSurface))
+            if (inputLines.size() < 2)
+                inputLines.push_back(l);
+        std::sort(inputLines.begin(), inputLines.end());
+        for (int l : inputLines)
             merge.inputs.push_back(lineRef(input, l));
         merge.position = centre;
         merge.size = strip.width;

@@ -1,6 +1,7 @@
 #include "remesh/surface_remesher.h"
 
 #include "common/error.h"
+#include "complexity/element_sizes.h"
 #include "cvt/cvt_optimizer.h"
 #include "cvt/initial_sampling.h"
 #include "model/topology.h"
@@ -15,8 +16,6 @@
 #include "remesh/strip_collapse.h"
 #include "voronoi/restricted_voronoi.h"
 #include "voronoi/restriction_domain.h"
-
-#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <chrono>
@@ -70,8 +69,7 @@ double modelArea(const Model &model)
 {
     double area = 0.0;
     for (const Surface &s : model.surfaces)
-        for (const Triangle &t : s.triangles)
-            area += 0.5 * (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]).norm();
+        area += surfaceArea(s);
     return area;
 }
 
@@ -86,37 +84,6 @@ StripCollapse stripsRemoved(const Model &input, double edgeLength, const RemeshP
 }
 
 // The mesh-building half on the model without its thin strips.
-RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec3> &sites, const RemeshParams &params,
-                           SimplificationLedger ledger, Progress &progress);
-
-} // namespace
-
-int sitesForEdgeLength(double area, double edgeLength)
-{
-    if (!(edgeLength > 0.0))
-        throw InputError("remesh: the target edge length must be positive");
-    const double n = area / (std::sqrt(3.0) / 2.0 * edgeLength * edgeLength);
-    return std::max(4, static_cast<int>(std::lround(n)));
-}
-
-double edgeLengthForSites(double area, int sites)
-{
-    return sites > 0 && area > 0.0 ? std::sqrt(area / (std::sqrt(3.0) / 2.0 * sites)) : 0.0;
-}
-
-RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &sites, const RemeshParams &params,
-                             Progress &progress)
-{
-    const Model input = withTopology(inputModel);
-    SimplificationLedger ledger;
-    const StripCollapse collapsed =
-        stripsRemoved(input, edgeLengthForSites(modelArea(input), static_cast<int>(sites.size())), params, ledger,
-                      progress);
-    return meshFromSites(collapsed, sites, params, std::move(ledger), progress);
-}
-
-namespace {
-
 RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec3> &sites, const RemeshParams &params,
                            SimplificationLedger ledger, Progress &progress)
 {
@@ -168,6 +135,31 @@ RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec
 }
 
 } // namespace
+
+int sitesForEdgeLength(double area, double edgeLength)
+{
+    if (!(edgeLength > 0.0))
+        throw InputError("remesh: the target edge length must be positive");
+    const double n = area / (std::sqrt(3.0) / 2.0 * edgeLength * edgeLength);
+    return std::max(4, static_cast<int>(std::lround(n)));
+}
+
+double edgeLengthForSites(double area, int sites)
+{
+    return sites > 0 && area > 0.0 ? std::sqrt(area / (std::sqrt(3.0) / 2.0 * sites)) : 0.0;
+}
+
+RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &sites, const RemeshParams &params,
+                             Progress &progress)
+{
+    const Model input = withTopology(inputModel);
+    SimplificationLedger ledger;
+    const StripCollapse collapsed =
+        stripsRemoved(input, edgeLengthForSites(modelArea(input), static_cast<int>(sites.size())), params, ledger,
+                      progress);
+    return meshFromSites(collapsed, sites, params, std::move(ledger), progress);
+}
+
 
 RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Progress &progress)
 {

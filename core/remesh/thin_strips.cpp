@@ -1,5 +1,6 @@
 #include "remesh/thin_strips.h"
 
+#include "complexity/element_sizes.h"
 #include "model/model_counts.h"
 
 #include <algorithm>
@@ -17,14 +18,6 @@ std::vector<Vec3> polyline(const Model &model, const Line &line)
     for (int v : line.vertices)
         points.push_back(model.vertices[v]);
     return points;
-}
-
-double length(const std::vector<Vec3> &points)
-{
-    double sum = 0.0;
-    for (std::size_t i = 1; i < points.size(); ++i)
-        sum += (points[i] - points[i - 1]).norm();
-    return sum;
 }
 
 double distanceToPolyline(const Vec3 &x, const std::vector<Vec3> &points)
@@ -54,6 +47,15 @@ double farthestWithin(const std::vector<Vec3> &from, const std::vector<Vec3> &to
 
 } // namespace
 
+std::vector<std::pair<double, int>> boundaryLinesByLength(const Model &model, int surface)
+{
+    std::vector<std::pair<double, int>> byLength;
+    for (int l : model.surfaces[surface].lines)
+        byLength.emplace_back(lineLength(model, model.lines[l]), l);
+    std::sort(byLength.rbegin(), byLength.rend());
+    return byLength;
+}
+
 std::vector<ThinStrip> findThinStrips(const Model &model, double maxWidth)
 {
     std::vector<ThinStrip> strips;
@@ -63,15 +65,9 @@ std::vector<ThinStrip> findThinStrips(const Model &model, double maxWidth)
         const Surface &surface = model.surfaces[s];
         if (isBoxSurface(surface) || surface.lines.size() < 2)
             continue;
-        std::vector<std::pair<double, int>> byLength;
-        bool closed = false;
-        for (int l : surface.lines) {
-            closed = closed || model.lines[l].closed;
-            byLength.emplace_back(length(polyline(model, model.lines[l])), l);
-        }
-        if (closed)
+        if (std::any_of(surface.lines.begin(), surface.lines.end(), [&](int l) { return model.lines[l].closed; }))
             continue;
-        std::sort(byLength.rbegin(), byLength.rend());
+        const std::vector<std::pair<double, int>> byLength = boundaryLinesByLength(model, s);
         const double shorterLong = byLength[1].first;
         if (shorterLong <= 4.0 * maxWidth)
             continue;

@@ -11,6 +11,7 @@
 
 #include "model/model.h"
 
+#include <utility>
 #include <vector>
 
 namespace stratamesh {
@@ -21,6 +22,9 @@ struct ThinStrip {
     double width = 0.0;  // largest distance from a vertex of the strip to either long line
     double length = 0.0; // length of the shorter long line
 };
+
+// (length, line) for the boundary lines of a surface of a model with topology, longest first.
+std::vector<std::pair<double, int>> boundaryLinesByLength(const Model &model, int surface);
 
 // Surfaces of `model` (with topology) bounded by two long open lines, whose other boundary lines
 // are short ends (each at most twice the limit, and at most a quarter of the long ones), and whose
