@@ -94,11 +94,6 @@ private slots:
         QVERIFY(!p.adaptive);
         QCOMPARE(p.stripWidthFactor, RemeshParams{}.stripWidthFactor);
         QVERIFY(p.stripWidthFactor > 0.0);
-        if (qEnvironmentVariableIsSet("STRATAMESH_DIALOG_SHOT")) {
-            dialog.show();
-            QVERIFY(QTest::qWaitForWindowExposed(&dialog));
-            dialog.grab().save(qEnvironmentVariable("STRATAMESH_DIALOG_SHOT"));
-        }
         RemeshParams byLength;
         byLength.sites = 0;
         byLength.edgeLength = 25.0;

@@ -8,6 +8,7 @@
 #include "model/validity.h"
 #include "common/error.h"
 #include "remesh/output_model_builder.h"
+#include "support/model_lines.h"
 
 #include <Eigen/Geometry>
 #include <QtTest>
@@ -273,16 +274,7 @@ private slots:
 
         // Lines along the fault that both fault blocks of the horizon share.
         auto joinedLines = [](const Model &m) {
-            int n = 0;
-            for (const Line &l : m.lines) {
-                int horizons = 0, faults = 0;
-                for (int s : l.surfaces) {
-                    horizons += m.surfaces[s].type == FeatureType::Horizon ? 1 : 0;
-                    faults += m.surfaces[s].type == FeatureType::Fault ? 1 : 0;
-                }
-                n += horizons >= 2 && faults >= 1 ? 1 : 0;
-            }
-            return n;
+            return test::countLines(m, [](int horizons, int faults) { return horizons >= 2 && faults >= 1; });
         };
         QCOMPARE(joinedLines(input), 0);
 
@@ -335,16 +327,7 @@ private slots:
         const Model input = recoverTopology(layeredBox(bp));
         QVERIFY(checkValidity(input).valid);
         auto crossingLines = [](const Model &m) {
-            int n = 0;
-            for (const Line &l : m.lines) {
-                int horizons = 0, faults = 0;
-                for (int s : l.surfaces) {
-                    horizons += m.surfaces[s].type == FeatureType::Horizon ? 1 : 0;
-                    faults += m.surfaces[s].type == FeatureType::Fault ? 1 : 0;
-                }
-                n += horizons == 2 && faults == 2 ? 1 : 0;
-            }
-            return n;
+            return test::countLines(m, [](int horizons, int faults) { return horizons == 2 && faults == 2; });
         };
         QCOMPARE(crossingLines(input), 2);
         for (const auto &[edge, seed] : {std::pair{150.0, 2u}, std::pair{90.0, 1u}, std::pair{60.0, 1u}}) {

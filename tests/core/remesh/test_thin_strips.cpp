@@ -7,6 +7,7 @@
 #include "model/validity.h"
 #include "remesh/strip_collapse.h"
 #include "remesh/surface_remesher.h"
+#include "support/model_lines.h"
 
 #include <QtTest>
 
@@ -31,16 +32,7 @@ Model faultedBox(double faultThrow)
 // Lines where the horizon's two fault blocks meet the fault together (the throw is cancelled).
 int joinedLines(const Model &m)
 {
-    int n = 0;
-    for (const Line &l : m.lines) {
-        int horizons = 0, faults = 0;
-        for (int s : l.surfaces) {
-            horizons += m.surfaces[s].type == FeatureType::Horizon ? 1 : 0;
-            faults += m.surfaces[s].type == FeatureType::Fault ? 1 : 0;
-        }
-        n += horizons >= 2 && faults >= 1 ? 1 : 0;
-    }
-    return n;
+    return test::countLines(m, [](int horizons, int faults) { return horizons >= 2 && faults >= 1; });
 }
 
 } // namespace
