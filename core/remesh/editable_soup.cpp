@@ -74,10 +74,22 @@ std::vector<int> EditableSoup::neighbours(int v) const
     return r;
 }
 
+int EditableSoup::edgeTrianglesUpTo3(int a, int b, std::array<int, 3> &out) const
+{
+    int n = 0;
+    for (int t : m_vertexTriangles[a])
+        if (cornerIndex(m_mesh.triangles[t], b) >= 0) {
+            out[n++] = t;
+            if (n == 3)
+                break;
+        }
+    return n;
+}
+
 bool EditableSoup::isFeatureEdge(int a, int b) const
 {
-    const std::vector<int> tris = edgeTriangles(a, b);
-    if (tris.size() != 2)
+    std::array<int, 3> tris;
+    if (edgeTrianglesUpTo3(a, b, tris) != 2)
         return true;
     const OutputTriangle &t0 = m_mesh.triangles[tris[0]];
     const OutputTriangle &t1 = m_mesh.triangles[tris[1]];
@@ -251,8 +263,8 @@ bool EditableSoup::collapse(int u, int w, const Vec3 &target, double minQuality,
 
 bool EditableSoup::flip(int a, int b, bool requireImprovement)
 {
-    const std::vector<int> tris = edgeTriangles(a, b);
-    if (tris.size() != 2 || isFeatureEdge(a, b))
+    std::array<int, 3> tris;
+    if (edgeTrianglesUpTo3(a, b, tris) != 2 || isFeatureEdge(a, b))
         return false;
     int t0 = tris[0], t1 = tris[1];
     if (!hasDirectedEdge(m_mesh.triangles[t0], a, b))
@@ -261,7 +273,8 @@ bool EditableSoup::flip(int a, int b, bool requireImprovement)
     const OutputTriangle &T1 = m_mesh.triangles[t1];
     const int c = T0.v[(cornerIndex(T0, b) + 1) % 3];
     const int d = T1.v[(cornerIndex(T1, a) + 1) % 3];
-    if (c == d || !edgeTriangles(c, d).empty())
+    std::array<int, 3> existing;
+    if (c == d || edgeTrianglesUpTo3(c, d, existing) > 0)
         return false;
     const std::array<int, 3> n0{a, d, c}, n1{d, b, c};
     auto triNormal = [&](const std::array<int, 3> &v) {

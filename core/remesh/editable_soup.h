@@ -8,6 +8,7 @@
 
 #include "remesh/output_mesh.h"
 
+#include <array>
 #include <vector>
 
 namespace stratamesh {
@@ -64,6 +65,9 @@ public:
     double quality(int t) const;
 
 private:
+    // Up to three alive triangles along an edge, without allocating (the flips and feature tests
+    // run over every edge several times); returns how many there are, capped at three.
+    int edgeTrianglesUpTo3(int a, int b, std::array<int, 3> &out) const;
     bool wouldFlip(int v, const Vec3 &target, const std::vector<int> &skip, int replaceBy,
                    double minQuality) const;
     bool triangleExists(const std::array<int, 3> &v, int ignore1, int ignore2) const;
