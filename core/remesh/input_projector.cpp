@@ -59,6 +59,19 @@ Vec3 InputProjector::onSurface(int surface, const Vec3 &x)
     return Vec3(q.x(), q.y(), q.z());
 }
 
+Vec3 InputProjector::onSurface(int surface, const Vec3 &x, const Vec3 &near)
+{
+    if (!hasSurface(surface))
+        return x;
+    // The hint itself comes back when no input triangle is closer than it: then it may be off the
+    // surface, and only the full search is right.
+    const K::Point_3 start = cg(near);
+    const K::Point_3 q = m_trees[surface]->tree->closest_point(cg(x), start);
+    if (q == start)
+        return onSurface(surface, x);
+    return Vec3(q.x(), q.y(), q.z());
+}
+
 Vec3 InputProjector::onLines(const std::vector<int> &lines, const Vec3 &x) const
 {
     double best = std::numeric_limits<double>::max();

@@ -21,6 +21,9 @@ public:
     // False when the surface has no non-degenerate triangle (then `x` is returned).
     bool hasSurface(int surface);
     Vec3 onSurface(int surface, const Vec3 &x);
+    // The same, starting the search from a point known to be near the answer (a vertex being
+    // moved a little): CGAL then skips its own search for a start point.
+    Vec3 onSurface(int surface, const Vec3 &x, const Vec3 &near);
     // Closest point on any of the given input lines (x when the list is empty).
     Vec3 onLines(const std::vector<int> &lines, const Vec3 &x) const;
 

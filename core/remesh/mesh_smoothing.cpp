@@ -25,6 +25,39 @@ double worstQualityAround(const EditableSoup &soup, int v, const Vec3 &at)
     return worst;
 }
 
+// What relaxation needs of a vertex's neighbourhood. Moves never change the connectivity, so it
+// is gathered once rather than at every pass (the class alone walks the whole fan).
+struct RelaxedVertex {
+    int v = -1;
+    VertexClass kind = VertexClass::Fixed;
+    std::vector<int> neighbours; // Interior: the ring; Line: the two neighbours along the line
+};
+
+std::vector<RelaxedVertex> relaxedVertices(const EditableSoup &soup, bool lines)
+{
+    std::vector<RelaxedVertex> out;
+    for (int v = 0; v < soup.pointCount(); ++v) {
+        if (soup.vertexTriangles(v).empty())
+            continue;
+        RelaxedVertex r;
+        r.v = v;
+        r.kind = soup.vertexClass(v);
+        if (r.kind == VertexClass::Interior) {
+            r.neighbours = soup.neighbours(v);
+        } else if (r.kind == VertexClass::Line && lines && !soup.point(v).lines.empty()) {
+            for (int w : soup.neighbours(v))
+                if (soup.isFeatureEdge(v, w))
+                    r.neighbours.push_back(w);
+            if (r.neighbours.size() != 2)
+                continue;
+        } else {
+            continue;
+        }
+        out.push_back(std::move(r));
+    }
+    return out;
+}
+
 } // namespace
 
 int relaxVertices(EditableSoup &soup, InputProjector &projector, const SmoothingParams &params)
@@ -34,49 +67,27 @@ int relaxVertices(EditableSoup &soup, InputProjector &projector, const Smoothing
     constexpr double kSearchBelow = 0.7;
     int moves = 0;
     std::map<int, Vec3> start; // moved vertices → where the dual put them
+    const std::vector<RelaxedVertex> vertices = relaxedVertices(soup, params.lines);
     for (int pass = 0; pass < params.passes; ++pass) {
         int passMoves = 0;
-        for (int v = 0; v < soup.pointCount(); ++v) {
-            if (soup.vertexTriangles(v).empty())
-                continue;
-            const VertexClass c = soup.vertexClass(v);
+        for (const RelaxedVertex &r : vertices) {
+            const int v = r.v;
+            const VertexClass c = r.kind;
+            const Vec3 old = soup.position(v);
             Vec3 target;
             if (c == VertexClass::Interior) {
                 Vec3 sum = Vec3::Zero();
-                const std::vector<int> ring = soup.neighbours(v);
-                for (int w : ring)
+                for (int w : r.neighbours)
                     sum += soup.position(w);
                 const int surface = soup.triangle(soup.vertexTriangles(v).front()).surface;
-                target = projector.onSurface(surface, sum / static_cast<double>(ring.size()));
+                target = projector.onSurface(surface, sum / static_cast<double>(r.neighbours.size()), old);
                 // The centroid evens the ring; next to a thin piece or a line a step towards one
                 // neighbour may open the worst angle more: the best worst quality wins.
                 double best = worstQualityAround(soup, v, target);
-                const Vec3 old = soup.position(v);
-                for (int w : best < kSearchBelow ? ring : std::vector<int>{}) {
-                    const Vec3 candidate = projector.onSurface(surface, old + 0.25 * (soup.position(w) - old));
-                    const double q = worstQualityAround(soup, v, candidate);
-                    if (q > best) {
-                        best = q;
-                        target = candidate;
-                    }
-                }
-            } else if (c == VertexClass::Line && params.lines && !soup.point(v).lines.empty()) {
-                std::vector<int> along;
-                for (int w : soup.neighbours(v))
-                    if (soup.isFeatureEdge(v, w))
-                        along.push_back(w);
-                if (along.size() != 2)
-                    continue;
-                // The middle of the two line neighbours evens the spacing along the line, but a
-                // thin piece beside it needs its two sides staggered: slides along the line
-                // towards either neighbour compete, and the best worst quality wins.
-                const Vec3 old = soup.position(v);
-                const std::vector<int> &lines = soup.point(v).lines;
-                target = projector.onLines(lines, (soup.position(along[0]) + soup.position(along[1])) / 2.0);
-                double best = worstQualityAround(soup, v, target);
-                for (int w : best < kSearchBelow ? along : std::vector<int>{})
-                    for (double f : {0.2, 0.4}) {
-                        const Vec3 candidate = projector.onLines(lines, old + f * (soup.position(w) - old));
+                if (best < kSearchBelow)
+                    for (int w : r.neighbours) {
+                        const Vec3 candidate =
+                            projector.onSurface(surface, old + 0.25 * (soup.position(w) - old), old);
                         const double q = worstQualityAround(soup, v, candidate);
                         if (q > best) {
                             best = q;
@@ -84,9 +95,24 @@ int relaxVertices(EditableSoup &soup, InputProjector &projector, const Smoothing
                         }
                     }
             } else {
-                continue;
+                // The middle of the two line neighbours evens the spacing along the line, but a
+                // thin piece beside it needs its two sides staggered: slides along the line
+                // towards either neighbour compete, and the best worst quality wins.
+                const std::vector<int> &along = r.neighbours;
+                const std::vector<int> &lines = soup.point(v).lines;
+                target = projector.onLines(lines, (soup.position(along[0]) + soup.position(along[1])) / 2.0);
+                double best = worstQualityAround(soup, v, target);
+                if (best < kSearchBelow)
+                    for (int w : along)
+                        for (double f : {0.2, 0.4}) {
+                            const Vec3 candidate = projector.onLines(lines, old + f * (soup.position(w) - old));
+                            const double q = worstQualityAround(soup, v, candidate);
+                            if (q > best) {
+                                best = q;
+                                target = candidate;
+                            }
+                        }
             }
-            const Vec3 old = soup.position(v);
             const double before = worstQualityAround(soup, v, old);
             for (double f : {1.0, 0.5}) {
                 // Half-way is put back on the input too: across a bend of the line (or of the
@@ -95,7 +121,7 @@ int relaxVertices(EditableSoup &soup, InputProjector &projector, const Smoothing
                 if (f != 1.0)
                     candidate = c == VertexClass::Interior
                                     ? projector.onSurface(soup.triangle(soup.vertexTriangles(v).front()).surface,
-                                                          old + f * (target - old))
+                                                          old + f * (target - old), old)
                                     : projector.onLines(soup.point(v).lines, old + f * (target - old));
                 if (worstQualityAround(soup, v, candidate) < before)
                     continue;
