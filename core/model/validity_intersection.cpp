@@ -2,6 +2,7 @@
 // §3.2). Candidate pairs come from CGAL's box intersection; each pair is decided with exact
 // predicates on the stored doubles. With exact vertex merging, two triangles share a point only
 // through a shared global vertex, which gives the three cases below.
+#include "model/shared_edge_overlap.h"
 #include "model/validity_checks.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -91,10 +92,8 @@ public:
         // meet along uv only; coplanar, they overlap when a and b are on the same side of uv.
         const int a = f.v[3 - sharedF[0] - sharedF[1]];
         const int b = g.v[3 - sharedG[0] - sharedG[1]];
-        const Point pu = point(f.v[sharedF[0]]), pv = point(f.v[sharedF[1]]), pa = point(a), pb = point(b);
-        if (CGAL::orientation(pu, pv, pa, pb) != CGAL::COPLANAR)
-            return std::nullopt;
-        if (CGAL::coplanar_orientation(pu, pv, pa, pb) != CGAL::POSITIVE)
+        const auto &x = m_model.vertices;
+        if (!sharedEdgeTrianglesOverlap(x[f.v[sharedF[0]]], x[f.v[sharedF[1]]], x[a], x[b]))
             return std::nullopt;
         return centre(f, g);
     }

@@ -1,5 +1,7 @@
 #include "remesh/triangle_intersections.h"
 
+#include "model/shared_edge_overlap.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
@@ -56,11 +58,7 @@ bool trianglesIntersect(const std::vector<Vec3> &pts, const Triangle &a, const T
     int j = 0;
     while (j == sharedA[0] || j == sharedA[1] || j == sharedA[2])
         ++j;
-    const P3 p = toCgal(pts[a[(i + 1) % 3]]), q = toCgal(pts[a[(i + 2) % 3]]);
-    const P3 ra = toCgal(pts[a[i]]), rb = toCgal(pts[b[j]]);
-    if (!CGAL::coplanar(p, q, ra, rb))
-        return false;
-    return CGAL::coplanar_orientation(p, q, ra, rb) == CGAL::POSITIVE;
+    return sharedEdgeTrianglesOverlap(pts[a[(i + 1) % 3]], pts[a[(i + 2) % 3]], pts[a[i]], pts[b[j]]);
 }
 
 std::vector<std::pair<int, int>> findIntersectingTriangles(const std::vector<Vec3> &pts,
