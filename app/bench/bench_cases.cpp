@@ -62,6 +62,7 @@ BenchResult runCase(const std::string &name, const RestrictionDomain &domain, in
     r.totalSeconds = cvt.totalSeconds;
     r.rvdSeconds = cvt.rvdSeconds;
     r.delaunaySeconds = cvt.delaunaySeconds;
+    r.neighbourSearches = cvt.neighbourSearches;
     r.threads = cvt.threads;
     r.firstEnergy = cvt.initialEnergy;
     r.lastEnergy = cvt.energy.empty() ? cvt.initialEnergy : cvt.energy.back();

@@ -20,6 +20,7 @@ struct BenchResult {
     double totalSeconds = 0;    // optimisation
     double rvdSeconds = 0;      // restricted Voronoi integration, all evaluations
     double delaunaySeconds = 0; // neighbours of the sites, all evaluations
+    int neighbourSearches = 0;  // k-nearest searches; the other evaluations reused the lists
     double finalRvdSeconds = 0; // one full symbolic diagram at the end (components included)
     double peakRssMb = 0;
     int threads = 0;

@@ -35,8 +35,8 @@ void print(const bench::BenchResult &r)
     std::printf("  optimisation      %.3f s total\n", r.totalSeconds);
     std::printf("  RVD integration   %.3f s, %.2f ms per evaluation\n", r.rvdSeconds,
                 1e3 * r.rvdSeconds / std::max(1, r.evaluations));
-    std::printf("  neighbours        %.3f s, %.2f ms per evaluation\n", r.delaunaySeconds,
-                1e3 * r.delaunaySeconds / std::max(1, r.evaluations));
+    std::printf("  neighbours        %.3f s, %.2f ms per evaluation, %d searches (other evaluations reused the lists)\n",
+                r.delaunaySeconds, 1e3 * r.delaunaySeconds / std::max(1, r.evaluations), r.neighbourSearches);
     std::printf("  final symbolic RVD %.3f s\n", r.finalRvdSeconds);
     std::printf("  peak memory       %.0f MB\n", r.peakRssMb);
     std::printf("  threads           %d\n", r.threads);

@@ -31,9 +31,9 @@ CvtEvaluation evaluateCvtEnergy(const RestrictionDomain &domain, const std::vect
         throw InputError("alpha must be in [0, 1], got " + std::to_string(alpha));
     CvtEvaluation r;
     auto start = std::chrono::steady_clock::now();
-    const VoronoiNeighbours delaunay(sites, search, &workspace.neighbourHints);
-    if (search == NeighbourSearch::NearestNeighbours)
-        delaunay.exportHints(workspace.neighbourHints);
+    const VoronoiNeighbours delaunay = search == NeighbourSearch::NearestNeighbours
+                                           ? VoronoiNeighbours(sites, workspace.neighbourReuse)
+                                           : VoronoiNeighbours(sites, search);
     r.delaunaySeconds = secondsSince(start);
     start = std::chrono::steady_clock::now();
     CellIntegralsOptions options;

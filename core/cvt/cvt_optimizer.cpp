@@ -81,6 +81,8 @@ public:
         ++m_result.evaluations;
         m_result.rvdSeconds += m_last.rvdSeconds;
         m_result.delaunaySeconds += m_last.delaunaySeconds;
+        m_result.neighbourSearches = m_workspace.neighbourReuse.searches;
+        m_result.neighbourReuses = m_workspace.neighbourReuse.reuses;
         return m_last;
     }
 

@@ -51,8 +51,9 @@ struct CellIntegralsWorkspace {
     int siteCount = -1;
     std::vector<std::vector<detail::SurfaceRecord>> surfaceRecords;
     std::vector<std::vector<detail::LineRecord>> lineRecords;
-    // The neighbour lists of the previous sites, where the next k-nearest searches start.
-    NeighbourHints neighbourHints;
+    // The neighbour lists of earlier sites: reused while the sites move little, else where the
+    // next k-nearest searches start.
+    NeighbourReuse neighbourReuse;
 };
 
 struct CellIntegralsOptions {

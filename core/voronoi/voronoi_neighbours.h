@@ -36,6 +36,21 @@ struct NeighbourHints {
     std::vector<int> neighbours;
 };
 
+// Lists searched for earlier sites, kept across CVT evaluations. While every site stays within
+// `maxDrift` of where the lists were searched, site i's list still holds every site closer than
+// its complete radius less its own drift and the largest drift (no unlisted site can have come
+// nearer than that), which is all the security radius usually needs: the k-nearest search is
+// skipped, and the lists, cut at that radius and sorted by the current distances, clip the same
+// bisectors in the same order as fresh ones would (the same diagram, to the bit).
+struct NeighbourReuse {
+    std::vector<Vec3> sites; // where the lists were searched
+    NeighbourHints lists;
+    std::vector<double> complete;
+    double maxDrift = 0.0; // set at each search from the lists' radii
+    int searches = 0;      // k-nearest searches made
+    int reuses = 0;        // evaluations that reused the lists
+};
+
 class VoronoiNeighbours {
 public:
     VoronoiNeighbours();
@@ -43,6 +58,9 @@ public:
     // have empty cells. Throws InputError on a non-finite coordinate.
     explicit VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch search = NeighbourSearch::Delaunay,
                                const NeighbourHints *hints = nullptr);
+    // NearestNeighbours lists, reusing `reuse` when the sites moved little, else searched afresh
+    // (seeded with the old lists) and stored into it.
+    VoronoiNeighbours(std::vector<Vec3> sites, NeighbourReuse &reuse);
     ~VoronoiNeighbours();
     VoronoiNeighbours(VoronoiNeighbours &&) noexcept;
     VoronoiNeighbours &operator=(VoronoiNeighbours &&) noexcept;
@@ -88,6 +106,8 @@ private:
     const KdTree &kdTree() const;
     int approximateNearest(const Vec3 &q) const;
     void buildNearest(const NeighbourHints *hints);
+    bool reuseNearest(const NeighbourReuse &reuse);
+    void checkSites() const;
     void sortByDistance();
 
     NeighbourSearch m_search = NeighbourSearch::Delaunay;

@@ -95,6 +95,35 @@ private slots:
         QVERIFY(e.cvtEnergy > 0 && e.boundaryEnergy > 0);
         QVERIFY(std::abs(e.energy - (0.75 * e.cvtEnergy + 0.25 * e.boundaryEnergy)) <= 1e-15 * e.energy);
     }
+
+    // Evaluations reuse the neighbour lists while the sites move little; the diagram must stay
+    // the exact one: energy and gradient identical to the bit with lists searched afresh.
+    void reusedNeighbourListsGiveIdenticalEvaluations()
+    {
+        for (int shape = 0; shape < 2; ++shape) {
+            const RestrictionDomain d = shape == 0 ? test::sphereDomain(3) : test::squareDomain(12);
+            std::vector<Vec3> sites = shape == 0
+                                          ? test::randomPointsInBox(300, Vec3(-1, -1, -1), Vec3(1, 1, 1), 8)
+                                          : test::randomPointsInBox(150, Vec3(0, 0, -0.05), Vec3(1, 1, 0.05), 9);
+            const double alpha = shape == 0 ? 0.0 : 0.3;
+            CellIntegralsWorkspace shared;
+            std::mt19937 rng(10 + shape);
+            std::uniform_real_distribution<double> step(-2e-3, 2e-3);
+            for (int k = 0; k < 12; ++k) {
+                CellIntegralsWorkspace fresh;
+                const CvtEvaluation a = evaluateCvtEnergy(d, sites, alpha, shared);
+                const CvtEvaluation b = evaluateCvtEnergy(d, sites, alpha, fresh);
+                QCOMPARE(a.energy, b.energy);
+                QVERIFY(a.gradient == b.gradient);
+                for (Vec3 &s : sites)
+                    s += Vec3(step(rng), step(rng), step(rng));
+                if (k == 8)
+                    sites[0] += Vec3(0.3, 0.0, 0.0); // a jump: the lists must be searched again
+            }
+            QVERIFY2(shared.neighbourReuse.reuses >= 6, "small moves should reuse the lists");
+            QVERIFY2(shared.neighbourReuse.searches >= 2, "the jump should force a new search");
+        }
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCvtEnergy)

@@ -315,6 +315,53 @@ private slots:
         }
     }
 
+    void reusedListsHoldEverySiteWithinTheirRadius()
+    {
+        // Lists reused for moved sites: each is the fresh list cut at its (smaller) complete
+        // radius, sorted by the current distances, and no site closer than that radius is missing.
+        std::vector<Vec3> sites = test::randomPointsInBox(400, Vec3(0, 0, 0), Vec3(1, 1, 0.1), 42);
+        NeighbourReuse reuse;
+        const VoronoiNeighbours first(sites, reuse);
+        QCOMPARE(reuse.searches, 1);
+        QVERIFY(reuse.maxDrift > 0);
+        for (std::size_t i = 0; i < sites.size(); ++i)
+            sites[i] += 0.5 * reuse.maxDrift * Vec3(std::sin(3.0 * i), std::cos(5.0 * i), 0.3 * std::sin(7.0 * i)).normalized();
+        const VoronoiNeighbours reused(sites, reuse);
+        QCOMPARE(reuse.reuses, 1);
+        const VoronoiNeighbours fresh(sites, NeighbourSearch::NearestNeighbours);
+        int shorter = 0;
+        for (int i = 0; i < reused.siteCount(); ++i) {
+            const double radius = reused.completeRadius(i);
+            QVERIFY(radius <= fresh.completeRadius(i));
+            int prefix = 0;
+            while (prefix < fresh.neighbourCount(i) && fresh.neighbourDistances(i)[prefix] < radius)
+                ++prefix;
+            QCOMPARE(reused.neighbourCount(i), prefix);
+            shorter += prefix < fresh.neighbourCount(i);
+            for (int k = 0; k < prefix; ++k) {
+                QCOMPARE(reused.neighboursBegin(i)[k], fresh.neighboursBegin(i)[k]);
+                QCOMPARE(reused.neighbourDistances(i)[k], fresh.neighbourDistances(i)[k]);
+            }
+            int closer = 0;
+            for (int j = 0; j < reused.siteCount(); ++j)
+                closer += j != i && (sites[j] - sites[i]).norm() < radius;
+            QCOMPARE(closer, reused.neighbourCount(i));
+            // What the lists lack, the kd-tree gives: the same sites as the fresh list's tail.
+            std::vector<std::pair<double, int>> beyond;
+            reused.sitesBeyondList(i, fresh.completeRadius(i), beyond);
+            for (int k = prefix; k < fresh.neighbourCount(i); ++k)
+                QVERIFY(std::find(beyond.begin(), beyond.end(),
+                                  std::make_pair(fresh.neighbourDistances(i)[k], fresh.neighboursBegin(i)[k])) !=
+                        beyond.end());
+        }
+        QVERIFY(shorter > 0); // the cut happened somewhere
+        // A site moving farther than the drift allowed: searched again.
+        sites[7] += Vec3(2 * reuse.maxDrift, 0, 0);
+        const VoronoiNeighbours again(sites, reuse);
+        QCOMPARE(reuse.searches, 2);
+        QCOMPARE(reuse.reuses, 1);
+    }
+
     void everyTriangleIsTiled()
     {
         // Each triangle's polygons add up to its area, also where dozens of small cells crowd a
