@@ -8,6 +8,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 
@@ -139,25 +140,44 @@ void checkIntersections(const CheckInput &in, ProblemSink &sink, Progress &progr
     for (std::size_t i = 0; i < faces.size(); ++i)
         boxes.emplace_back(tester.triangle(faces[i]).bbox(), static_cast<int>(i));
 
+    // The box search hands out candidate pairs (adjacent triangles' boxes always overlap); they
+    // are decided in parallel by chunks and reported in the order found, as a serial check would.
+    std::vector<std::pair<int, int>> chunk;
+    std::vector<std::optional<Vec3>> where;
     std::size_t pairs = 0;
+    const auto decide = [&] {
+        where.assign(chunk.size(), std::nullopt);
+        const bool list = !sink.full(validity_check::surfaceIntersection);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk.size(), 1024),
+                          [&](const tbb::blocked_range<std::size_t> &r) {
+                              for (std::size_t c = r.begin(); c < r.end(); ++c)
+                                  where[c] = tester.test(faces[chunk[c].first], faces[chunk[c].second], list);
+                          });
+        for (std::size_t c = 0; c < chunk.size(); ++c) {
+            if (!where[c])
+                continue;
+            const Face &f = faces[chunk[c].first], &g = faces[chunk[c].second];
+            const Surface &sf = model.surfaces[f.surface], &sg = model.surfaces[g.surface];
+            std::vector<std::string> names{sf.name};
+            if (f.surface != g.surface)
+                names.push_back(sg.name);
+            sink.add(validity_check::surfaceIntersection, names, *where[c],
+                     "triangle " + std::to_string(f.triangle) + " of " + sf.name + " and triangle "
+                         + std::to_string(g.triangle) + " of " + sg.name + " intersect near " + pointText(*where[c]));
+        }
+        chunk.clear();
+    };
+    constexpr std::size_t kChunk = 1 << 18; // bounds the memory on models of millions of triangles
     auto callback = [&](const Box &x, const Box &y) {
         if (++pairs % 65536 == 0)
             progress.tick(0.2 + 0.7 * std::min(1.0, static_cast<double>(pairs) / (20.0 * faces.size() + 1)),
                           "validity: intersections");
-        const Face &f = faces[x.info()], &g = faces[y.info()];
-        const bool list = !sink.full(validity_check::surfaceIntersection);
-        const std::optional<Vec3> where = tester.test(f, g, list);
-        if (!where)
-            return;
-        const Surface &sf = model.surfaces[f.surface], &sg = model.surfaces[g.surface];
-        std::vector<std::string> names{sf.name};
-        if (f.surface != g.surface)
-            names.push_back(sg.name);
-        sink.add(validity_check::surfaceIntersection, names, *where,
-                 "triangle " + std::to_string(f.triangle) + " of " + sf.name + " and triangle "
-                     + std::to_string(g.triangle) + " of " + sg.name + " intersect near " + pointText(*where));
+        chunk.emplace_back(x.info(), y.info());
+        if (chunk.size() == kChunk)
+            decide();
     };
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), callback);
+    decide();
 }
 
 } // namespace stratamesh::validity_detail

@@ -5,6 +5,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 
@@ -82,10 +83,18 @@ std::vector<std::pair<int, int>> findIntersectingTriangles(const std::vector<Vec
         candidates.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info()));
     };
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), report);
+    // Deciding the pairs is most of the cost (adjacent triangles' boxes always overlap), and
+    // each decision is independent: in parallel, collected in the candidates' order.
+    std::vector<char> meets(candidates.size(), 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 1024),
+                      [&](const tbb::blocked_range<std::size_t> &r) {
+                          for (std::size_t c = r.begin(); c < r.end(); ++c)
+                              meets[c] = trianglesIntersect(pts, tris[candidates[c].first], tris[candidates[c].second]);
+                      });
     std::vector<std::pair<int, int>> result;
-    for (const auto &c : candidates)
-        if (trianglesIntersect(pts, tris[c.first], tris[c.second]))
-            result.push_back(c);
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+        if (meets[c])
+            result.push_back(candidates[c]);
     std::sort(result.begin(), result.end());
     result.erase(std::unique(result.begin(), result.end()), result.end());
     return result;
