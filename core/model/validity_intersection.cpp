@@ -8,9 +8,13 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
+#include <Eigen/Geometry>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
+#include <initializer_list>
+#include <optional>
 
 namespace stratamesh::validity_detail {
 
@@ -29,29 +33,31 @@ struct Face {
 };
 
 Point toPoint(const Vec3 &p) { return {p.x(), p.y(), p.z()}; }
-Vec3 toVec(const Point &p) { return {p.x(), p.y(), p.z()}; }
 
-// A point of an intersection result, for the report only (not used in any decision).
-struct Representative : boost::static_visitor<Vec3> {
-    Vec3 operator()(const Point &p) const { return toVec(p); }
-    Vec3 operator()(const Segment &s) const { return toVec(CGAL::midpoint(s.source(), s.target())); }
-    Vec3 operator()(const Tri &t) const { return toVec(CGAL::centroid(t)); }
-    Vec3 operator()(const std::vector<Point> &ps) const
-    {
-        Vec3 c = Vec3::Zero();
-        for (const Point &p : ps)
-            c += toVec(p);
-        return ps.empty() ? c : Vec3(c / static_cast<double>(ps.size()));
-    }
-};
-
-template <class A, class B>
-std::optional<Vec3> intersectionPoint(const A &a, const B &b)
+// Where segment [a, b] meets triangle t, in doubles, for the report only (no decision rests
+// on it). CGAL 5.5's triangle–triangle intersection construction can raise SIGFPE (GMP given a
+// NaN) when an edge of one triangle lies in the other's plane, as on remeshed box faces.
+std::optional<Vec3> segmentCrossing(const Vec3 &a, const Vec3 &b, const std::array<Vec3, 3> &t)
 {
-    const auto result = CGAL::intersection(a, b);
-    if (!result)
-        return std::nullopt;
-    return boost::apply_visitor(Representative(), *result);
+    const Vec3 n = (t[1] - t[0]).cross(t[2] - t[0]);
+    const double da = n.dot(a - t[0]), db = n.dot(b - t[0]);
+    Vec3 candidates[3];
+    int count = 0;
+    if (da == 0.0)
+        candidates[count++] = a;
+    if (db == 0.0)
+        candidates[count++] = b;
+    if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0))
+        candidates[count++] = a + da / (da - db) * (b - a);
+    const double slack = 1e-9 * n.squaredNorm();
+    for (int c = 0; c < count; ++c) {
+        bool inside = true;
+        for (int k = 0; k < 3 && inside; ++k)
+            inside = (t[(k + 1) % 3] - t[k]).cross(candidates[c] - t[k]).dot(n) >= -slack;
+        if (inside)
+            return candidates[c];
+    }
+    return std::nullopt;
 }
 
 class PairTester {
@@ -75,7 +81,7 @@ public:
         if (n == 0) {
             if (!CGAL::do_intersect(tf, tg))
                 return std::nullopt;
-            return wantPosition ? intersectionPoint(tf, tg).value_or(centre(f, g)) : Vec3::Zero();
+            return wantPosition ? meetingPoint(f, g, {0, 1, 2}, {0, 1, 2}) : Vec3::Zero();
         }
         if (n == 1) {
             // Sharing vertex p, T1 ∩ T2 ≠ {p} exactly when the edge of one opposite p meets the
@@ -83,10 +89,9 @@ public:
             // inside the other triangle (convexity), coplanar or not.
             const Segment sf(point(f.v[(sharedF[0] + 1) % 3]), point(f.v[(sharedF[0] + 2) % 3]));
             const Segment sg(point(g.v[(sharedG[0] + 1) % 3]), point(g.v[(sharedG[0] + 2) % 3]));
-            if (CGAL::do_intersect(sf, tg))
-                return wantPosition ? intersectionPoint(sf, tg).value_or(centre(f, g)) : Vec3::Zero();
-            if (CGAL::do_intersect(sg, tf))
-                return wantPosition ? intersectionPoint(sg, tf).value_or(centre(f, g)) : Vec3::Zero();
+            if (CGAL::do_intersect(sf, tg) || CGAL::do_intersect(sg, tf))
+                return wantPosition ? meetingPoint(f, g, {(sharedF[0] + 1) % 3}, {(sharedG[0] + 1) % 3})
+                                    : Vec3::Zero();
             return std::nullopt;
         }
         // Sharing edge uv: if the opposite corners a, b are off each other's plane the triangles
@@ -103,6 +108,21 @@ public:
 
 private:
     Point point(int v) const { return toPoint(m_model.vertices[v]); }
+    // A point where the edges starting at the given corners of one face cross the other face;
+    // the centre of both when rounding hides every crossing.
+    Vec3 meetingPoint(const Face &f, const Face &g, std::initializer_list<int> edgesF,
+                      std::initializer_list<int> edgesG) const
+    {
+        const auto &x = m_model.vertices;
+        const std::array<Vec3, 3> pf{x[f.v[0]], x[f.v[1]], x[f.v[2]]}, pg{x[g.v[0]], x[g.v[1]], x[g.v[2]]};
+        for (int k : edgesF)
+            if (const auto p = segmentCrossing(pf[k], pf[(k + 1) % 3], pg))
+                return *p;
+        for (int k : edgesG)
+            if (const auto p = segmentCrossing(pg[k], pg[(k + 1) % 3], pf))
+                return *p;
+        return centre(f, g);
+    }
     Vec3 centre(const Face &f, const Face &g) const
     {
         Vec3 c = Vec3::Zero();
@@ -141,29 +161,32 @@ void checkIntersections(const CheckInput &in, ProblemSink &sink, Progress &progr
         boxes.emplace_back(tester.triangle(faces[i]).bbox(), static_cast<int>(i));
 
     // The box search hands out candidate pairs (adjacent triangles' boxes always overlap); they
-    // are decided in parallel by chunks and reported in the order found, as a serial check would.
+    // are decided in parallel by chunks, then reported in the order found, each with where the
+    // triangles meet while the report still lists problems, as a serial check would.
     std::vector<std::pair<int, int>> chunk;
-    std::vector<std::optional<Vec3>> where;
+    std::vector<char> meets;
     std::size_t pairs = 0;
     const auto decide = [&] {
-        where.assign(chunk.size(), std::nullopt);
-        const bool list = !sink.full(validity_check::surfaceIntersection);
+        meets.assign(chunk.size(), 0);
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk.size(), 1024),
                           [&](const tbb::blocked_range<std::size_t> &r) {
                               for (std::size_t c = r.begin(); c < r.end(); ++c)
-                                  where[c] = tester.test(faces[chunk[c].first], faces[chunk[c].second], list);
+                                  meets[c] = tester.test(faces[chunk[c].first], faces[chunk[c].second], false)
+                                                 .has_value();
                           });
         for (std::size_t c = 0; c < chunk.size(); ++c) {
-            if (!where[c])
+            if (!meets[c])
                 continue;
             const Face &f = faces[chunk[c].first], &g = faces[chunk[c].second];
+            const bool list = !sink.full(validity_check::surfaceIntersection);
+            const Vec3 where = list ? tester.test(f, g, true).value_or(Vec3::Zero()) : Vec3::Zero();
             const Surface &sf = model.surfaces[f.surface], &sg = model.surfaces[g.surface];
             std::vector<std::string> names{sf.name};
             if (f.surface != g.surface)
                 names.push_back(sg.name);
-            sink.add(validity_check::surfaceIntersection, names, *where[c],
+            sink.add(validity_check::surfaceIntersection, names, where,
                      "triangle " + std::to_string(f.triangle) + " of " + sf.name + " and triangle "
-                         + std::to_string(g.triangle) + " of " + sg.name + " intersect near " + pointText(*where[c]));
+                         + std::to_string(g.triangle) + " of " + sg.name + " intersect near " + pointText(where));
         }
         chunk.clear();
     };

@@ -6,6 +6,7 @@
 #include "model/topology.h"
 #include "model/validity.h"
 
+#include <Eigen/Geometry>
 #include <QtTest>
 
 #include <cmath>
@@ -226,6 +227,25 @@ private slots:
         const Surface below = triangle("below", {0.5, 0, 0}, {1, -1, 0}, {0, -1, 0});
         const ValidityReport r = checkValidity(modelOf({square("a"), below}));
         QCOMPARE(r.count(check::surfaceIntersection), std::size_t(1));
+    }
+
+    // Two triangles of a remeshed box face and a fault: an edge of one lies in the other's plane.
+    // CGAL 5.5's construction of their intersection raises SIGFPE; the report must still say
+    // where they meet, on both triangles.
+    void edgeInTheOtherPlaneIsReportedWithoutCrashing()
+    {
+        const Vec3 f0(8049.6775117088682, -3279.8963082757773, 1009.9222794748259),
+            f1(8199.3095703125, -3582.5927734375, 979.3951416015625), f2(7607.73681640625, -3582.5927734375, 1096.326171875);
+        const Vec3 g0(7667.48681640625, -3582.5927734375, 1084.5301513671875),
+            g1(8199.677734375, -3582.5927734375, 779.33453369140625), g2(7608.26220703125, -3582.5927734375, 896.2364501953125);
+        const ValidityReport r = checkValidity(modelOf({triangle("fault", f0, f1, f2), triangle("box", g0, g1, g2)}));
+        QCOMPARE(r.count(check::surfaceIntersection), std::size_t(1));
+        for (const ValidityProblem &p : r.problems)
+            if (p.check == check::surfaceIntersection) {
+                QVERIFY(std::abs(p.position.y() - g0.y()) < 1e-9); // in the box face's plane
+                const Vec3 n = (f1 - f0).cross(f2 - f0).normalized();
+                QVERIFY(std::abs(n.dot(p.position - f0)) < 1e-6); // and in the fault triangle's
+            }
     }
 
     void selfIntersectionOfOneSurface()
