@@ -82,7 +82,6 @@ public:
         m_result.rvdSeconds += m_last.rvdSeconds;
         m_result.delaunaySeconds += m_last.delaunaySeconds;
         m_result.neighbourSearches = m_workspace.neighbourReuse.searches;
-        m_result.neighbourReuses = m_workspace.neighbourReuse.reuses;
         return m_last;
     }
 

@@ -50,7 +50,6 @@ struct CvtResult {
     double rvdSeconds = 0;             // restricted Voronoi integration, summed
     double delaunaySeconds = 0;        // neighbours of the sites (Delaunay or kd-tree), summed
     int neighbourSearches = 0;         // k-nearest lists searched afresh
-    int neighbourReuses = 0;           // evaluations that reused the lists (sites moved little)
     int threads = 0;
 };
 

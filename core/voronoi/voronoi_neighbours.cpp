@@ -106,7 +106,6 @@ VoronoiNeighbours::VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch se
     : m_search(search), m_sites(std::move(sites)), m_kdOnce(std::make_unique<std::once_flag>())
 {
     checkSites();
-    const int n = siteCount();
     if (search == NeighbourSearch::Delaunay) {
         detail::DelaunayLists lists = detail::delaunayNeighbourLists(m_sites);
         m_hidden = std::move(lists.hidden);
@@ -119,9 +118,7 @@ VoronoiNeighbours::VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch se
     } else {
         buildNearest(hints); // sorted already
     }
-    for (int s = 0; s < n && m_firstVisible < 0; ++s)
-        if (!m_hidden[s])
-            m_firstVisible = s;
+    findFirstVisible();
 }
 
 VoronoiNeighbours::VoronoiNeighbours(std::vector<Vec3> sites, NeighbourReuse &reuse)
@@ -153,6 +150,11 @@ VoronoiNeighbours::VoronoiNeighbours(std::vector<Vec3> sites, NeighbourReuse &re
             reuse.maxDrift = 0.0;
         }
     }
+    findFirstVisible();
+}
+
+void VoronoiNeighbours::findFirstVisible()
+{
     for (int s = 0; s < siteCount() && m_firstVisible < 0; ++s)
         if (!m_hidden[s])
             m_firstVisible = s;
@@ -180,7 +182,6 @@ bool VoronoiNeighbours::reuseNearest(const NeighbourReuse &reuse)
     if (!(largest <= reuse.maxDrift))
         return false;
     const int slots = kNearest;
-    std::vector<int> counts(n, 0);
     m_neighbours.assign(static_cast<std::size_t>(n) * slots, -1);
     m_distances.assign(m_neighbours.size(), 0.0);
     m_complete.assign(n, std::numeric_limits<double>::infinity());
@@ -209,24 +210,12 @@ bool VoronoiNeighbours::reuseNearest(const NeighbourReuse &reuse)
                 m_neighbours[static_cast<std::size_t>(i) * slots + a] = kept[a].second;
                 m_distances[static_cast<std::size_t>(i) * slots + a] = kept[a].first;
             }
-            counts[i] = count;
             m_complete[i] = std::max(radius, 0.0);
         }
     });
     if (duplicate.load())
         return false;
-    m_offsets.assign(n + 1, 0);
-    std::size_t used = 0;
-    for (int i = 0; i < n; ++i) {
-        for (int a = 0; a < counts[i]; ++a) {
-            m_neighbours[used] = m_neighbours[static_cast<std::size_t>(i) * slots + a];
-            m_distances[used] = m_distances[static_cast<std::size_t>(i) * slots + a];
-            ++used;
-        }
-        m_offsets[i + 1] = static_cast<int>(used);
-    }
-    m_neighbours.resize(used);
-    m_distances.resize(used);
+    compactSlots(slots);
     m_hidden.assign(n, 0);
     return true;
 }
@@ -248,7 +237,6 @@ void VoronoiNeighbours::buildNearest(const NeighbourHints *hints)
 {
     const int n = siteCount();
     const int k = std::min(n, kNearest + 1); // the site itself comes back too
-    m_offsets.assign(n + 1, 0);
     m_neighbours.assign(static_cast<std::size_t>(n) * (k - 1 > 0 ? k - 1 : 0), -1);
     m_complete.assign(n, std::numeric_limits<double>::infinity());
     m_hidden.assign(n, 0);
@@ -322,18 +310,23 @@ void VoronoiNeighbours::buildNearest(const NeighbourHints *hints)
                 m_complete[i] = farthest;
         }
     });
-    // Every list has k − 1 slots; compact the unused ones (only when the site itself was missed,
-    // or k > n: rare, so full lists skip the serial copy).
-    const std::size_t slots = static_cast<std::size_t>(k > 1 ? k - 1 : 0);
+    // Every list has k − 1 slots; unused ones only when the site itself was missed, or k > n.
+    compactSlots(k > 1 ? k - 1 : 0);
+}
+
+void VoronoiNeighbours::compactSlots(int slots)
+{
+    const int n = siteCount();
+    m_offsets.assign(n + 1, 0);
     if (std::find(m_neighbours.begin(), m_neighbours.end(), -1) == m_neighbours.end()) {
-        for (int i = 0; i < n; ++i)
-            m_offsets[i + 1] = static_cast<int>((i + 1) * slots);
+        for (int i = 0; i < n; ++i) // full lists skip the serial copy
+            m_offsets[i + 1] = (i + 1) * slots;
         return;
     }
     std::size_t used = 0;
     for (int i = 0; i < n; ++i) {
-        for (int a = 0; a < k - 1; ++a) {
-            const std::size_t from = static_cast<std::size_t>(i) * (k - 1) + a;
+        for (int a = 0; a < slots; ++a) {
+            const std::size_t from = static_cast<std::size_t>(i) * slots + a;
             if (m_neighbours[from] >= 0) {
                 m_neighbours[used] = m_neighbours[from];
                 m_distances[used] = m_distances[from];

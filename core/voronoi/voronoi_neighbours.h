@@ -107,7 +107,10 @@ private:
     int approximateNearest(const Vec3 &q) const;
     void buildNearest(const NeighbourHints *hints);
     bool reuseNearest(const NeighbourReuse &reuse);
+    // Drops the unused (−1) slots of lists laid out `slots` per site, and sets the offsets.
+    void compactSlots(int slots);
     void checkSites() const;
+    void findFirstVisible();
     void sortByDistance();
 
     NeighbourSearch m_search = NeighbourSearch::Delaunay;
