@@ -6,8 +6,10 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 namespace stratamesh::bench {
 
@@ -38,6 +40,18 @@ double peakRssMb()
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return usage.ru_maxrss / 1024.0; // kilobytes on Linux
+}
+
+void printSpread(const char *what, std::vector<double> seconds)
+{
+    if (seconds.size() < 2)
+        return;
+    std::sort(seconds.begin(), seconds.end());
+    const std::size_t n = seconds.size();
+    const double median = n % 2 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
+    std::printf("  %s over %zu runs: min %.3f s, median %.3f s, max %.3f s\n", what, n, seconds.front(), median,
+                seconds.back());
+    std::fflush(stdout);
 }
 
 BenchResult runCase(const std::string &name, const RestrictionDomain &domain, int sites, int iterations,

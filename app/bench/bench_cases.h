@@ -6,6 +6,7 @@
 #include "voronoi/voronoi_neighbours.h"
 
 #include <string>
+#include <vector>
 
 namespace stratamesh::bench {
 
@@ -34,5 +35,9 @@ BenchResult runCase(const std::string &name, const RestrictionDomain &domain, in
                     double alpha, int threads, NeighbourSearch search, double setupSeconds);
 
 double peakRssMb();
+
+// "  <what> over N runs: min …, median …, max … s", for timings of repeated runs in one process
+// (the machine's load varies between runs; the spread shows by how much). Nothing for one run.
+void printSpread(const char *what, std::vector<double> seconds);
 
 } // namespace stratamesh::bench

@@ -1,5 +1,7 @@
 #include "bench_remesh.h"
 
+#include "bench_cases.h"
+
 #include "io/model_reader.h"
 #include "model/topology.h"
 #include "model/validity.h"
@@ -21,6 +23,9 @@
 #include <exception>
 #include <memory>
 #include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace stratamesh::bench {
 
@@ -122,7 +127,7 @@ void print(const Row &r)
 
 } // namespace
 
-int runRemeshBench(const std::string &dataDir, int threads, int iterations)
+int runRemeshBench(const std::string &dataDir, int threads, int iterations, int repeat)
 {
     try {
         std::unique_ptr<tbb::global_control> limit;
@@ -141,6 +146,16 @@ int runRemeshBench(const std::string &dataDir, int threads, int iterations)
         print(row);
         std::printf("    sampling %.2f s, mesh building %.2f s, %zu ledger records\n", ours.timings.samplingSeconds,
                     ours.timings.meshSeconds, ours.ledger.size());
+        std::vector<double> totals{ours.timings.totalSeconds};
+        for (int r = 1; r < repeat; ++r) {
+            const RemeshResult again = remeshModel(input, params);
+            if (computeMeshStatistics(again.model).vertices != row.stats.vertices || again.ledger.size() != ours.ledger.size())
+                throw std::runtime_error("run " + std::to_string(r + 1) + " gave another model than the first");
+            std::printf("    run %d: %.2f s (sampling %.2f s, mesh building %.2f s)\n", r + 1, again.timings.totalSeconds,
+                        again.timings.samplingSeconds, again.timings.meshSeconds);
+            totals.push_back(again.timings.totalSeconds);
+        }
+        printSpread("ours", totals);
 
         // The same target edge length for CGAL: the one our number of sites stands for.
         double area = 0.0;

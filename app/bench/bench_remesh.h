@@ -9,7 +9,8 @@
 
 namespace stratamesh::bench {
 
-// Reads modelA5.ml from dataDir; threads = 0 lets TBB choose. Returns 0, or 1 on error.
-int runRemeshBench(const std::string &dataDir, int threads, int iterations);
+// Reads modelA5.ml from dataDir; threads = 0 lets TBB choose; our remesh runs `repeat` times (the
+// same model must come out each time). Returns 0, or 1 on error.
+int runRemeshBench(const std::string &dataDir, int threads, int iterations, int repeat = 1);
 
 } // namespace stratamesh::bench

@@ -1,9 +1,10 @@
 // stratamesh-bench [--case a|b|complexity|remesh|all] [--data-dir DIR] [--iterations N] [--threads N] [--alpha A]
-//                  [--neighbours delaunay|nearest|both]
+//                  [--neighbours delaunay|nearest|both] [--repeat N]
 // Prints the Voronoi engine figures of issue 3: (a) modelA5 at 5000 sites, (b) a generated
 // surface of 1,000,000 triangles at 30,000 sites, 100 iterations each by default, with the
 // Delaunay neighbours and with the k nearest ones (same diagram, voronoi_neighbours.h); and the
 // complexity section (issue 5: Tables 3.2-3.4 beside the thesis, 10,000 cells on modelA5).
+// --repeat N runs cases (a), (b) and our remesh N times and prints the spread of their timings.
 #include "bench_cases.h"
 #include "bench_complexity.h"
 #include "bench_remesh.h"
@@ -11,6 +12,7 @@
 #include "io/model_reader.h"
 #include "model/topology.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -43,6 +45,17 @@ void print(const bench::BenchResult &r)
     std::fflush(stdout);
 }
 
+template <class Run> void runRepeated(int repeat, Run &&run)
+{
+    std::vector<double> seconds;
+    for (int r = 0; r < repeat; ++r) {
+        const bench::BenchResult result = run();
+        print(result);
+        seconds.push_back(result.totalSeconds);
+    }
+    bench::printSpread("optimisation", seconds);
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -50,7 +63,7 @@ int main(int argc, char **argv)
     // The data folder: --data-dir, else STRATAMESH_DATA_DIR, else the one configured by CMake.
     const char *environment = std::getenv("STRATAMESH_DATA_DIR");
     std::string which = "all", dataDir = environment ? environment : STRATAMESH_BENCH_DATA_DIR, neighbours = "both";
-    int iterations = 100, threads = 0;
+    int iterations = 100, threads = 0, repeat = 1;
     double alpha = 0;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -73,9 +86,11 @@ int main(int argc, char **argv)
             alpha = std::atof(value().c_str());
         else if (a == "--neighbours")
             neighbours = value();
+        else if (a == "--repeat")
+            repeat = std::max(1, std::atoi(value().c_str()));
         else {
             std::fprintf(stderr, "usage: stratamesh-bench [--case a|b|complexity|remesh|all] [--data-dir DIR] [--iterations N] "
-                                 "[--threads N] [--alpha A] [--neighbours delaunay|nearest|both]\n");
+                                 "[--threads N] [--alpha A] [--neighbours delaunay|nearest|both] [--repeat N]\n");
             return 2;
         }
     }
@@ -96,20 +111,24 @@ int main(int argc, char **argv)
             const RestrictionDomain domain = makeRestrictionDomain(model);
             const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             for (const auto &[search, label] : searches)
-                print(bench::runCase("(a) modelA5, 5000 sites, " + label, domain, 5000, iterations, alpha, threads,
-                                     search, setup));
+                runRepeated(repeat, [&] {
+                    return bench::runCase("(a) modelA5, 5000 sites, " + label, domain, 5000, iterations, alpha,
+                                          threads, search, setup);
+                });
         }
         if (which == "b" || which == "all") {
             const auto start = std::chrono::steady_clock::now();
             const RestrictionDomain domain = bench::generatedSurface(1000000);
             const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             for (const auto &[search, label] : searches)
-                print(bench::runCase("(b) generated surface, 30000 sites, " + label, domain, 30000, iterations, alpha,
-                                     threads, search, setup));
+                runRepeated(repeat, [&] {
+                    return bench::runCase("(b) generated surface, 30000 sites, " + label, domain, 30000, iterations,
+                                          alpha, threads, search, setup);
+                });
         }
         if ((which == "complexity" || which == "all") && bench::runComplexityBench(dataDir, threads) != 0)
             return 1;
-        if ((which == "remesh" || which == "all") && bench::runRemeshBench(dataDir, threads, iterations) != 0)
+        if ((which == "remesh" || which == "all") && bench::runRemeshBench(dataDir, threads, iterations, repeat) != 0)
             return 1;
     } catch (const std::exception &e) {
         std::fprintf(stderr, "stratamesh-bench: %s\n", e.what());
