@@ -1,8 +1,7 @@
 // The PLC of a model and its TetGen .poly file: seeds strictly inside their regions, facets on
 // the merged points with surface markers, and Debian's tetgen executable reading the file.
 #include "common/error.h"
-#include "model/synthetic_models.h"
-#include "model/topology.h"
+#include "tetgen_test_models.h"
 #include "volume/plc.h"
 #include "volume/region_winding.h"
 #include "volume/tetgen_poly_writer.h"
@@ -17,17 +16,9 @@
 #include <set>
 
 using namespace stratamesh;
+using namespace stratamesh::test;
 
 namespace {
-
-// A 1000 × 600 × 400 box cut by one flat horizon: two regions, every contact conformal.
-Model twoRegionBox()
-{
-    LayeredBoxParams p;
-    p.horizons = 1;
-    p.edgeLength = 150.0;
-    return recoverTopology(layeredBox(p));
-}
 
 // Tet attributes of a TetGen .ele file (one attribute column).
 std::multiset<int> eleAttributes(const QString &path)
