@@ -7,6 +7,7 @@
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
+#include "io/ringmesh_reader.h"
 #include "mesh/model_conversion.h"
 #include "model/topology.h"
 
@@ -19,7 +20,7 @@ namespace {
 bool isModelFormat(const QString &path)
 {
     const QString ext = QFileInfo(path).suffix().toLower();
-    return ext == "ml" || ext == "ts" || ext == "obj" || ext == "off" || ext == "stl" || ext == "ply";
+    return ext == "ml" || ext == "ts" || ext == "gm" || ext == "obj" || ext == "off" || ext == "stl" || ext == "ply";
 }
 
 } // namespace
@@ -42,13 +43,15 @@ int runConvert(CommandArgs &args)
     const QString output = args.positional(QStringLiteral("output file"));
     args.finish();
     if (!isExportFile(output.toStdString()))
-        throw UsageError(QStringLiteral("cannot tell the output format of '%1' (use .ml, .ts, .so, .vtu, .vtk, "
-                                        ".vtp, .msh, .obj, .off, .stl or .ply)")
+        throw UsageError(QStringLiteral("cannot tell the output format of '%1' (use .ml, .ts, .gm, .so, .vtu, "
+                                        ".vtk, .vtp, .msh, .obj, .off, .stl or .ply)")
                              .arg(output));
 
     ExportReport report;
     QJsonObject counts;
-    if (isMeshReaderFile(in.toStdString())) {
+    // A GeoModel without region meshes is a B-Rep: read it whole (universe, layers, features).
+    const bool brepGeoModel = isRingMeshFile(in.toStdString()) && !hasRingMeshRegionMeshes(in.toStdString());
+    if (isMeshReaderFile(in.toStdString()) && !brepGeoModel) {
         const VolumeMesh mesh = readVolumeMesh(in.toStdString());
         counts = QJsonObject{{"points", qint64(mesh.points.size())},    {"cells", qint64(mesh.cells.size())},
                              {"triangles", qint64(mesh.triangles.size())}, {"edges", qint64(mesh.edges.size())},

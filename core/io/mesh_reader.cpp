@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "io/gmsh_reader.h"
+#include "io/ringmesh_reader.h"
 #include "io/stl_ply_reader.h"
 #include "io/tsolid_reader.h"
 #include "io/vtk_reader.h"
@@ -36,7 +37,7 @@ bool isVolumeMeshFile(const std::string &path)
 bool isMeshReaderFile(const std::string &path)
 {
     const std::string ext = lowerExtension(path);
-    return isVolumeMeshFile(path) || ext == ".stl" || ext == ".ply";
+    return isVolumeMeshFile(path) || ext == ".stl" || ext == ".ply" || ext == ".gm";
 }
 
 VolumeMesh readVolumeMesh(const std::string &path)
@@ -50,8 +51,10 @@ VolumeMesh readVolumeMesh(const std::string &path)
         return readVtk(path);
     if (ext == ".stl" || ext == ".ply")
         return readStlOrPly(path);
+    if (ext == ".gm")
+        return readRingMeshVolume(path);
     throw FileError(path, 0,
-                    "unknown mesh file extension '" + ext + "' (use .so, .msh, .vtu, .vtk, .vtp, .stl or .ply)");
+                    "unknown mesh file extension '" + ext + "' (use .so, .msh, .vtu, .vtk, .vtp, .stl, .ply or .gm)");
 }
 
 Model readMeshAsModel(const std::string &path) { return modelFromMesh(readVolumeMesh(path)); }

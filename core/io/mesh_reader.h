@@ -13,7 +13,8 @@ namespace stratamesh {
 
 // True for .so, .msh, .vtu, .vtk, .vtp (case-insensitive): the formats that may hold cells.
 bool isVolumeMeshFile(const std::string &path);
-// True for every extension readVolumeMesh() knows: the above plus .stl and .ply.
+// True for every extension readVolumeMesh() knows: the above plus .stl, .ply and .gm (RINGMesh:
+// its surfaces, and the tets of its meshed regions).
 bool isMeshReaderFile(const std::string &path);
 
 // Throws FileError for an unknown extension or unreadable content (file, line and cause).

@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "io/gocad_writer.h"
+#include "io/ringmesh_writer.h"
 #include "io/surface_mesh_writer.h"
 #include "io/tsolid_writer.h"
 #include "io/vtk_writer.h"
@@ -28,7 +29,7 @@ std::string lowerExtension(const std::string &path)
 [[noreturn]] void unknownExtension(const std::string &path)
 {
     throw FileError(path, 0, "unknown output extension '" + lowerExtension(path) +
-                                 "' (use .ml, .ts, .so, .vtu, .vtk, .vtp, .msh, .obj, .off, .stl or .ply)");
+                                 "' (use .ml, .ts, .gm, .so, .vtu, .vtk, .vtp, .msh, .obj, .off, .stl or .ply)");
 }
 
 std::string gmshName(const GmshWriteOptions &o)
@@ -55,6 +56,9 @@ bool writeAsMesh(const VolumeMesh &mesh, const std::string &path, const ExportOp
     } else if (ext == ".so") {
         report.format = "Gocad TSolid";
         writeGocadTSolid(mesh, path);
+    } else if (ext == ".gm" && mesh.hasCells()) {
+        report.format = "RINGMesh GeoModel";
+        writeRingMeshVolume(mesh, path);
     } else {
         return false;
     }
@@ -70,6 +74,9 @@ bool writeAsModel(const Model &model, const std::string &path, const ExportOptio
     } else if (ext == ".ts") {
         report.format = "Gocad TSurf";
         writeGocadTSurf(model, path, options.surface);
+    } else if (ext == ".gm") {
+        report.format = "RINGMesh GeoModel";
+        writeRingMeshModel(model, path);
     } else if (isSurfaceMeshFile(path)) {
         report.format = "surface mesh " + ext;
         writeSurfaceMesh(model, path, options.surface);
@@ -84,8 +91,8 @@ bool writeAsModel(const Model &model, const std::string &path, const ExportOptio
 bool isExportFile(const std::string &path)
 {
     const std::string ext = lowerExtension(path);
-    return ext == ".ml" || ext == ".ts" || ext == ".so" || ext == ".vtu" || ext == ".vtk" || ext == ".vtp" ||
-           ext == ".msh" || isSurfaceMeshFile(path);
+    return ext == ".ml" || ext == ".ts" || ext == ".gm" || ext == ".so" || ext == ".vtu" || ext == ".vtk" ||
+           ext == ".vtp" || ext == ".msh" || isSurfaceMeshFile(path);
 }
 
 ExportReport exportModel(const Model &model, const std::string &path, const ExportOptions &options)

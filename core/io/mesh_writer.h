@@ -1,5 +1,6 @@
 // Exporting a surface model or a volume mesh, the format chosen by the extension:
 //   .ml  Gocad Model3d      .ts  Gocad TSurf        .so  Gocad TSolid (tets only)
+//   .gm  RINGMesh GeoModel version 2 (surfaces, and the cells of a volume mesh per region)
 //   .vtu VTK XML            .vtk VTK legacy 4.2     .vtp VTK poly data (surfaces only)
 //   .msh Gmsh 4.1 or 2.2    .obj .off .stl .ply     one surface (OpenMesh)
 // A model written as a mesh goes through meshFromModel(); a mesh written as a Gocad surface

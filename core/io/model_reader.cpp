@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "io/gocad_reader.h"
 #include "io/mesh_reader.h"
+#include "io/ringmesh_reader.h"
 #include "io/surface_mesh_reader.h"
 
 #include <algorithm>
@@ -25,7 +26,8 @@ std::string lowerExtension(const std::string &path)
 bool isReadableModelFile(const std::string &path)
 {
     const std::string ext = lowerExtension(path);
-    return ext == ".ml" || ext == ".ts" || ext == ".obj" || ext == ".off" || isVolumeMeshFile(path);
+    return ext == ".ml" || ext == ".ts" || ext == ".obj" || ext == ".off" || ext == ".gm" ||
+           isVolumeMeshFile(path);
 }
 
 Model readModel(const std::string &path)
@@ -33,7 +35,7 @@ Model readModel(const std::string &path)
     const std::string ext = lowerExtension(path);
     if (!isReadableModelFile(path))
         throw FileError(path, 0, "unknown model file extension '" + ext +
-                                     "' (expected .ml, .ts, .obj, .off, .so, .msh, .vtu, .vtk or .vtp)");
+                                     "' (expected .ml, .ts, .gm, .obj, .off, .so, .msh, .vtu, .vtk or .vtp)");
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw FileError(path, 0, "cannot open the file (missing or not a regular file)");
@@ -41,6 +43,8 @@ Model readModel(const std::string &path)
         return readGocadFile(path);
     if (ext == ".obj" || ext == ".off")
         return readSurfaceMesh(path);
+    if (ext == ".gm")
+        return readRingMeshModel(path);
     return readMeshAsModel(path); // volume meshes: their surfaces and regions, cells dropped
 }
 

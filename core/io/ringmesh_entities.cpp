@@ -1,0 +1,300 @@
+#include "io/ringmesh_entities.h"
+
+#include "common/error.h"
+
+#include <cstdlib>
+#include <optional>
+#include <sstream>
+
+namespace stratamesh {
+
+namespace {
+
+std::vector<std::string> fields(const std::string &line)
+{
+    std::istringstream in(line);
+    std::vector<std::string> out;
+    for (std::string f; in >> f;)
+        out.push_back(std::move(f));
+    return out;
+}
+
+class Lines {
+public:
+    Lines(const std::string &text, const std::string &where) : m_where(where)
+    {
+        std::istringstream in(text);
+        for (std::string line; std::getline(in, line);) {
+            if (!line.empty() && line.back() == '\r')
+                line.pop_back();
+            m_lines.push_back(fields(line));
+        }
+    }
+
+    std::size_t size() const { return m_lines.size(); }
+    int number() const { return int(m_next); } // 1-based number of the line last returned
+
+    // The next non-empty line, or nullptr at the end.
+    const std::vector<std::string> *next()
+    {
+        while (m_next < m_lines.size())
+            if (!m_lines[m_next++].empty())
+                return &m_lines[m_next - 1];
+        return nullptr;
+    }
+
+    // The line right after an entity line (it may be empty: no boundaries).
+    const std::vector<std::string> &following(const std::string &what)
+    {
+        if (m_next >= m_lines.size())
+            fail("the file ends before the " + what + " line");
+        return m_lines[m_next++];
+    }
+
+    [[noreturn]] void fail(const std::string &cause) const
+    {
+        throw FileError(m_where, number(), cause);
+    }
+
+    long long integer(const std::string &s, const std::string &what) const
+    {
+        char *end = nullptr;
+        const long long v = std::strtoll(s.c_str(), &end, 10);
+        if (s.empty() || *end != '\0' || v < 0 || v > 2000000000)
+            fail("expected " + what + " (a non-negative integer), found '" + s + "'");
+        return v;
+    }
+
+private:
+    const std::string &m_where;
+    std::vector<std::vector<std::string>> m_lines;
+    std::size_t m_next = 0;
+};
+
+std::optional<GmEntityType> entityType(const std::string &s)
+{
+    for (int t = 0; t < kGmEntityTypes; ++t)
+        if (s == gmEntityTypeName(GmEntityType(t)))
+            return GmEntityType(t);
+    return std::nullopt;
+}
+
+class MeshEntitiesParser {
+public:
+    MeshEntitiesParser(const std::string &text, const std::string &where)
+        : m_in(text, where), m_where(where)
+    {
+    }
+
+    GmMeshEntities run()
+    {
+        while (const std::vector<std::string> *f = m_in.next()) {
+            const std::string &key = (*f)[0];
+            if (key == "Version") {
+                if (f->size() < 2)
+                    m_in.fail("'Version' without a number");
+                m_out.version = int(m_in.integer((*f)[1], "a version"));
+                if (m_out.version > 2)
+                    m_in.fail("unknown .gm version " + (*f)[1]
+                              + " (versions 0, 1 and 2 are known)");
+            } else if (key == "Dimension") {
+                if (f->size() < 2 || (*f)[1] != "3")
+                    m_in.fail("only 3D GeoModels are supported (Dimension 3)");
+            } else if (key == "GeoModel") {
+                if (f->size() > 2)
+                    m_out.name = (*f)[2];
+            } else if (key == "Nb") {
+                count(*f);
+            } else if (key == "Universe") {
+                m_out.universe = signedIds(m_in.following("Universe sides"));
+            } else if (const auto type = entityType(key)) {
+                entity(*type, *f);
+            } // other lines (from other RINGMesh versions) are ignored, as RINGMesh does
+        }
+        checkComplete();
+        return std::move(m_out);
+    }
+
+private:
+    void count(const std::vector<std::string> &f)
+    {
+        if (f.size() < 3)
+            m_in.fail("'Nb' line needs an entity type and a count");
+        const auto type = entityType(f[1]);
+        if (!type)
+            m_in.fail("unknown mesh entity type '" + f[1] + "'");
+        const long long n = m_in.integer(f[2], "an entity count");
+        // Every entity takes two lines: a larger count cannot be honest.
+        if (std::size_t(n) > m_in.size())
+            m_in.fail("Nb " + f[1] + " " + f[2] + " is more than the file's "
+                      + std::to_string(m_in.size()) + " lines can describe");
+        auto &list = m_out.entities[int(*type)];
+        if (!list.empty() || m_counted[int(*type)])
+            m_in.fail("second 'Nb " + f[1] + "' line");
+        m_counted[int(*type)] = true;
+        list.resize(std::size_t(n));
+        m_defined[int(*type)].assign(std::size_t(n), false);
+    }
+
+    void entity(GmEntityType type, const std::vector<std::string> &f)
+    {
+        const std::string typeName = gmEntityTypeName(type);
+        const std::size_t minFields = m_out.version == 1 ? 5 : 4;
+        if (f.size() < minFields)
+            m_in.fail(typeName + " line has " + std::to_string(f.size()) + " fields, version "
+                      + std::to_string(m_out.version) + " needs " + std::to_string(minFields));
+        const long long id = m_in.integer(f[1], "an entity id");
+        auto &list = m_out.entities[int(type)];
+        if (std::size_t(id) >= list.size())
+            m_in.fail(typeName + " " + f[1] + " is beyond 'Nb " + typeName + " "
+                      + std::to_string(list.size()) + "'");
+        if (m_defined[int(type)][std::size_t(id)])
+            m_in.fail(typeName + " " + f[1] + " is defined twice");
+        m_defined[int(type)][std::size_t(id)] = true;
+        GmMeshEntity &e = list[std::size_t(id)];
+        e.line = m_in.number();
+        e.name = f[2];
+        if (m_out.version == 2) {
+            e.meshType = f[3];
+        } else {
+            e.feature = f[3];
+            if (m_out.version == 1)
+                e.meshType = f[4];
+        }
+        const std::vector<std::string> &second =
+            m_in.following(typeName + " " + f[1] + " boundary");
+        if (type == GmEntityType::Region) {
+            e.sides = signedIds(second);
+        } else {
+            // RINGMesh skips the first field ("boundary") without looking at it.
+            for (std::size_t i = 1; i < second.size(); ++i)
+                e.boundaries.push_back(int(m_in.integer(second[i], "a boundary id")));
+        }
+    }
+
+    std::vector<GmSignedId> signedIds(const std::vector<std::string> &f)
+    {
+        std::vector<GmSignedId> out;
+        for (const std::string &s : f) {
+            if (s.size() < 2 || (s[0] != '+' && s[0] != '-'))
+                m_in.fail("expected a signed surface id like +3 or -3, found '" + s + "'");
+            out.push_back({int(m_in.integer(s.substr(1), "a surface id")), s[0] == '+'});
+        }
+        return out;
+    }
+
+    void checkRange(int id, GmEntityType boundaryType, const GmMeshEntity &owner,
+                    const std::string &ownerName)
+    {
+        const std::size_t n = m_out.entities[int(boundaryType)].size();
+        if (id < 0 || std::size_t(id) >= n)
+            throw FileError(m_where, owner.line,
+                            ownerName + " has " + gmEntityTypeName(boundaryType) + " "
+                                + std::to_string(id) + " as boundary, but 'Nb "
+                                + gmEntityTypeName(boundaryType) + "' is " + std::to_string(n));
+    }
+
+    void checkComplete()
+    {
+        for (int t = 0; t < kGmEntityTypes; ++t) {
+            const auto &defined = m_defined[t];
+            for (std::size_t i = 0; i < defined.size(); ++i)
+                if (!defined[i])
+                    m_in.fail(std::string("'Nb ") + gmEntityTypeName(GmEntityType(t)) + " "
+                              + std::to_string(defined.size()) + "' but "
+                              + gmEntityTypeName(GmEntityType(t)) + " " + std::to_string(i)
+                              + " is never described");
+        }
+        if (m_out.entities[int(GmEntityType::Surface)].empty())
+            m_in.fail("the GeoModel has no surface");
+        for (int t = 1; t < kGmEntityTypes; ++t) {
+            const GmEntityType type = GmEntityType(t);
+            const GmEntityType boundaryType = GmEntityType(t - 1);
+            const auto &list = m_out.entities[t];
+            for (std::size_t i = 0; i < list.size(); ++i) {
+                const std::string owner =
+                    std::string(gmEntityTypeName(type)) + " " + std::to_string(i);
+                for (int b : list[i].boundaries)
+                    checkRange(b, boundaryType, list[i], owner);
+                for (const GmSignedId &s : list[i].sides)
+                    checkRange(s.id, boundaryType, list[i], owner);
+            }
+        }
+        for (const GmSignedId &s : m_out.universe)
+            if (std::size_t(s.id) >= m_out.entities[int(GmEntityType::Surface)].size())
+                m_in.fail("Universe has surface " + std::to_string(s.id)
+                          + " as boundary, beyond 'Nb Surface'");
+    }
+
+    Lines m_in;
+    const std::string &m_where;
+    GmMeshEntities m_out;
+    std::array<bool, kGmEntityTypes> m_counted{};
+    std::array<std::vector<bool>, kGmEntityTypes> m_defined;
+};
+
+} // namespace
+
+const char *gmEntityTypeName(GmEntityType type)
+{
+    switch (type) {
+    case GmEntityType::Corner:
+        return "Corner";
+    case GmEntityType::Line:
+        return "Line";
+    case GmEntityType::Surface:
+        return "Surface";
+    case GmEntityType::Region:
+        return "Region";
+    }
+    return "?";
+}
+
+GmMeshEntities parseGmMeshEntities(const std::string &text, const std::string &where)
+{
+    return MeshEntitiesParser(text, where).run();
+}
+
+std::vector<GmGeologicalEntity> parseGmGeologicalEntities(const std::string &text,
+                                                          const GmMeshEntities &mesh,
+                                                          const std::string &where)
+{
+    Lines in(text, where);
+    std::vector<GmGeologicalEntity> out;
+    while (const std::vector<std::string> *f = in.next()) {
+        const std::vector<std::string> &line = *f;
+        if (line.size() >= 3 && line[0] == "No" && line[1] == "geological" && line[2] == "entity")
+            break;
+        if (line[0] == "Nb")
+            continue; // the entities themselves say all we need
+        if (line.size() < 4)
+            in.fail("geological entity line needs a type, an id, a name and a feature");
+        GmGeologicalEntity e;
+        e.type = line[0];
+        e.name = line[2];
+        e.feature = line[3];
+        e.line = in.number();
+        in.integer(line[1], "a geological entity id");
+        const std::vector<std::string> &children =
+            in.following(e.type + " " + line[1] + " children");
+        std::optional<GmEntityType> childType;
+        if (e.type == "Interface")
+            childType = GmEntityType::Surface;
+        else if (e.type == "Contact")
+            childType = GmEntityType::Line;
+        else if (e.type == "Layer")
+            childType = GmEntityType::Region;
+        for (const std::string &c : children) {
+            const long long id = in.integer(c, "a child id");
+            if (childType && std::size_t(id) >= mesh.of(*childType).size())
+                in.fail(e.type + " '" + e.name + "' has " + gmEntityTypeName(*childType) + " " + c
+                        + " as child, but mesh_entities.txt has "
+                        + std::to_string(mesh.of(*childType).size()));
+            e.children.push_back(int(id));
+        }
+        out.push_back(std::move(e));
+    }
+    return out;
+}
+
+} // namespace stratamesh
