@@ -895,7 +895,7 @@ per cell</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Structural models (*.ml *.ts *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;Wavefront OBJ (*.obj);;Object File Format (*.off);;All files (*)</source>
+        <source>Structural models (*.ml *.ts *.gm *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;RINGMesh GeoModel (*.gm);;Wavefront OBJ (*.obj);;Object File Format (*.off);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -896,8 +896,8 @@ par cellule</translation>
         <translation>Vérification de la validité</translation>
     </message>
     <message>
-        <source>Structural models (*.ml *.ts *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;Wavefront OBJ (*.obj);;Object File Format (*.off);;All files (*)</source>
-        <translation>Modèles structuraux (*.ml *.ts *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;Wavefront OBJ (*.obj);;Object File Format (*.off);;Tous les fichiers (*)</translation>
+        <source>Structural models (*.ml *.ts *.gm *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;RINGMesh GeoModel (*.gm);;Wavefront OBJ (*.obj);;Object File Format (*.off);;All files (*)</source>
+        <translation>Modèles structuraux (*.ml *.ts *.gm *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;RINGMesh GeoModel (*.gm);;Wavefront OBJ (*.obj);;Object File Format (*.off);;Tous les fichiers (*)</translation>
     </message>
     <message>
         <source>Loading stopped without a result</source>

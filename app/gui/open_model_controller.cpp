@@ -85,8 +85,8 @@ OpenModelController::~OpenModelController()
 
 QString OpenModelController::fileFilter()
 {
-    return tr("Structural models (*.ml *.ts *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;"
-              "Wavefront OBJ (*.obj);;Object File Format (*.off);;All files (*)");
+    return tr("Structural models (*.ml *.ts *.gm *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;"
+              "RINGMesh GeoModel (*.gm);;Wavefront OBJ (*.obj);;Object File Format (*.off);;All files (*)");
 }
 
 bool OpenModelController::openFile(const QString &path)
