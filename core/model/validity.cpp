@@ -36,6 +36,7 @@ ValidityReport checkValidity(const Model &model, Progress &progress)
     CheckInput in{m, surfaceEdges(m)};
     ProblemSink sink;
     checkSurfaceMeshes(in, sink);
+    checkCloseVertices(in, sink);
     progress.tick(0.1, "validity: sealing");
     checkSealed(in, sink);
     progress.tick(0.15, "validity: region boundaries");

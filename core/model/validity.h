@@ -32,7 +32,13 @@ inline constexpr const char *inconsistentOrientation = "inconsistent_orientation
 inline constexpr const char *surfaceIntersection = "surface_intersection";
 // A region boundary that is not closed or whose sides disagree with the surface normals.
 inline constexpr const char *regionBoundary = "region_boundary";
+// Two distinct points closer than kCloseVertexTolerance × the bounding-box diagonal: volume
+// meshers (TetGen's -T) merge them, which makes duplicated or crossing facets of the triangles.
+inline constexpr const char *closeVertices = "close_vertices";
 } // namespace validity_check
+
+// TetGen 1.5's default point-merge tolerance, relative to the bounding-box diagonal.
+inline constexpr double kCloseVertexTolerance = 1e-8;
 
 struct ValidityProblem {
     std::string check;                 // one of validity_check::*

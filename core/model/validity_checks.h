@@ -36,6 +36,7 @@ void checkSealed(const CheckInput &in, ProblemSink &sink);
 void checkSurfaceMeshes(const CheckInput &in, ProblemSink &sink);
 void checkIntersections(const CheckInput &in, ProblemSink &sink, Progress &progress);
 void checkRegionBoundaries(const CheckInput &in, ProblemSink &sink);
+void checkCloseVertices(const CheckInput &in, ProblemSink &sink);
 
 // Helpers for messages.
 std::string pointText(const Vec3 &p);

@@ -171,6 +171,24 @@ private slots:
         QCOMPARE(checkValidity(modelOf({twice})).count(check::duplicateTriangle), std::size_t(1));
     }
 
+    // The remesh of modelA2 at 1000 sites had two copies of a triangle 1e-12 apart: distinct for
+    // the exact checks, one point for TetGen, which then aborted on "two duplicated facets".
+    void closeVerticesAreWhatTetGenMerges()
+    {
+        const Surface a = makeSurface("a", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+        const Surface b = makeSurface("b", {{0, 0, 1e-12}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+        const ValidityReport r = checkValidity(modelOf({a, b}));
+        QCOMPARE(r.count(check::duplicateTriangle), std::size_t(0));
+        QCOMPARE(r.count(check::closeVertices), std::size_t(1));
+        QVERIFY(!r.valid);
+        const ValidityProblem &p = r.problems.front();
+        QCOMPARE(p.check, std::string(check::closeVertices));
+        QCOMPARE(p.entities, (std::vector<std::string>{"a", "b"}));
+        // 1e-6 of the diagonal is far above the merge tolerance: fine.
+        const Surface c = makeSurface("c", {{0, 0, 1e-6}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+        QCOMPARE(checkValidity(modelOf({a, c})).count(check::closeVertices), std::size_t(0));
+    }
+
     void inconsistentOrientation()
     {
         const Surface flipped = makeSurface("flipped", {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
