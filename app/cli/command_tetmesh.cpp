@@ -1,0 +1,172 @@
+// stratamesh-cli tetmesh MODEL [--quality 1.414] [--max-volume V] [--refine-surfaces]
+//     [--time-limit S] [--memory-limit MB] [-o OUT.(vtu|vtk|msh|so)] [--msh-version 4.1|2.2]
+//     [--report R.json] [--json]
+// A TetGen comparison mesh of a model (thesis §5.2): TetGen runs in its helper process
+// (core/volume/tetgen_runner.h), so an abort, a crash, a time-out or an exhausted memory limit is
+// reported as the outcome, in the report and with exit status 1, never as a crash of this tool.
+#include "cli_output.h"
+#include "command_args.h"
+#include "common/error.h"
+#include "io/mesh_writer.h"
+#include "io/model_reader.h"
+#include "json_report.h"
+#include "model/region_volume.h"
+#include "model/topology.h"
+#include "volume/region_tets.h"
+#include "volume/tet_quality.h"
+#include "volume/tetgen_runner.h"
+
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QSaveFile>
+
+#include <iostream>
+
+namespace stratamesh::cli {
+
+namespace {
+
+void writeJsonFile(const QJsonObject &report, const QString &path)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)
+        || file.write(QJsonDocument(report).toJson(QJsonDocument::Indented)) < 0 || !file.commit())
+        throw FileError(path.toStdString(), 0,
+                        "cannot write the report: " + file.errorString().toStdString());
+}
+
+QJsonArray stringArray(const std::vector<std::string> &items)
+{
+    QJsonArray a;
+    for (const std::string &s : items)
+        a.append(QString::fromStdString(s));
+    return a;
+}
+
+QJsonArray regionsJson(const Model &model, const TetgenResult &result)
+{
+    const std::vector<double> brep = regionVolumes(model);
+    const std::vector<RegionTets> tets =
+        result.outcome == TetgenOutcome::Ok ? regionTets(result.mesh) : std::vector<RegionTets>{};
+    QJsonArray regions;
+    for (std::size_t r = 0; r < model.regions.size(); ++r) {
+        const RegionTets t = r < tets.size() ? tets[r] : RegionTets{};
+        regions.append(QJsonObject{{"name", QString::fromStdString(model.regions[r].name)},
+                                   {"tets", static_cast<qint64>(t.tets)},
+                                   {"volume", t.volume},
+                                   {"brep_volume", brep[r]}});
+    }
+    return regions;
+}
+
+} // namespace
+
+int runTetmesh(CommandArgs &args)
+{
+    TetgenParams params;
+    params.quality = args.doubleOption(QStringLiteral("--quality"), 1.414, 0.0, 1e6);
+    params.maxVolume = args.doubleOption(QStringLiteral("--max-volume"), 0.0, 0.0, 1e300);
+    params.refineSurfaces = args.flag(QStringLiteral("--refine-surfaces"));
+    params.timeLimitSeconds = args.doubleOption(QStringLiteral("--time-limit"), 0.0, 0.0, 1e9);
+    params.memoryLimitMB = args.doubleOption(QStringLiteral("--memory-limit"), 0.0, 0.0, 1e9);
+    const bool json = args.flag(QStringLiteral("--json"));
+    ExportOptions exportOptions;
+    if (const auto version = args.option(QStringLiteral("--msh-version"))) {
+        if (*version == QLatin1String("4.1"))
+            exportOptions.gmsh.version = GmshWriteOptions::Version::V41;
+        else if (*version == QLatin1String("2.2"))
+            exportOptions.gmsh.version = GmshWriteOptions::Version::V22;
+        else
+            throw UsageError(
+                QStringLiteral("--msh-version must be 4.1 or 2.2, not '%1'").arg(*version));
+    }
+    const std::optional<QString> output = args.option(QStringLiteral("-o"));
+    const std::optional<QString> reportPath = args.option(QStringLiteral("--report"));
+    const QString path = args.positional(QStringLiteral("MODEL"));
+    args.finish();
+    if (output) {
+        const QString ext = QFileInfo(*output).suffix().toLower();
+        if (ext != "vtu" && ext != "vtk" && ext != "msh" && ext != "so")
+            throw UsageError(
+                QStringLiteral("the output must be a .vtu, .vtk, .msh or .so file, not '%1'")
+                    .arg(*output));
+    }
+
+    QElapsedTimer clock;
+    clock.start();
+    const Model model = recoverTopology(readModel(path.toStdString()));
+    TetgenResult result = runTetgen(model, params);
+    const bool ok = result.outcome == TetgenOutcome::Ok;
+    VolumeQualityStatistics quality;
+    if (ok) {
+        quality = volumeQuality(result.mesh);
+        for (const TetQuality &q : tetQualities(result.mesh))
+            result.mesh.cellQuality.push_back(q.minDihedralDeg);
+        result.mesh.qualityName = "min_dihedral_deg";
+        if (output)
+            exportVolumeMesh(result.mesh, output->toStdString(), exportOptions);
+    }
+
+    const QJsonObject report{
+        {"file", path},
+        {"output_file", output ? *output : QString()},
+        {"outcome", tetgenOutcomeName(result.outcome)},
+        {"message", QString::fromStdString(result.message)},
+        {"last_output", QString::fromStdString(result.lastOutput)},
+        {"surfaces", stringArray(result.surfaces)},
+        {"switches", QString::fromStdString(result.switches)},
+        {"parameters", QJsonObject{{"quality", params.quality},
+                                   {"max_volume", params.maxVolume},
+                                   {"refine_surfaces", params.refineSurfaces},
+                                   {"time_limit_s", params.timeLimitSeconds},
+                                   {"memory_limit_mb", params.memoryLimitMB}}},
+        {"input", QJsonObject{{"points", static_cast<qint64>(model.vertices.size())},
+                              {"triangles", static_cast<qint64>(model.triangleCount())},
+                              {"regions", static_cast<qint64>(model.regions.size())}}},
+        {"tets", static_cast<qint64>(quality.tets)},
+        {"points", static_cast<qint64>(ok ? result.mesh.points.size() : 0)},
+        {"regions", regionsJson(model, result)},
+        {"tets_located_by_centroid", static_cast<qint64>(result.tetsLocatedByCentroid)},
+        {"tets_without_region", static_cast<qint64>(result.tetsWithoutRegion)},
+        {"min_dihedral_deg", quality.minDihedralDeg},
+        {"max_dihedral_deg", quality.maxDihedralDeg},
+        {"mean_radius_ratio", quality.meanRadiusRatio},
+        {"max_radius_ratio", quality.maxRadiusRatio},
+        {"mean_aspect_ratio", quality.meanAspectRatio},
+        {"slivers", static_cast<qint64>(quality.slivers)},
+        {"pct_slivers", quality.tets > 0 ? 100.0 * quality.slivers / quality.tets : 0.0},
+        {"histograms", QJsonObject{{"min_dihedral_deg", toJson(quality.minDihedral)},
+                                   {"max_dihedral_deg", toJson(quality.maxDihedral)},
+                                   {"inverse_radius_ratio", toJson(quality.inverseRadiusRatio)}}},
+        {"time_s", result.seconds},
+        {"total_time_s", clock.elapsed() / 1000.0},
+    };
+    if (reportPath)
+        writeJsonFile(report, *reportPath);
+    if (json) {
+        printJson(report);
+    } else if (ok) {
+        QTextStream &o = out();
+        o << "tetrahedralised " << QFileInfo(path).fileName() << " with -"
+          << result.switches.c_str() << ": " << quality.tets << " tets, "
+          << result.mesh.points.size() << " points in " << QString::number(result.seconds, 'f', 2)
+          << " s\n"
+          << "  dihedral angles " << QString::number(quality.minDihedralDeg, 'g', 4) << "° to "
+          << QString::number(quality.maxDihedralDeg, 'g', 4) << "°, " << quality.slivers
+          << " slivers (< 5°), mean radius ratio "
+          << QString::number(quality.meanRadiusRatio, 'f', 3) << '\n';
+        if (output)
+            o << "  wrote " << *output << '\n';
+    }
+    if (!ok) {
+        out().flush();
+        std::cerr << "stratamesh-cli tetmesh: " << tetgenOutcomeName(result.outcome) << ": "
+                  << result.message << std::endl;
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace stratamesh::cli
