@@ -1,0 +1,105 @@
+// stratamesh-cli on RINGMesh GeoModels: info reads .gm like .ml, convert writes .gm and reads it
+// back with the same counts and volumes, a volume-meshed .gm converts with its tets, and a broken
+// archive exits 1 with the archive and entry on stderr.
+#include "cli_runner.h"
+#include "support/test_data.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using stratamesh::test::CliRun;
+using stratamesh::test::runCli;
+
+namespace {
+
+QJsonObject jsonOf(const CliRun &r)
+{
+    return QJsonDocument::fromJson(r.out.toUtf8()).object();
+}
+
+} // namespace
+
+class TestCliRingMesh : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+
+private slots:
+    void infoOnAllVersions_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::newRow("version 0") << "modelA1_version0.gm";
+        QTest::newRow("version 1") << "modelA1_version1.gm";
+        QTest::newRow("version 2") << "modelA1_version2.gm";
+    }
+
+    void infoOnAllVersions()
+    {
+        QFETCH(QString, file);
+        STRATAMESH_REQUIRE_DATA(path, file);
+        const CliRun r = runCli({"info", path, "--json"});
+        QVERIFY2(r.finished && r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject report = jsonOf(r);
+        const QJsonObject noBox = report["counts"].toObject()["without_box"].toObject();
+        QCOMPARE(noBox["regions"].toInt(), 4);
+        QCOMPARE(noBox["surfaces"].toInt(), 3);
+        QCOMPARE(noBox["lines"].toInt(), 0);
+        QCOMPARE(noBox["corners"].toInt(), 0);
+        QCOMPARE(report["mesh"].toObject()["triangles"].toInt(), 7932);
+        QVERIFY(report["validity"].toObject()["valid"].toBool());
+    }
+
+    void convertToGmAndBack()
+    {
+        STRATAMESH_REQUIRE_DATA(ml, "modelA1.ml");
+        const QString gm = m_dir.filePath("modelA1.gm");
+        const CliRun w = runCli({"convert", ml, gm});
+        QVERIFY2(w.finished && w.exitCode == 0, qPrintable(w.err));
+        QVERIFY2(w.out.contains("RINGMesh GeoModel"), qPrintable(w.out));
+        const CliRun a = runCli({"info", ml, "--json"});
+        const CliRun b = runCli({"info", gm, "--json"});
+        QVERIFY2(b.finished && b.exitCode == 0, qPrintable(b.err));
+        QCOMPARE(jsonOf(b)["counts"].toObject(), jsonOf(a)["counts"].toObject());
+        QCOMPARE(jsonOf(b)["regions"].toArray(), jsonOf(a)["regions"].toArray());
+        // And on to Gocad again.
+        const QString back = m_dir.filePath("back.ml");
+        const CliRun c = runCli({"convert", gm, back});
+        QVERIFY2(c.finished && c.exitCode == 0, qPrintable(c.err));
+        QCOMPARE(jsonOf(runCli({"info", back, "--json"}))["regions"].toArray(),
+                 jsonOf(a)["regions"].toArray());
+    }
+
+    void volumeMeshedKeepsTets()
+    {
+        STRATAMESH_REQUIRE_DATA(path, "modelA1_volume_meshed.gm");
+        const QString vtu = m_dir.filePath("tets.vtu");
+        const CliRun r = runCli({"convert", path, vtu, "--json"});
+        QVERIFY2(r.finished && r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(jsonOf(r)["counts"].toObject()["cells"].toInt(), 13510);
+        const QString gm = m_dir.filePath("tets.gm");
+        const CliRun g = runCli({"convert", vtu, gm, "--json"});
+        QVERIFY2(g.finished && g.exitCode == 0, qPrintable(g.err));
+        const CliRun back = runCli({"convert", gm, m_dir.filePath("again.vtu"), "--json"});
+        QCOMPARE(jsonOf(back)["counts"].toObject()["cells"].toInt(), 13510);
+    }
+
+    void brokenArchive()
+    {
+        const QString path = m_dir.filePath("broken.gm");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QByteArray(4096, 'x'));
+        f.close();
+        const CliRun r = runCli({"info", path});
+        QVERIFY(r.finished);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(path) && r.err.contains("zip"), qPrintable(r.err));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliRingMesh)
+#include "test_cli_ringmesh.moc"
