@@ -6,6 +6,7 @@
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
 #include "io/ringmesh_reader.h"
+#include "io/ringmesh_topology.h"
 #include "io/ringmesh_writer.h"
 #include "io/zip_archive.h"
 #include "model/model_counts.h"
@@ -281,6 +282,66 @@ private slots:
             QCOMPARE(b.find("GEO::Mesh::vertices", "point")->data,
                      a.find("GEO::Mesh::vertices", "point")->data);
         }
+    }
+
+    void fileTopologyAgrees_data()
+    {
+        QTest::addColumn<QString>("file");
+        for (const char *f :
+             {"modelA1_version0.gm", "modelA1_version1.gm", "modelA1_version2.gm",
+              "modelA1_volume_meshed.gm", "unit_cube_volume_meshed.gm", "modelA2.ml", "modelA5.ml"})
+            QTest::newRow(f) << f;
+    }
+
+    // RINGMesh's corners and lines are the ones we recover, on its files and on ours.
+    void fileTopologyAgrees()
+    {
+        QFETCH(QString, file);
+        STRATAMESH_REQUIRE_DATA(path, file);
+        QTemporaryDir dir;
+        std::string gm = path.toStdString();
+        if (!isRingMeshFile(gm)) {
+            gm = dir.filePath("written.gm").toStdString();
+            writeRingMeshModel(readModel(path.toStdString()), gm);
+        }
+        const Model model = recoverTopology(readModel(gm));
+        const std::vector<std::string> problems = compareRingMeshTopology(gm, model);
+        for (const std::string &p : problems)
+            qWarning("%s", p.c_str());
+        QVERIFY(problems.empty());
+    }
+
+    // A surface that forgets one of its boundary lines in mesh_entities.txt is named.
+    void fileTopologyMismatchIsNamed()
+    {
+        STRATAMESH_REQUIRE_DATA(path, "modelA1_version2.gm");
+        QTemporaryDir dir;
+        const std::string damaged = dir.filePath("damaged.gm").toStdString();
+        {
+            const ZipReader in(path.toStdString());
+            ZipWriter out(damaged);
+            for (const std::string &name : in.names()) {
+                std::string bytes = in.read(name);
+                if (name == "mesh_entities.txt") {
+                    const std::string from =
+                        "Surface 0 No_name GeogramSurfaceMesh\nboundary 0 1 2 7 \n";
+                    const std::size_t at = bytes.find(from);
+                    QVERIFY(at != std::string::npos);
+                    bytes.replace(at, from.size(),
+                                  "Surface 0 No_name GeogramSurfaceMesh\nboundary 0 1 2 \n");
+                }
+                out.add(name, bytes);
+            }
+            out.close();
+        }
+        const Model model = recoverTopology(readModel(damaged));
+        const std::vector<std::string> problems = compareRingMeshTopology(damaged, model);
+        QCOMPARE(problems.size(), std::size_t(1));
+        qInfo("%s", problems[0].c_str());
+        QVERIFY(problems[0].rfind("Line 7 (", 0) == 0);
+        QVERIFY(problems[0].find(
+                    "the file gives it the surfaces {8, 9}, the recovered topology {0, 8, 9}")
+                != std::string::npos);
     }
 
     void convertCommandPath()
