@@ -388,6 +388,50 @@ private slots:
         EXPECT_FILE_ERROR(path, "geological_entities.txt:3", "Surface 6 as child");
     }
 
+    // Cut anywhere, a GeoFile is an error naming its entry: a chunk runs past the end, or what
+    // was cut off (an attribute, the facets) is missing.
+    void everyTruncation()
+    {
+        const QString path = file("cut_anywhere.gm");
+        const std::string raw = faceGeoFile(cubeFaces()[0]);
+        for (std::size_t n = 0; n < raw.size(); n += 7) {
+            Entries e = cubeEntries();
+            e["Surface_0.geogram"] = gzipped(raw.substr(0, n));
+            writeZip(path, e);
+            const std::string message = readError(path);
+            QVERIFY2(message.find(path.toStdString() + ":Surface_0.geogram: ") == 0,
+                     qPrintable(QString("cut at %1: '%2'").arg(n).arg(message.c_str())));
+        }
+    }
+
+    // Random damage inside a GeoFile reads or fails with a FileError; nothing else escapes, and
+    // nothing allocates beyond the address-space cap.
+    void randomByteFlips()
+    {
+        const QString path = file("flipped.gm");
+        const std::string raw = faceGeoFile(cubeFaces()[3]);
+        std::uint32_t state = 12345;
+        const auto next = [&state] { return state = state * 1664525u + 1013904223u; };
+        int errors = 0;
+        for (int round = 0; round < 300; ++round) {
+            std::string damaged = raw;
+            const int flips = 1 + int(next() % 4);
+            for (int f = 0; f < flips; ++f)
+                damaged[next() % damaged.size()] = char(next() >> 24);
+            Entries e = cubeEntries();
+            e["Surface_3.geogram"] = gzipped(damaged);
+            writeZip(path, e);
+            try {
+                readModel(path.toStdString());
+                readRingMeshVolume(path.toStdString());
+            } catch (const FileError &) {
+                ++errors;
+            }
+        }
+        qInfo("%d of 300 damaged files rejected, the rest read", errors);
+        QVERIFY(errors > 0);
+    }
+
     void regionSideBeyondCount()
     {
         const QString path = file("side.gm");
