@@ -87,6 +87,34 @@ private slots:
         QCOMPARE(jsonOf(back)["counts"].toObject()["cells"].toInt(), 13510);
     }
 
+    // The acceptance check: remeshing the .gm gives what remeshing the .ml gives.
+    void remeshMatchesGocad()
+    {
+        STRATAMESH_REQUIRE_DATA(gm, "modelA1_version2.gm");
+        STRATAMESH_REQUIRE_DATA(ml, "modelA1.ml");
+        QJsonObject outputs[2];
+        const QString inputs[2] = {gm, ml};
+        for (int i = 0; i < 2; ++i) {
+            const QString report = m_dir.filePath(QString("remesh%1.json").arg(i));
+            const CliRun r =
+                runCli({"remesh", inputs[i], "--sites", "1000", "-o",
+                        m_dir.filePath(QString("remesh%1.ml").arg(i)), "--report", report});
+            QVERIFY2(r.finished && r.exitCode == 0, qPrintable(r.err));
+            QFile f(report);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            outputs[i] = QJsonDocument::fromJson(f.readAll()).object()["output"].toObject();
+        }
+        QVERIFY(outputs[0]["validity"].toObject()["valid"].toBool());
+        QCOMPARE(outputs[0]["counts"].toObject(), outputs[1]["counts"].toObject());
+        const QJsonObject a = outputs[0]["mesh"].toObject(), b = outputs[1]["mesh"].toObject();
+        for (const char *key :
+             {"mean_quality", "min_angle_deg", "pct_triangles_angle_below_30", "triangles"}) {
+            const double x = a[key].toDouble(), y = b[key].toDouble();
+            qInfo("%s: .gm %g, .ml %g", key, x, y);
+            QVERIFY2(std::abs(x - y) <= 0.02 * std::abs(y), key);
+        }
+    }
+
     void brokenArchive()
     {
         const QString path = m_dir.filePath("broken.gm");
