@@ -1,6 +1,6 @@
 // stratamesh-cli tetmesh MODEL [--quality 1.414] [--max-volume V] [--refine-surfaces]
 //     [--time-limit S] [--memory-limit MB] [-o OUT.(vtu|vtk|msh|so)] [--msh-version 4.1|2.2]
-//     [--report R.json] [--json]
+//     [--report R.json] [--json] [--poly PLC.poly]
 // A TetGen comparison mesh of a model (thesis §5.2): TetGen runs in its helper process
 // (core/volume/tetgen_runner.h), so an abort, a crash, a time-out or an exhausted memory limit is
 // reported as the outcome, in the report and with exit status 1, never as a crash of this tool.
@@ -12,8 +12,10 @@
 #include "json_report.h"
 #include "model/region_volume.h"
 #include "model/topology.h"
+#include "volume/plc.h"
 #include "volume/region_tets.h"
 #include "volume/tet_quality.h"
+#include "volume/tetgen_poly_writer.h"
 #include "volume/tetgen_runner.h"
 
 #include <QElapsedTimer>
@@ -84,6 +86,7 @@ int runTetmesh(CommandArgs &args)
     }
     const std::optional<QString> output = args.option(QStringLiteral("-o"));
     const std::optional<QString> reportPath = args.option(QStringLiteral("--report"));
+    const std::optional<QString> polyPath = args.option(QStringLiteral("--poly"));
     const QString path = args.positional(QStringLiteral("MODEL"));
     args.finish();
     if (output) {
@@ -97,6 +100,9 @@ int runTetmesh(CommandArgs &args)
     QElapsedTimer clock;
     clock.start();
     const Model model = recoverTopology(readModel(path.toStdString()));
+    // The exact PLC, to reproduce a failure with the tetgen executable.
+    if (polyPath)
+        writeTetgenPoly(buildPlc(model), polyPath->toStdString());
     TetgenResult result = runTetgen(model, params);
     const bool ok = result.outcome == TetgenOutcome::Ok;
     VolumeQualityStatistics quality;

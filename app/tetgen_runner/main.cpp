@@ -93,7 +93,7 @@ int main(int argc, char **argv)
     }
     std::string input = argv[2];
     if (input.size() < 5 || input.compare(input.size() - 5, 5, ".poly") != 0) {
-        std::fprintf(stderr, "stratamesh-tetgen: %s is not a .poly file\n", argv[2]);
+        std::fprintf(stderr, "[stratamesh-tetgen] %s is not a .poly file\n", argv[2]);
         return 2;
     }
     try {
@@ -101,23 +101,23 @@ int main(int argc, char **argv)
         std::vector<char> base(input.begin(), input.end() - 5);
         base.push_back('\0');
         if (!in.load_poly(base.data())) {
-            std::fprintf(stderr, "stratamesh-tetgen: cannot read %s\n", argv[2]);
+            std::fprintf(stderr, "[stratamesh-tetgen] cannot read %s\n", argv[2]);
             return 3;
         }
         std::vector<char> switches(argv[1], argv[1] + std::strlen(argv[1]) + 1);
         tetrahedralize(switches.data(), &in, &out);
         if (!writeResult(out, argv[3])) {
-            std::fprintf(stderr, "stratamesh-tetgen: cannot write %s\n", argv[3]);
+            std::fprintf(stderr, "[stratamesh-tetgen] cannot write %s\n", argv[3]);
             return 4;
         }
     } catch (int code) {
         std::fflush(stdout);
-        std::fprintf(stderr, "stratamesh-tetgen: TetGen error %d (%s)\n", code,
+        std::fprintf(stderr, "[stratamesh-tetgen] TetGen error %d (%s)\n", code,
                      tetgenErrorMeaning(code));
         return 10 + code;
     } catch (const std::bad_alloc &) {
         std::fflush(stdout);
-        std::fprintf(stderr, "stratamesh-tetgen: out of memory\n");
+        std::fprintf(stderr, "[stratamesh-tetgen] out of memory\n");
         return 9;
     }
     return 0;

@@ -8,6 +8,10 @@
 
 namespace stratamesh::tetgen_result {
 
+// Starts the helper's own messages on stderr; anything else in the log is TetGen's (or the C
+// library's, as "stratamesh-tetgen: file:line: ...: Assertion `...' failed.").
+inline constexpr const char *kHelperPrefix = "[stratamesh-tetgen] ";
+
 struct Header {
     char magic[8] = {'S', 'M', 'T', 'E', 'T', 'S', '1', '\n'};
     std::int64_t points = 0;

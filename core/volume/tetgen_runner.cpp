@@ -70,42 +70,49 @@ std::string secondsText(double s)
     return buffer;
 }
 
-// invalid_input when checkValidity finds what TetGen cannot take; names the surfaces involved.
+// invalid_input when checkValidity finds what TetGen cannot take: intersecting triangles, one
+// triangle twice, and distinct points TetGen would merge (which makes either of the first two).
 bool rejectInvalidModel(const Model &model, Progress &progress, TetgenResult &result)
 {
-    const ValidityReport report = checkValidity(model, progress);
-    const std::size_t intersections = report.count(validity_check::surfaceIntersection);
-    const std::size_t duplicates = report.count(validity_check::duplicateTriangle);
-    if (intersections == 0 && duplicates == 0)
-        return false;
-    std::set<std::string> surfaces;
-    std::set<std::string> intersecting, duplicated;
-    for (const ValidityProblem &p : report.problems) {
-        const bool isIntersection = p.check == validity_check::surfaceIntersection;
-        if (!isIntersection && p.check != validity_check::duplicateTriangle)
-            continue;
-        std::string names;
-        for (const std::string &e : p.entities) {
-            surfaces.insert(e);
-            names += (names.empty() ? "" : " and ") + e;
-        }
-        (isIntersection ? intersecting : duplicated).insert(names);
-    }
-    auto join = [](const std::set<std::string> &items) {
-        std::string s;
-        for (const std::string &item : items)
-            s += (s.empty() ? "" : "; ") + item;
-        return s;
+    struct Rejected {
+        const char *check;
+        const char *what;
     };
-    std::string message = "TetGen was not run: ";
-    if (intersections > 0)
-        message += std::to_string(intersections) + " pairs of intersecting triangles ("
-                   + join(intersecting) + ")";
-    if (duplicates > 0)
-        message += std::string(intersections > 0 ? ", " : "") + std::to_string(duplicates)
-                   + " triangles on two surfaces or twice on one (" + join(duplicated) + ")";
+    static const Rejected rejected[] = {
+        {validity_check::surfaceIntersection, "pairs of intersecting triangles"},
+        {validity_check::duplicateTriangle, "triangles on two surfaces or twice on one"},
+        {validity_check::closeVertices,
+         "pairs of distinct points closer than TetGen's merge tolerance (1e-8 of the bounding box "
+         "diagonal)"},
+    };
+    const ValidityReport report = checkValidity(model, progress);
+    std::set<std::string> surfaces;
+    std::string message;
+    for (const Rejected &r : rejected) {
+        const std::size_t count = report.count(r.check);
+        if (count == 0)
+            continue;
+        std::set<std::string> groups;
+        for (const ValidityProblem &p : report.problems) {
+            if (p.check != r.check)
+                continue;
+            std::string names;
+            for (const std::string &e : p.entities) {
+                surfaces.insert(e);
+                names += (names.empty() ? "" : " and ") + e;
+            }
+            groups.insert(names);
+        }
+        std::string listed;
+        for (const std::string &g : groups)
+            listed += (listed.empty() ? "" : "; ") + g;
+        message += (message.empty() ? "" : ", ") + std::to_string(count) + " " + r.what + " ("
+                   + listed + ")";
+    }
+    if (message.empty())
+        return false;
     result.outcome = TetgenOutcome::InvalidInput;
-    result.message = message;
+    result.message = "TetGen was not run: " + message;
     result.surfaces.assign(surfaces.begin(), surfaces.end());
     return true;
 }
@@ -200,8 +207,10 @@ void classifyFailure(const ChildExit &exit, const TetgenParams &params, const st
     std::string helperLine;
     std::vector<std::string> tetgenLines;
     for (const std::string &line : lastLines(logPath, 40)) {
-        if (line.rfind("stratamesh-tetgen:", 0) == 0)
-            helperLine = line.substr(std::strlen("stratamesh-tetgen: "));
+        if (line.rfind(tetgen_result::kHelperPrefix, 0) == 0)
+            helperLine = line.substr(std::strlen(tetgen_result::kHelperPrefix));
+        else if (line.rfind("stratamesh-tetgen: ", 0) == 0) // the C library's assert message
+            tetgenLines.push_back(line.substr(std::strlen("stratamesh-tetgen: ")));
         else
             tetgenLines.push_back(line);
     }

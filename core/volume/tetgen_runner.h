@@ -2,7 +2,8 @@
 // and of its remesh), crash-proof: TetGen 1.5 (Si 2015, ACM TOMS 41(2)) runs in the helper process
 // stratamesh-tetgen (app/tetgen_runner) under a time and a memory limit, and every way it can end
 // becomes a TetgenOutcome. The model is checked first for what makes TetGen crash or abort:
-// intersecting surfaces and one triangle on two surfaces (formats.md §4.5).
+// intersecting surfaces, one triangle on two surfaces, and points close enough for TetGen to merge
+// them (formats.md §4.5; model/validity.h).
 #pragma once
 
 #include "common/progress.h"
