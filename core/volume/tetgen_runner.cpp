@@ -10,12 +10,15 @@
 #include "volume/tetgen_poly_writer.h"
 #include "volume/tetgen_result_file.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <unistd.h>
 
@@ -176,23 +179,58 @@ void buildMesh(const Model &model, const RawMesh &raw, TetgenResult &result)
         mesh.surfaces.push_back({s.name, s.featureName, s.type});
     mesh.cells.reserve(raw.tets.size());
     mesh.cellRegion.reserve(raw.tets.size());
+    // Attributes above the seeded ones number subdomains TetGen found without a seed (a region in
+    // two pieces): one region each, found from a few of their roundest tets.
+    std::map<int, std::vector<std::size_t>> unseeded;
+    auto centroid = [&](const Cell &c) {
+        return Vec3((mesh.points[c.nodes[0]] + mesh.points[c.nodes[1]] + mesh.points[c.nodes[2]]
+                     + mesh.points[c.nodes[3]])
+                    / 4.0);
+    };
     for (const auto &t : raw.tets) {
         Cell cell = Cell::tet(t[0], t[1], t[2], t[3]);
         if (signedVolume(mesh, cell) < 0)
             std::swap(cell.nodes[1], cell.nodes[2]);
         int region = t[4] - 1;
-        // TetGen with Y leaves attribute 0 where it dropped boundary Steiner points.
-        if (region < 0 || region >= regionCount) {
+        if (region >= regionCount) {
+            unseeded[t[4]].push_back(mesh.cells.size());
+        } else if (region < 0) {
+            // TetGen with Y leaves attribute 0 where it dropped boundary Steiner points.
             ++result.tetsLocatedByCentroid;
-            const Vec3 centroid =
-                (mesh.points[t[0]] + mesh.points[t[1]] + mesh.points[t[2]] + mesh.points[t[3]])
-                / 4.0;
-            region = locateRegion(model, centroid);
+            region = locateRegion(model, centroid(cell));
             if (region < 0)
                 ++result.tetsWithoutRegion;
         }
         mesh.cells.push_back(cell);
         mesh.cellRegion.push_back(region);
+    }
+    for (auto &[attribute, cells] : unseeded) {
+        auto roundness = [&](std::size_t c) {
+            const Cell &cell = mesh.cells[c];
+            double faces = 0.0;
+            for (const Triangle &f : outwardTriangleFaces(cell))
+                faces += (mesh.points[f[1]] - mesh.points[f[0]])
+                             .cross(mesh.points[f[2]] - mesh.points[f[0]])
+                             .norm();
+            return faces > 0 ? signedVolume(mesh, cell) / faces : 0.0; // ∝ inradius
+        };
+        const std::size_t probes = std::min<std::size_t>(cells.size(), 5);
+        std::partial_sort(
+            cells.begin(), cells.begin() + probes, cells.end(),
+            [&](std::size_t a, std::size_t b) { return roundness(a) > roundness(b); });
+        std::map<int, int> votes;
+        for (std::size_t i = 0; i < probes; ++i)
+            if (const int r = locateRegion(model, centroid(mesh.cells[cells[i]])); r >= 0)
+                ++votes[r];
+        int region = -1;
+        for (const auto &[r, n] : votes)
+            if (region < 0 || n > votes[region])
+                region = r;
+        for (std::size_t c : cells)
+            mesh.cellRegion[c] = region;
+        result.tetsLocatedByCentroid += cells.size();
+        if (region < 0)
+            result.tetsWithoutRegion += cells.size();
     }
     const int surfaceCount = static_cast<int>(model.surfaces.size());
     for (const auto &f : raw.faces) {

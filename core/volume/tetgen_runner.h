@@ -45,7 +45,7 @@ struct TetgenResult {
     // When ok: tets (positively oriented) with their region (index in Model::regions), boundary
     // and interface triangles with their surface, region and surface names of the model.
     VolumeMesh mesh;
-    std::size_t tetsLocatedByCentroid = 0; // attribute 0 (or unknown) from TetGen
+    std::size_t tetsLocatedByCentroid = 0; // attribute 0, or a subdomain without a seed
     std::size_t tetsWithoutRegion = 0;     // centroid in no region (cellRegion -1)
 };
 

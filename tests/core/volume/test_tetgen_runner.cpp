@@ -95,6 +95,30 @@ private slots:
         QVERIFY(std::count(r.mesh.triangleSurface.begin(), r.mesh.triangleSurface.end(), -1) == 0);
     }
 
+    // A region in two pieces gets one seed; TetGen numbers the other piece itself.
+    void regionInTwoPiecesIsFilled()
+    {
+        LayeredBoxParams p;
+        p.horizons = 2;
+        p.edgeLength = 150.0;
+        Model m = recoverTopology(layeredBox(p));
+        QCOMPARE(m.regions.size(), std::size_t(3));
+        m.regions[0].boundaries.insert(m.regions[0].boundaries.end(),
+                                       m.regions[2].boundaries.begin(),
+                                       m.regions[2].boundaries.end());
+        m.regions.pop_back();
+        m.layers.clear();
+        const std::vector<double> brep = regionVolumes(m);
+        const TetgenResult r = runTetgen(m, {});
+        QCOMPARE(tetgenOutcomeName(r.outcome), "ok");
+        QVERIFY(r.tetsLocatedByCentroid > 0);
+        QCOMPARE(r.tetsWithoutRegion, std::size_t(0));
+        const std::vector<double> tets = tetVolumes(r.mesh);
+        for (int k = 0; k < 2; ++k)
+            QVERIFY2(std::abs(tets[k] - brep[k]) <= 1e-6 * brep[k],
+                     qPrintable(QString::number(tets[k] - brep[k])));
+    }
+
     void optionsRefine()
     {
         const Model m = twoRegionBox();
