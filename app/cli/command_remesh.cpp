@@ -1,5 +1,5 @@
 // stratamesh-cli remesh MODEL (--sites N | --edge-length L) [--d-resolution D] [--iterations 100]
-//     [--seed S] [--adaptive] [--merge-all] [--strip-factor F] -o OUT.(ml|ts) --report REPORT.json
+//     [--seed S] [--adaptive] [--merge-all] [--strip-factor F] [--allow-invalid] -o OUT.(ml|ts) --report REPORT.json
 // Remeshes every surface of a model at once at the chosen resolution (thesis ch. 4), writes the
 // new model, and a JSON report: input and output (counts and mesh as `info --json`, validity),
 // the Hausdorff distance, histograms, timings, the simplification ledger and the CVT energy.
@@ -120,6 +120,9 @@ int runRemesh(CommandArgs &args)
     params.mergeAllExtraPoints = args.flag(QStringLiteral("--merge-all"));
     params.stripWidthFactor =
         args.doubleOption(QStringLiteral("--strip-factor"), params.stripWidthFactor, 0.0, 1.0);
+    params.refinementRounds =
+        args.intOption(QStringLiteral("--refinement-rounds"), params.refinementRounds, 0, 100);
+    const bool allowInvalid = args.flag(QStringLiteral("--allow-invalid"));
     const std::optional<QString> output = args.option(QStringLiteral("-o"));
     const std::optional<QString> reportPath = args.option(QStringLiteral("--report"));
     const QString path = args.positional(QStringLiteral("MODEL"));
@@ -134,19 +137,49 @@ int runRemesh(CommandArgs &args)
 
     const Model input = recoverTopology(readModel(path.toStdString()));
     const RemeshResult result = remeshModel(input, params);
+    const ValidityReport &outValidity = result.validity;
+    if (!outValidity.valid && !allowInvalid) {
+        const ValidityProblem &p = outValidity.problems.front();
+        std::string names;
+        for (const std::string &e : p.entities)
+            names += (names.empty() ? "" : ", ") + e;
+        throw InputError("remesh: the result is not valid after " + std::to_string(result.refinementRounds)
+                         + " refinement round(s) (" + std::to_string(result.siteCount) + " sites): "
+                         + std::to_string(outValidity.problems.size()) + " problem(s), first [" + p.check + "] "
+                         + names + " at " + std::to_string(p.position.x()) + " " + std::to_string(p.position.y())
+                         + " " + std::to_string(p.position.z()) + ": " + p.message
+                         + "; nothing written (--allow-invalid writes it anyway)");
+    }
     writeModelFile(result.model, *output);
 
     const ModelComparison comparison = compareModels(input, result.model);
     const ValidityReport inValidity = checkValidity(input);
-    const ValidityReport outValidity = checkValidity(result.model);
+    const TopologyEdits edits = countTopologyEdits(result.ledger);
     QJsonArray energy;
     for (double e : result.energy)
         energy.append(e);
     const QJsonObject report{
         {QStringLiteral("file"), path},
         {QStringLiteral("output_file"), *output},
+        {QStringLiteral("topology_edits"),
+         QJsonObject{{QStringLiteral("total"), edits.total()},
+                     {QStringLiteral("surfaces_lost"), edits.surfacesLost},
+                     {QStringLiteral("surfaces_created"), edits.surfacesCreated},
+                     {QStringLiteral("lines_lost"), edits.linesLost},
+                     {QStringLiteral("lines_created"), edits.linesCreated},
+                     {QStringLiteral("corners_lost"), edits.cornersLost},
+                     {QStringLiteral("corners_created"), edits.cornersCreated}}},
+        {QStringLiteral("refinement"),
+         QJsonObject{{QStringLiteral("initial_sites"), result.initialSiteCount},
+                     {QStringLiteral("final_sites"), result.siteCount},
+                     {QStringLiteral("rounds"), result.refinementRounds},
+                     {QStringLiteral("remaining_places"), result.remainingTargets}}},
         {QStringLiteral("parameters"),
-         QJsonObject{{QStringLiteral("sites"), result.siteCount},
+         QJsonObject{{QStringLiteral("sites"), result.initialSiteCount},
+                     {QStringLiteral("final_sites"), result.siteCount},
+                     {QStringLiteral("strip_factor"), params.stripWidthFactor},
+                     {QStringLiteral("merge_all"), params.mergeAllExtraPoints},
+                     {QStringLiteral("refinement_rounds"), params.refinementRounds},
                      {QStringLiteral("edge_length"), params.edgeLength},
                      {QStringLiteral("d_resolution"), params.dResolution},
                      {QStringLiteral("iterations"), params.iterations},
@@ -175,12 +208,14 @@ int runRemesh(CommandArgs &args)
         writeReport(report, *reportPath);
 
     QTextStream &o = out();
-    o << "remeshed " << QFileInfo(path).fileName() << " with " << result.siteCount << " sites into " << *output << '\n'
+    o << "remeshed " << QFileInfo(path).fileName() << " with " << result.siteCount << " sites (" << result.initialSiteCount
+      << " asked, " << result.refinementRounds << " refinement rounds) into " << *output << '\n'
       << "  output: " << comparison.output.mesh.vertices << " vertices, " << comparison.output.mesh.triangles
       << " triangles, mean Q " << QString::number(comparison.output.mesh.meanQuality, 'f', 3) << ", "
       << QString::number(comparison.output.mesh.pctTrianglesAngleBelow30, 'f', 2) << " % < 30°\n"
       << "  Hausdorff " << QString::number(comparison.hausdorff.symmetricPctBbox, 'f', 3) << " % of the bbox diagonal, "
-      << result.ledger.size() << " ledger records, " << (outValidity.valid ? "valid" : "NOT valid") << '\n'
+      << result.ledger.size() << " ledger records, " << edits.total() << " topology edits, "
+      << (outValidity.valid ? "valid" : "NOT valid") << '\n'
       << "  time: sampling " << QString::number(result.timings.samplingSeconds, 'f', 2) << " s, mesh "
       << QString::number(result.timings.meshSeconds, 'f', 2) << " s\n";
     return 0;

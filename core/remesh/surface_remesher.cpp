@@ -14,6 +14,7 @@
 #include "remesh/output_model_builder.h"
 #include "remesh/output_points.h"
 #include "remesh/strip_collapse.h"
+#include "remesh/topology_refinement.h"
 #include "voronoi/restricted_voronoi.h"
 #include "voronoi/restriction_domain.h"
 
@@ -181,13 +182,79 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     cvt.alpha = params.boundaryWeight;
     const CvtResult optimised =
         params.iterations > 0 ? optimizeCvt(domain, sampleSurfaces(domain, n, params.seed), cvt, progress) : CvtResult{};
-    const std::vector<Vec3> sites = params.iterations > 0 ? optimised.sites : sampleSurfaces(domain, n, params.seed);
+    std::vector<Vec3> sites = params.iterations > 0 ? optimised.sites : sampleSurfaces(domain, n, params.seed);
     const double sampling = secondsSince(start);
-    RemeshResult result = meshFromSites(collapsed, sites, params, std::move(ledger), progress);
+    const std::size_t stripRecords = ledger.size();
+    RemeshResult result = meshFromSites(collapsed, sites, params, ledger, progress);
+    result.validity = checkValidity(result.model);
+
+    // Rounds of local refinement where the output is wrong (topology_refinement.h).
+    std::vector<double> density = domain.density;
+
+    int rounds = 0;
+    for (;;) {
+        const double spacing = edgeLengthForSites(area, static_cast<int>(sites.size()));
+        // Validity comes first: its places are refined while rounds are left, whatever the
+        // growth cap; topology places only while the cap leaves room.
+        const ValidityReport none;
+        const std::vector<Vec3> topology = refinementTargets(simplified, result.model, result.ledger, stripRecords,
+                                                             none, params.dResolution, 0.5 * spacing);
+        std::vector<Vec3> invalid;
+        for (const ValidityProblem &p : result.validity.problems)
+            invalid.push_back(p.position);
+        result.remainingTargets = static_cast<int>(topology.size() + invalid.size());
+        if (result.remainingTargets == 0 || rounds >= params.refinementRounds + (invalid.empty() ? 0 : 4))
+            break;
+        const int room = static_cast<int>(std::lround(params.refinementMaxGrowth * n)) - (static_cast<int>(sites.size()) - n);
+        std::vector<Vec3> targets = invalid;
+        if (room > 0 && rounds < params.refinementRounds)
+            targets.insert(targets.end(), topology.begin(), topology.end());
+        if (targets.empty())
+            break;
+        const double radius = 1.5 * spacing;
+        raiseDensity(domain, targets, radius, params.refinementDensityFactor, density);
+        const int near = std::max(4, sitesNearTargets(sites, targets, radius));
+        int extra = static_cast<int>(std::lround((params.refinementDensityFactor - 1.0) * near));
+        if (invalid.empty())
+            extra = std::min(extra, room);
+        const std::vector<Vec3> added =
+            sampleNearTargets(domain, targets, radius, extra, params.seed + 7919u * (rounds + 1));
+        if (added.empty())
+            break;
+        sites.insert(sites.end(), added.begin(), added.end());
+        ++rounds;
+        RestrictionDomain refined = domain;
+        refined.density = density;
+        CvtParams local = cvt;
+        local.iterations = params.refinementIterations;
+        if (local.iterations > 0)
+            sites = optimizeCvt(refined, sites, local, progress).sites;
+        RemeshResult again = meshFromSites(collapsed, sites, params, ledger, progress);
+        again.validity = checkValidity(again.model);
+        result = std::move(again);
+    }
     result.energy = optimised.energy;
+    result.initialSiteCount = n;
+    result.refinementRounds = rounds;
     result.timings.samplingSeconds = sampling;
     result.timings.totalSeconds = secondsSince(start);
     return result;
+}
+
+TopologyEdits countTopologyEdits(const SimplificationLedger &ledger)
+{
+    TopologyEdits e;
+    for (const LedgerRecord &r : ledger)
+        switch (r.kind) {
+        case LedgerKind::SurfaceLost: ++e.surfacesLost; break;
+        case LedgerKind::SurfaceCreated: ++e.surfacesCreated; break;
+        case LedgerKind::LineLost: ++e.linesLost; break;
+        case LedgerKind::LineCreated: ++e.linesCreated; break;
+        case LedgerKind::CornerLost: ++e.cornersLost; break;
+        case LedgerKind::CornerCreated: ++e.cornersCreated; break;
+        default: break;
+        }
+    return e;
 }
 
 } // namespace stratamesh

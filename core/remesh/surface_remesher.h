@@ -17,6 +17,7 @@
 #include "remesh/intersection_repair.h"
 #include "remesh/mesh_cleanup.h"
 #include "remesh/simplification_ledger.h"
+#include "model/validity.h"
 #include "remesh/thin_strips.h"
 
 #include <vector>
@@ -42,6 +43,13 @@ struct RemeshParams {
     bool flips = true;       // quality-improving flips inside surfaces after the thesis steps
     int smoothingPasses = 3; // vertex relaxation on the input surfaces and lines (0: none)
     IntersectionRepairParams repair;
+    // Local refinement (topology_refinement.h): rounds of more sites where the output is not
+    // valid or its topology differs from the input's beyond d_resolution; 0 turns it off.
+    // Up to 4 more rounds refine where the output is still not valid, beyond the growth cap.
+    int refinementRounds = 4;
+    double refinementDensityFactor = 2.0; // density raised this much around each place, per round
+    int refinementIterations = 20;        // CVT iterations after sites are added
+    double refinementMaxGrowth = 1.0;     // topology places get at most this fraction of the asked sites
 };
 
 struct RemeshTimings {
@@ -62,7 +70,23 @@ struct RemeshResult {
     CleanupCounts cleanup;
     DuplicateSeparation duplicates;
     IntersectionRepairResult intersections;
+    ValidityReport validity;      // of `model`; the front ends refuse to write an invalid one
+    int initialSiteCount = 0;     // the sites asked for; siteCount is the final number
+    int refinementRounds = 0;     // rounds that added sites
+    int remainingTargets = 0;     // places still wrong after the last round (0 when converged)
 };
+
+// Topology edits of a result per kind (surface/line/corner lost/created records).
+struct TopologyEdits {
+    int surfacesLost = 0, surfacesCreated = 0;
+    int linesLost = 0, linesCreated = 0;
+    int cornersLost = 0, cornersCreated = 0;
+    int total() const
+    {
+        return surfacesLost + surfacesCreated + linesLost + linesCreated + cornersLost + cornersCreated;
+    }
+};
+TopologyEdits countTopologyEdits(const SimplificationLedger &ledger);
 
 // Number of sites for a target edge length over a total surface area.
 int sitesForEdgeLength(double area, double edgeLength);

@@ -1,0 +1,160 @@
+#include "remesh/topology_refinement.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace stratamesh {
+
+namespace {
+
+bool nearAny(const Vec3 &p, const std::vector<Vec3> &targets, double radius2)
+{
+    for (const Vec3 &t : targets)
+        if ((p - t).squaredNorm() <= radius2)
+            return true;
+    return false;
+}
+
+// Vertices of a line, one every `spacing` of length (both ends included).
+void sampleLine(const Model &model, const Line &line, double spacing, std::vector<Vec3> &out)
+{
+    if (line.vertices.empty())
+        return;
+    double run = spacing;
+    for (std::size_t i = 0; i < line.vertices.size(); ++i) {
+        const Vec3 &p = model.vertices[line.vertices[i]];
+        if (i > 0)
+            run += (p - model.vertices[line.vertices[i - 1]]).norm();
+        if (run >= spacing || i + 1 == line.vertices.size()) {
+            out.push_back(p);
+            run = 0.0;
+        }
+    }
+}
+
+// A change the user asked for: below d_resolution. Sizes are lengths or distances except
+// areas, compared through their square root.
+bool requested(const LedgerRecord &r, double dResolution)
+{
+    if (!(dResolution > 0.0))
+        return false;
+    const double size = r.sizeMeaning == "area" ? std::sqrt(std::max(0.0, r.size)) : r.size;
+    return size < dResolution;
+}
+
+} // namespace
+
+bool isTopologyEdit(LedgerKind kind)
+{
+    switch (kind) {
+    case LedgerKind::SurfaceLost:
+    case LedgerKind::LineLost:
+    case LedgerKind::CornerLost:
+    case LedgerKind::SurfaceCreated:
+    case LedgerKind::LineCreated:
+    case LedgerKind::CornerCreated:
+        return true;
+    default:
+        return false;
+    }
+}
+
+std::vector<Vec3> refinementTargets(const Model &input, const Model &output,
+                                    const SimplificationLedger &ledger, std::size_t firstRecord,
+                                    const ValidityReport &validity, double dResolution,
+                                    double spacing)
+{
+    std::vector<Vec3> targets;
+    for (std::size_t i = firstRecord; i < ledger.size(); ++i) {
+        const LedgerRecord &r = ledger[i];
+        const bool wrong = r.kind == LedgerKind::IntersectionUnresolved
+                           || ((isTopologyEdit(r.kind) || r.kind == LedgerKind::CornerMerge
+                                || r.kind == LedgerKind::MultiPointMerge)
+                               && !requested(r, dResolution));
+        if (!wrong)
+            continue;
+        targets.push_back(r.position);
+        if (r.kind == LedgerKind::LineLost)
+            for (const EntityRef &ref : r.inputs)
+                if (ref.kind == EntityKind::Line && ref.id >= 0
+                    && ref.id < static_cast<int>(input.lines.size()))
+                    sampleLine(input, input.lines[ref.id], spacing, targets);
+        if (r.kind == LedgerKind::LineCreated)
+            for (const EntityRef &ref : r.outputs)
+                if (ref.kind == EntityKind::Line && ref.id >= 0
+                    && ref.id < static_cast<int>(output.lines.size()))
+                    sampleLine(output, output.lines[ref.id], spacing, targets);
+    }
+    for (const ValidityProblem &p : validity.problems)
+        targets.push_back(p.position);
+    return targets;
+}
+
+void raiseDensity(const RestrictionDomain &domain, const std::vector<Vec3> &targets, double radius,
+                  double factor, std::vector<double> &density)
+{
+    if (density.empty())
+        density.assign(domain.points.size(), 1.0);
+    const double r2 = radius * radius;
+    for (std::size_t v = 0; v < domain.points.size(); ++v)
+        if (nearAny(domain.points[v], targets, r2))
+            density[v] *= factor;
+}
+
+std::vector<Vec3> sampleNearTargets(const RestrictionDomain &domain,
+                                    const std::vector<Vec3> &targets, double radius, int count,
+                                    std::uint64_t seed)
+{
+    std::vector<int> chosen;
+    std::vector<double> cumulative;
+    double total = 0.0;
+    const double r2 = radius * radius;
+    for (std::size_t t = 0; t < domain.triangles.size(); ++t) {
+        const Triangle &tri = domain.triangles[t];
+        const Vec3 &a = domain.points[tri[0]], &b = domain.points[tri[1]],
+                   &c = domain.points[tri[2]];
+        if (!nearAny((a + b + c) / 3.0, targets, r2))
+            continue;
+        const double area = 0.5 * (b - a).cross(c - a).norm();
+        if (!(area > 0.0))
+            continue;
+        total += area;
+        chosen.push_back(static_cast<int>(t));
+        cumulative.push_back(total);
+    }
+    std::vector<Vec3> points;
+    if (chosen.empty() || count <= 0)
+        return points;
+    std::mt19937_64 random(seed);
+    auto uniform = [&random] { return static_cast<double>(random() >> 11) * 0x1.0p-53; };
+    points.reserve(count);
+    for (int i = 0; i < count; ++i) {
+        const double pick = uniform() * total;
+        const std::size_t k = std::min<std::size_t>(
+            std::lower_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin(),
+            chosen.size() - 1);
+        const Triangle &tri = domain.triangles[chosen[k]];
+        double u = uniform(), w = uniform();
+        if (u + w > 1.0) {
+            u = 1.0 - u;
+            w = 1.0 - w;
+        }
+        const Vec3 &a = domain.points[tri[0]], &b = domain.points[tri[1]],
+                   &c = domain.points[tri[2]];
+        points.push_back(a + u * (b - a) + w * (c - a));
+    }
+    return points;
+}
+
+int sitesNearTargets(const std::vector<Vec3> &sites, const std::vector<Vec3> &targets,
+                     double radius)
+{
+    const double r2 = radius * radius;
+    return static_cast<int>(std::count_if(sites.begin(), sites.end(),
+                                          [&](const Vec3 &s) { return nearAny(s, targets, r2); }));
+}
+
+} // namespace stratamesh
