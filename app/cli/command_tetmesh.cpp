@@ -10,13 +10,10 @@
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
 #include "json_report.h"
-#include "model/region_volume.h"
 #include "model/topology.h"
 #include "volume/plc.h"
-#include "volume/region_tets.h"
-#include "volume/tet_quality.h"
+#include "volume/tetgen_comparison.h"
 #include "volume/tetgen_poly_writer.h"
-#include "volume/tetgen_runner.h"
 
 #include <QElapsedTimer>
 #include <QFileInfo>
@@ -47,19 +44,14 @@ QJsonArray stringArray(const std::vector<std::string> &items)
     return a;
 }
 
-QJsonArray regionsJson(const Model &model, const TetgenResult &result)
+QJsonArray regionsJson(const Model &model, const TetmeshSide &side)
 {
-    const std::vector<double> brep = regionVolumes(model);
-    const std::vector<RegionTets> tets =
-        result.outcome == TetgenOutcome::Ok ? regionTets(result.mesh) : std::vector<RegionTets>{};
     QJsonArray regions;
-    for (std::size_t r = 0; r < model.regions.size(); ++r) {
-        const RegionTets t = r < tets.size() ? tets[r] : RegionTets{};
+    for (std::size_t r = 0; r < model.regions.size(); ++r)
         regions.append(QJsonObject{{"name", QString::fromStdString(model.regions[r].name)},
-                                   {"tets", static_cast<qint64>(t.tets)},
-                                   {"volume", t.volume},
-                                   {"brep_volume", brep[r]}});
-    }
+                                   {"tets", static_cast<qint64>(side.regions[r].tets)},
+                                   {"volume", side.regions[r].volume},
+                                   {"brep_volume", side.brepVolumes[r]}});
     return regions;
 }
 
@@ -103,17 +95,12 @@ int runTetmesh(CommandArgs &args)
     // The exact PLC, to reproduce a failure with the tetgen executable.
     if (polyPath)
         writeTetgenPoly(buildPlc(model), polyPath->toStdString());
-    TetgenResult result = runTetgen(model, params);
+    TetmeshSide side = tetmeshModel(model, params);
+    const TetgenResult &result = side.result;
+    const VolumeQualityStatistics &quality = side.quality;
     const bool ok = result.outcome == TetgenOutcome::Ok;
-    VolumeQualityStatistics quality;
-    if (ok) {
-        quality = volumeQuality(result.mesh);
-        for (const TetQuality &q : tetQualities(result.mesh))
-            result.mesh.cellQuality.push_back(q.minDihedralDeg);
-        result.mesh.qualityName = "min_dihedral_deg";
-        if (output)
-            exportVolumeMesh(result.mesh, output->toStdString(), exportOptions);
-    }
+    if (ok && output)
+        exportVolumeMesh(result.mesh, output->toStdString(), exportOptions);
 
     const QJsonObject report{
         {"file", path},
@@ -133,7 +120,7 @@ int runTetmesh(CommandArgs &args)
                               {"regions", static_cast<qint64>(model.regions.size())}}},
         {"tets", static_cast<qint64>(quality.tets)},
         {"points", static_cast<qint64>(ok ? result.mesh.points.size() : 0)},
-        {"regions", regionsJson(model, result)},
+        {"regions", regionsJson(model, side)},
         {"tets_located_by_centroid", static_cast<qint64>(result.tetsLocatedByCentroid)},
         {"tets_without_region", static_cast<qint64>(result.tetsWithoutRegion)},
         {"min_dihedral_deg", quality.minDihedralDeg},

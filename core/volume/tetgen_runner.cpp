@@ -5,6 +5,7 @@
 #include "model/validity.h"
 #include "volume/child_process.h"
 #include "volume/plc.h"
+#include "volume/progress_range.h"
 #include "volume/region_winding.h"
 #include "volume/tetgen_helper_path.h"
 #include "volume/tetgen_poly_writer.h"
@@ -378,7 +379,8 @@ TetgenResult runTetgen(const Model &model, const TetgenParams &params, Progress 
         throw InputError("TetGen parameters must be finite and not negative");
 
     progress.tick(0.0, "checking the model for TetGen");
-    if (params.checkInput && rejectInvalidModel(model, progress, result))
+    Progress checking = progressRange(progress, 0.0, 0.2);
+    if (params.checkInput && rejectInvalidModel(model, checking, result))
         return result;
     Plc plc;
     try {
@@ -400,8 +402,9 @@ TetgenResult runTetgen(const Model &model, const TetgenParams &params, Progress 
     const std::string poly = work.file("plc.poly"), output = work.file("mesh.tets"),
                       log = work.file("tetgen.log");
     writeTetgenPoly(plc, poly);
+    Progress meshing = progressRange(progress, 0.2, 0.95);
     const ChildExit exit = runChild({helper, result.switches, poly, output}, log,
-                                    {params.timeLimitSeconds, params.memoryLimitMB}, progress,
+                                    {params.timeLimitSeconds, params.memoryLimitMB}, meshing,
                                     "TetGen " + result.switches, params.onStarted);
     result.seconds = exit.seconds;
     result.exitCode = exit.exitCode;

@@ -4,6 +4,7 @@
 #include "common/error.h"
 #include "model/region_volume.h"
 #include "tetgen_test_models.h"
+#include "volume/tetgen_comparison.h"
 #include "volume/tetgen_runner.h"
 
 #include <QtTest>
@@ -231,6 +232,41 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(Cancelled, runTetgen(twoRegionBox(), p, progress));
         QVERIFY(helper > 0);
         QVERIFY(processGone(helper));
+    }
+
+    void comparisonRunsBothSides()
+    {
+        Progress progress;
+        double last = 0.0;
+        bool monotonic = true;
+        Progress tracked([&](double f, const std::string &) {
+            monotonic = monotonic && f >= last - 1e-12;
+            last = f;
+        });
+        const TetmeshComparison c =
+            compareTetmeshes(twoRegionBox(150), twoRegionBox(75), {}, tracked);
+        QCOMPARE(tetgenOutcomeName(c.input.result.outcome), "ok");
+        QCOMPARE(tetgenOutcomeName(c.output.result.outcome), "ok");
+        QVERIFY(c.output.quality.tets > c.input.quality.tets);
+        QVERIFY(monotonic);
+        QCOMPARE(last, 1.0);
+        for (const TetmeshSide *side : {&c.input, &c.output}) {
+            QCOMPARE(side->regions.size(), std::size_t(2));
+            QCOMPARE(side->result.mesh.cellQuality.size(), side->result.mesh.cells.size());
+            for (int k = 0; k < 2; ++k)
+                QVERIFY(std::abs(side->regions[k].volume - side->brepVolumes[k])
+                        <= 1e-6 * side->brepVolumes[k]);
+        }
+        // A failed side is that side's result; the other still runs.
+        const TetmeshComparison bad = compareTetmeshes(selfIntersectingBox(), twoRegionBox(), {});
+        QCOMPARE(tetgenOutcomeName(bad.input.result.outcome), "invalid_input");
+        QCOMPARE(bad.input.quality.tets, std::size_t(0));
+        QCOMPARE(tetgenOutcomeName(bad.output.result.outcome), "ok");
+        // A cancel stops it.
+        Progress cancelled;
+        cancelled.cancel();
+        QVERIFY_THROWS_EXCEPTION(Cancelled,
+                                 compareTetmeshes(twoRegionBox(), twoRegionBox(), {}, cancelled));
     }
 
     void missingHelperIsAborted()
