@@ -748,6 +748,10 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>RINGMesh GeoModel (*.gm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Save Remeshed Model</source>
         <translation type="unfinished"></translation>
     </message>

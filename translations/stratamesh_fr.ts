@@ -748,6 +748,10 @@
         <translation>Gocad TSurf (*.ts)</translation>
     </message>
     <message>
+        <source>RINGMesh GeoModel (*.gm)</source>
+        <translation>RINGMesh GeoModel (*.gm)</translation>
+    </message>
+    <message>
         <source>Save Remeshed Model</source>
         <translation>Enregistrer le modèle remaillé</translation>
     </message>

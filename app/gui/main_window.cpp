@@ -17,6 +17,7 @@
 
 #include "common/error.h"
 #include "io/gocad_writer.h"
+#include "io/ringmesh_writer.h"
 
 #include <QAction>
 #include <QApplication>
@@ -648,14 +649,14 @@ void MainWindow::chooseRemeshedFile()
     QSettings settings;
     const QString dir = settings.value(QStringLiteral("lastDirectory")).toString();
     QString selected;
-    const QString ml = tr("Gocad Model3d (*.ml)"), ts = tr("Gocad TSurf (*.ts)");
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Remeshed Model"), dir, ml + QStringLiteral(";;") + ts,
-                                                &selected);
+    const QString ml = tr("Gocad Model3d (*.ml)"), ts = tr("Gocad TSurf (*.ts)"), gm = tr("RINGMesh GeoModel (*.gm)");
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Remeshed Model"), dir,
+                                                ml + QStringLiteral(";;") + ts + QStringLiteral(";;") + gm, &selected);
     if (path.isEmpty())
         return;
     const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix != QLatin1String("ml") && suffix != QLatin1String("ts"))
-        path += selected == ts ? QStringLiteral(".ts") : QStringLiteral(".ml");
+    if (suffix != QLatin1String("ml") && suffix != QLatin1String("ts") && suffix != QLatin1String("gm"))
+        path += selected == ts ? QStringLiteral(".ts") : selected == gm ? QStringLiteral(".gm") : QStringLiteral(".ml");
     settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
     saveRemeshedModel(path);
 }
@@ -667,9 +668,12 @@ bool MainWindow::saveRemeshedModel(const QString &path)
     Message message;
     message.file = path;
     try {
-        // Both writers go through a temporary file and a rename.
-        if (QFileInfo(path).suffix().toLower() == QLatin1String("ml"))
+        // Every writer goes through a temporary file and a rename.
+        const QString suffix = QFileInfo(path).suffix().toLower();
+        if (suffix == QLatin1String("ml"))
             writeGocadModel3d(*m_outcome->output, path.toStdString());
+        else if (suffix == QLatin1String("gm"))
+            writeRingMeshModel(*m_outcome->output, path.toStdString());
         else
             writeGocadTSurf(*m_outcome->output, path.toStdString());
         message.text = tr("Remeshed model saved");

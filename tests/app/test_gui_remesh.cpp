@@ -237,7 +237,7 @@ private slots:
         const auto &outcome = m_window->remeshOutcome();
         QVERIFY(outcome);
         QTemporaryDir dir;
-        for (const QString &name : {QStringLiteral("remeshed.ml"), QStringLiteral("remeshed.ts")}) {
+        for (const QString &name : {QStringLiteral("remeshed.ml"), QStringLiteral("remeshed.ts"), QStringLiteral("remeshed.gm")}) {
             const QString path = dir.filePath(name);
             QVERIFY(m_window->saveRemeshedModel(path));
             const Model back = readModel(path.toStdString());
