@@ -24,7 +24,6 @@ public:
 
     std::size_t pos() const { return m_pos; }
     std::size_t left() const { return m_end - m_pos; }
-    bool atEnd() const { return m_pos >= m_end; }
     void setEnd(std::size_t end) { m_end = end; }
     void seek(std::size_t pos) { m_pos = pos; }
 
