@@ -1,4 +1,4 @@
-// stratamesh-cli tetmesh MODEL [--quality 1.414] [--max-volume V] [--refine-surfaces]
+// stratamesh-cli tetmesh MODEL [--quality 1.414] [--max-volume V] [--refine-surfaces] [--no-merge]
 //     [--time-limit S] [--memory-limit MB] [-o OUT.(vtu|vtk|msh|so)] [--msh-version 4.1|2.2]
 //     [--report R.json] [--json] [--poly PLC.poly]
 // A TetGen comparison mesh of a model (thesis §5.2): TetGen runs in its helper process
@@ -63,6 +63,7 @@ int runTetmesh(CommandArgs &args)
     params.quality = args.doubleOption(QStringLiteral("--quality"), 1.414, 0.0, 1e6);
     params.maxVolume = args.doubleOption(QStringLiteral("--max-volume"), 0.0, 0.0, 1e300);
     params.refineSurfaces = args.flag(QStringLiteral("--refine-surfaces"));
+    params.noMerge = args.flag(QStringLiteral("--no-merge"));
     params.timeLimitSeconds = args.doubleOption(QStringLiteral("--time-limit"), 0.0, 0.0, 1e9);
     params.memoryLimitMB = args.doubleOption(QStringLiteral("--memory-limit"), 0.0, 0.0, 1e9);
     const bool json = args.flag(QStringLiteral("--json"));
@@ -113,6 +114,7 @@ int runTetmesh(CommandArgs &args)
         {"parameters", QJsonObject{{"quality", params.quality},
                                    {"max_volume", params.maxVolume},
                                    {"refine_surfaces", params.refineSurfaces},
+                                   {"no_merge", params.noMerge},
                                    {"time_limit_s", params.timeLimitSeconds},
                                    {"memory_limit_mb", params.memoryLimitMB}}},
         {"input", QJsonObject{{"points", static_cast<qint64>(model.vertices.size())},

@@ -22,7 +22,7 @@
     X("convert", runConvert, "IN OUT [--msh-version 4.1|2.2] [--save-all] [--surface N] [--json]", "Convert between Gocad (.ml .ts .so), RINGMesh (.gm), VTK (.vtu .vtk .vtp), Gmsh (.msh) and single-surface (.obj .off .stl .ply) files, formats from the extensions") \
     X("cvt", runCvt, "MODEL --sites N [--iterations 100] [--seed S] [--alpha A] [--lloyd] [--json] [--sites-out FILE.xyz] [--neighbours delaunay|nearest]", "Optimise N sites over all surfaces and lines (CVT + boundary energy, L-BFGS); RDT quality and timings (thesis §4.3)") \
     X("complexity", runComplexity, "MODEL [--h 100] [--alpha 20] [--cells 100,1000,10000] [--seed S] [--iterations 30] [--json] [--cells-vtk OUT.vtu]", "Complexity measures of thesis ch. 3 (box excluded): counts, geometric complexity, size variation, elements per Voronoi cell (Tables 3.1-3.4)") \
-    X("tetmesh", runTetmesh, "MODEL [--quality 1.414] [--max-volume V] [--refine-surfaces] [--time-limit S] [--memory-limit MB] [-o OUT.(vtu|vtk|msh|so)] [--msh-version 4.1|2.2] [--report R.json] [--json] [--poly PLC.poly]", "TetGen comparison mesh in a helper process (thesis §5.2): tets per region, dihedral angles, slivers, outcome (ok, aborted, timed_out, out_of_memory, killed, invalid_input)") \
+    X("tetmesh", runTetmesh, "MODEL [--quality 1.414] [--max-volume V] [--refine-surfaces] [--no-merge] [--time-limit S] [--memory-limit MB] [-o OUT.(vtu|vtk|msh|so)] [--msh-version 4.1|2.2] [--report R.json] [--json] [--poly PLC.poly]", "TetGen comparison mesh in a helper process (thesis §5.2): tets per region, dihedral angles, slivers, outcome (ok, aborted, timed_out, out_of_memory, killed, invalid_input)") \
     /* end of the list */
 // clang-format on
 

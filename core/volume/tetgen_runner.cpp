@@ -349,6 +349,8 @@ std::string tetgenSwitches(const TetgenParams &params)
     s += "A";
     if (!params.refineSurfaces)
         s += "Y";
+    if (params.noMerge)
+        s += "M";
     return s;
 }
 

@@ -22,9 +22,12 @@ enum class TetgenOutcome { Ok, Aborted, TimedOut, OutOfMemory, Killed, InvalidIn
 const char *tetgenOutcomeName(TetgenOutcome outcome);
 
 struct TetgenParams {
-    double quality = 1.414;        // radius-edge ratio bound (q); 0 = no quality refinement
-    double maxVolume = 0.0;        // maximum tet volume (a); 0 = none
-    bool refineSurfaces = false;   // let TetGen add points on the surfaces (drops Y)
+    double quality = 1.414;      // radius-edge ratio bound (q); 0 = no quality refinement
+    double maxVolume = 0.0;      // maximum tet volume (a); 0 = none
+    bool refineSurfaces = false; // let TetGen add points on the surfaces (drops Y)
+    // M: without Y, TetGen merges nearly coplanar facets and re-triangulates them, which moves
+    // region volumes by ~1e-6 (modelA1); M keeps them exact but refines far more (×9 tets on A1).
+    bool noMerge = false;
     double timeLimitSeconds = 0.0; // 0 = none
     double memoryLimitMB = 0.0;    // address space of the helper; 0 = none
     bool checkInput = true;        // the validity check before TetGen (off only to test TetGen)
@@ -49,7 +52,8 @@ struct TetgenResult {
     std::size_t tetsWithoutRegion = 0;     // centroid in no region (cellRegion -1)
 };
 
-// "pq1.414AY" by default: p PLC, q quality, a max volume, A region attributes, Y keep surfaces.
+// "pq1.414AY" by default: p PLC, q quality, a max volume, A region attributes, Y keep surfaces,
+// M no merge of coplanar facets.
 std::string tetgenSwitches(const TetgenParams &params);
 
 // The helper: STRATAMESH_TETGEN_HELPER, else stratamesh-tetgen beside the running executable or

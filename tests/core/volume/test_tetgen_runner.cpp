@@ -69,6 +69,8 @@ private slots:
         QCOMPARE(tetgenSwitches(p), std::string("pq1.2a1000A"));
         p.quality = 0;
         QCOMPARE(tetgenSwitches(p), std::string("pa1000A"));
+        p.noMerge = true;
+        QCOMPARE(tetgenSwitches(p), std::string("pa1000AM"));
     }
 
     void tetsFillTheirRegions()
