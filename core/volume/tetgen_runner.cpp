@@ -283,8 +283,12 @@ void classifyFailure(const ChildExit &exit, const TetgenParams &params, const st
         result.message = exit.message;
         return;
     case ChildExit::Kind::Signalled:
-        if (exit.signal == SIGKILL || exit.signal == SIGTERM || exit.signal == SIGINT
-            || exit.signal == SIGHUP || exit.signal == SIGXCPU) {
+        // The CPU-time backstop of child_process.h: the wall-clock limit was missed.
+        if (exit.signal == SIGXCPU) {
+            result.outcome = TetgenOutcome::TimedOut;
+            result.message = "TetGen exceeded its CPU time limit" + after + tail;
+        } else if (exit.signal == SIGKILL || exit.signal == SIGTERM || exit.signal == SIGINT
+                   || exit.signal == SIGHUP) {
             result.outcome = TetgenOutcome::Killed;
             result.message =
                 "the TetGen helper was killed (" + signalName(exit.signal) + ")" + after;
