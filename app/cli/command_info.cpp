@@ -4,6 +4,8 @@
 #include "cli_output.h"
 #include "command_args.h"
 #include "io/model_reader.h"
+#include "io/ringmesh_reader.h"
+#include "io/ringmesh_topology.h"
 #include "json_report.h"
 #include "model/model_counts.h"
 #include "model/region_volume.h"
@@ -53,6 +55,8 @@ InfoReport buildReport(const QString &path)
     r.volumes = regionVolumes(r.model);
     timer.restart();
     r.validity = checkValidity(r.model);
+    if (isRingMeshFile(path.toStdString())) // a GeoModel also states its lines and corners
+        addRingMeshTopologyProblems(path.toStdString(), r.model, r.validity);
     r.validitySeconds = seconds(timer);
     return r;
 }

@@ -6,6 +6,8 @@
 #include "common/error.h"
 #include "common/progress.h"
 #include "io/model_reader.h"
+#include "io/ringmesh_reader.h"
+#include "io/ringmesh_topology.h"
 #include "model/model_counts.h"
 #include "model/synthetic_models.h"
 #include "model/topology.h"
@@ -49,7 +51,9 @@ void loadModel(QPromise<LoadResult> &promise, const QString &path, const QString
                 throw Cancelled(); // the window is closing
             promise.setProgressValueAndText(85 + int(14 * fraction), checking);
         });
-        const ValidityReport report = checkValidity(model, progress);
+        ValidityReport report = checkValidity(model, progress);
+        if (isRingMeshFile(file)) // a GeoModel also states its lines and corners
+            addRingMeshTopologyProblems(file, model, report);
         result.loaded.messages = validityMessages(report, path);
         result.loaded.counts = countEntities(model);
         result.loaded.model = std::make_shared<const Model>(std::move(model));

@@ -49,13 +49,23 @@ std::string list(const std::set<int> &ids)
 
 } // namespace
 
-std::vector<std::string> compareRingMeshTopology(const std::string &path, const Model &model)
+std::vector<ValidityProblem> compareRingMeshTopology(const std::string &path, const Model &model)
 {
     if (!model.hasTopology())
         throw InputError("compareRingMeshTopology needs the recovered topology (recoverTopology)");
     const GmArchive gm(path);
     const GmMeshEntities &e = gm.entities();
-    std::vector<std::string> problems;
+    std::vector<ValidityProblem> problems;
+    const auto add = [&](const std::set<int> &surfaces, const Vec3 &position, std::string message) {
+        ValidityProblem p;
+        p.check = kFileTopologyCheck;
+        for (int s : surfaces)
+            if (s >= 0 && std::size_t(s) < model.surfaces.size())
+                p.entities.push_back(model.surfaces[s].name);
+        p.position = position;
+        p.message = std::move(message);
+        problems.push_back(std::move(p));
+    };
 
     std::vector<Vec3> cornerPoint;
     for (std::size_t c = 0; c < e.of(GmEntityType::Corner).size(); ++c) {
@@ -90,22 +100,24 @@ std::vector<std::string> compareRingMeshTopology(const std::string &path, const 
         const std::string name = describe("Line " + std::to_string(l), points);
         const auto it = recovered.find(pointSet(points));
         if (it == recovered.end()) {
-            problems.push_back(name + " of the file is not a line of the recovered topology");
+            add(fileSurfaces[l], points.front(),
+                name + " of the file is not a line of the recovered topology");
             continue;
         }
         matched[it->second] = 1;
         const Line &line = model.lines[it->second];
         const std::set<int> ours(line.surfaces.begin(), line.surfaces.end());
         if (ours != fileSurfaces[l])
-            problems.push_back(name + ": the file gives it the surfaces " + list(fileSurfaces[l])
-                               + ", the recovered topology " + list(ours));
+            add(ours, points.front(),
+                name + ": the file gives it the surfaces " + list(fileSurfaces[l])
+                    + ", the recovered topology " + list(ours));
         const std::vector<int> &corners = e.of(GmEntityType::Line)[l].boundaries;
         std::set<PointKey> ends{pointKey(points.front()), pointKey(points.back())};
         std::set<PointKey> stated;
         for (int c : corners)
             stated.insert(pointKey(cornerPoint[c]));
         if (corners.size() != 2 || stated != ends)
-            problems.push_back(
+            add(ours, points.front(),
                 name + ": its boundary corners in mesh_entities.txt are not its two ends");
     }
     for (std::size_t l = 0; l < model.lines.size(); ++l) {
@@ -114,8 +126,10 @@ std::vector<std::string> compareRingMeshTopology(const std::string &path, const 
         std::vector<Vec3> points;
         for (int v : model.lines[l].vertices)
             points.push_back(model.vertices[v]);
-        problems.push_back(describe("recovered line " + std::to_string(l), points)
-                           + " is not in the file");
+        const std::set<int> surfaces(model.lines[l].surfaces.begin(),
+                                     model.lines[l].surfaces.end());
+        add(surfaces, points.front(),
+            describe("recovered line " + std::to_string(l), points) + " is not in the file");
     }
     std::set<PointKey> fileCorners;
     for (const Vec3 &p : cornerPoint)
@@ -123,10 +137,21 @@ std::vector<std::string> compareRingMeshTopology(const std::string &path, const 
     for (std::size_t c = 0; c < model.corners.size(); ++c) {
         const Vec3 &p = model.vertices[model.corners[c].vertex];
         if (!fileCorners.count(pointKey(p)))
-            problems.push_back("recovered corner " + std::to_string(c) + " at " + text(p)
-                               + " is no Corner of the file");
+            add({}, p,
+                "recovered corner " + std::to_string(c) + " at " + text(p)
+                    + " is no Corner of the file");
     }
     return problems;
+}
+
+void addRingMeshTopologyProblems(const std::string &path, const Model &model,
+                                 ValidityReport &report)
+{
+    for (ValidityProblem &p : compareRingMeshTopology(path, model)) {
+        if (report.counts[p.check]++ < ValidityReport::kMaxListedPerCheck)
+            report.problems.push_back(std::move(p));
+        report.valid = false;
+    }
 }
 
 } // namespace stratamesh

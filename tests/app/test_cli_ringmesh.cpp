@@ -2,6 +2,7 @@
 // back with the same counts and volumes, a volume-meshed .gm converts with its tets, and a broken
 // archive exits 1 with the archive and entry on stderr.
 #include "cli_runner.h"
+#include "io/zip_archive.h"
 #include "support/test_data.h"
 
 #include <QFile>
@@ -113,6 +114,36 @@ private slots:
             qInfo("%s: .gm %g, .ml %g", key, x, y);
             QVERIFY2(std::abs(x - y) <= 0.02 * std::abs(y), key);
         }
+    }
+
+    // A GeoModel whose stated lines disagree with its surfaces is reported invalid, named.
+    void infoNamesFileTopologyMismatch()
+    {
+        STRATAMESH_REQUIRE_DATA(path, "modelA1_version2.gm");
+        const QString damaged = m_dir.filePath("damaged.gm");
+        {
+            const stratamesh::ZipReader in(path.toStdString());
+            stratamesh::ZipWriter out(damaged.toStdString());
+            for (const std::string &name : in.names()) {
+                std::string bytes = in.read(name);
+                if (name == "mesh_entities.txt") {
+                    const std::string from = "\nboundary 0 1 2 7 \n"; // Surface 0 forgets Line 7
+                    QVERIFY(bytes.find(from) != std::string::npos);
+                    bytes.replace(bytes.find(from), from.size(), "\nboundary 0 1 2 \n");
+                }
+                out.add(name, bytes);
+            }
+            out.close();
+        }
+        const CliRun r = runCli({"info", damaged, "--json"});
+        QVERIFY2(r.finished && r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject validity = jsonOf(r)["validity"].toObject();
+        QVERIFY(!validity["valid"].toBool());
+        QCOMPARE(validity["counts"].toObject()["file_topology"].toInt(), 1);
+        const QJsonObject problem = validity["problems"].toArray().first().toObject();
+        QCOMPARE(problem["check"].toString(), QString("file_topology"));
+        QVERIFY2(problem["message"].toString().startsWith("Line 7 ("),
+                 qPrintable(problem["message"].toString()));
     }
 
     void brokenArchive()

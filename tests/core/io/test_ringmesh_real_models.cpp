@@ -305,9 +305,9 @@ private slots:
             writeRingMeshModel(readModel(path.toStdString()), gm);
         }
         const Model model = recoverTopology(readModel(gm));
-        const std::vector<std::string> problems = compareRingMeshTopology(gm, model);
-        for (const std::string &p : problems)
-            qWarning("%s", p.c_str());
+        const std::vector<ValidityProblem> problems = compareRingMeshTopology(gm, model);
+        for (const ValidityProblem &p : problems)
+            qWarning("%s", p.message.c_str());
         QVERIFY(problems.empty());
     }
 
@@ -335,13 +335,20 @@ private slots:
             out.close();
         }
         const Model model = recoverTopology(readModel(damaged));
-        const std::vector<std::string> problems = compareRingMeshTopology(damaged, model);
+        const std::vector<ValidityProblem> problems = compareRingMeshTopology(damaged, model);
         QCOMPARE(problems.size(), std::size_t(1));
-        qInfo("%s", problems[0].c_str());
-        QVERIFY(problems[0].rfind("Line 7 (", 0) == 0);
-        QVERIFY(problems[0].find(
+        qInfo("%s", problems[0].message.c_str());
+        QCOMPARE(problems[0].check, std::string(kFileTopologyCheck));
+        QCOMPARE(problems[0].entities,
+                 (std::vector<std::string>{"h1_model1", "Front_1", "Front_2"}));
+        QVERIFY(problems[0].message.rfind("Line 7 (", 0) == 0);
+        QVERIFY(problems[0].message.find(
                     "the file gives it the surfaces {8, 9}, the recovered topology {0, 8, 9}")
                 != std::string::npos);
+        ValidityReport report;
+        addRingMeshTopologyProblems(damaged, model, report);
+        QVERIFY(!report.valid);
+        QCOMPARE(report.count(kFileTopologyCheck), std::size_t(1));
     }
 
     void convertCommandPath()
