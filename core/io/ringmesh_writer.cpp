@@ -69,6 +69,7 @@ public:
                 throw InputError("surface '" + s.name + "' has no triangle");
         buildLines();
         buildInterfaces();
+        countSidesOnLines();
     }
 
     void write(const std::string &path)
@@ -118,6 +119,34 @@ private:
                 l.corners = line.corners;
             }
             m_lines.push_back(std::move(l));
+        }
+    }
+
+    // RINGMesh lists a line twice in the boundaries of a surface lying on both of its sides (an
+    // internal border, GeoModelMeshEntity::is_inside_border): count the surface's triangles along
+    // the line's first edge.
+    void countSidesOnLines()
+    {
+        std::map<std::pair<int, int>, int> firstEdge; // global vertices → line
+        for (std::size_t l = 0; l < m.lines.size(); ++l) {
+            const std::vector<int> &v = m.lines[l].vertices;
+            if (v.size() >= 2)
+                firstEdge.emplace(std::minmax(v[0], v[1]), int(l));
+        }
+        m_sidesOnLine.resize(m.surfaces.size());
+        for (std::size_t s = 0; s < m.surfaces.size(); ++s) {
+            const std::vector<int> &global = m.surfaceVertexToGlobal[s];
+            for (const Triangle &t : m.surfaces[s].triangles)
+                for (int k = 0; k < 3; ++k) {
+                    const auto it =
+                        firstEdge.find(std::minmax(global[t[k]], global[t[(k + 1) % 3]]));
+                    if (it != firstEdge.end())
+                        ++m_sidesOnLine[s][it->second];
+                }
+            for (int l : m.surfaces[s].lines) {
+                int &sides = m_sidesOnLine[s][l];
+                sides = sides >= 2 ? 2 : 1;
+            }
         }
     }
 
@@ -190,7 +219,8 @@ private:
             out << "Surface " << s << " " << field(m.surfaces[s].name)
                 << " GeogramSurfaceMesh\nboundary ";
             for (int l : m.surfaces[s].lines)
-                out << l << " ";
+                for (int k = 0; k < m_sidesOnLine[s].at(l); ++k)
+                    out << l << " ";
             out << "\n";
         }
         for (std::size_t r = 0; r < m.regions.size(); ++r) {
@@ -257,6 +287,8 @@ private:
     std::vector<GmLine> m_lines;
     std::vector<Interface> m_interfaces;
     std::vector<int> m_surfaceInterface;
+    std::vector<std::map<int, int>>
+        m_sidesOnLine; // per surface: line → 1, or 2 for an internal border
 };
 
 } // namespace

@@ -7,6 +7,8 @@
 // Corners and lines come from the model's topology (recovered here when missing); a closed line
 // gets a corner at its first vertex, as RINGMesh lines always have two. Surfaces keep their local
 // vertices and triangles in order, so coordinates and names survive a round trip bit for bit.
+// A line a surface lies on both sides of (an internal border) is listed twice among the
+// surface's boundaries, as RINGMesh does.
 // The Universe is the model's own when it has one, else every surface side no region claims,
 // turned over. Names are written with blanks replaced by '_' (fields are blank-separated).
 #pragma once

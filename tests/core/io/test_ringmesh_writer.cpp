@@ -14,6 +14,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <map>
 #include <sstream>
 
 using namespace stratamesh;
@@ -138,6 +139,41 @@ private slots:
         QCOMPARE(std::vector<double>(xyz.begin(), xyz.begin() + 3), c);
         QCOMPARE(std::vector<double>(xyz.end() - 3, xyz.end()), c);
         compareSurfaceModels(square, readRingMeshModel(file("square.gm")));
+    }
+
+    // A square cut along its diagonal (duplicated vertices) lies on both sides of the diagonal
+    // line: RINGMesh lists such an internal border twice among the surface's boundaries.
+    void internalBorderListedTwice()
+    {
+        Model model;
+        model.name = "cut";
+        Surface s;
+        s.name = "cut";
+        s.featureName = "cut";
+        s.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+        s.triangles = {{0, 1, 2}, {3, 4, 5}};
+        model.surfaces.push_back(s);
+        const Model topo = recoverTopology(model);
+        QCOMPARE(topo.lines.size(), std::size_t(3));
+        int diagonal = -1;
+        for (std::size_t l = 0; l < topo.lines.size(); ++l)
+            if (topo.lines[l].vertices.size() == 2)
+                diagonal = int(l);
+        QVERIFY(diagonal >= 0);
+        writeRingMeshModel(topo, file("cut.gm"));
+        const ZipReader zip(file("cut.gm"));
+        std::istringstream boundary(lineAfter(zip.read("mesh_entities.txt"), "Surface 0 "));
+        std::string word;
+        boundary >> word;
+        QCOMPARE(word, std::string("boundary"));
+        std::map<int, int> times;
+        for (int l; boundary >> l;)
+            ++times[l];
+        QCOMPARE(times.size(), std::size_t(3));
+        for (const auto &[line, count] : times)
+            QCOMPARE(count, line == diagonal ? 2 : 1);
+        const Model back = recoverTopology(readRingMeshModel(file("cut.gm")));
+        compareSurfaceModels(topo, back);
     }
 
     void prismAndPyramid()
