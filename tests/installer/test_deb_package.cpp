@@ -67,6 +67,7 @@ private slots:
     {
         QStringList expected{
             QStringLiteral("usr/bin/stratamesh-cli"),
+            QStringLiteral("usr/bin/stratamesh-tetgen"), // TetGen's process (tetmesh)
             QStringLiteral("usr/lib/libstratamesh_core.so.0"),
             QStringLiteral("usr/share/applications/stratamesh.desktop"),
             QStringLiteral("usr/share/icons/hicolor/scalable/apps/stratamesh.svg"),
