@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <unistd.h>
 
@@ -386,12 +387,12 @@ TetgenResult runTetgen(const Model &model, const TetgenParams &params, Progress 
 
     progress.tick(0.0, "checking the model for TetGen");
     Progress checking = progressRange(progress, 0.0, 0.2);
-    if (params.checkInput && rejectInvalidModel(model, checking, result))
-        return result;
     Plc plc;
     try {
+        if (params.checkInput && rejectInvalidModel(model, checking, result))
+            return result;
         plc = buildPlc(model);
-    } catch (const InputError &e) {
+    } catch (const InputError &e) { // no topology (NaN, bad ids), a region without an inside
         result.outcome = TetgenOutcome::InvalidInput;
         result.message = std::string("TetGen was not run: ") + e.what();
         return result;
@@ -404,10 +405,19 @@ TetgenResult runTetgen(const Model &model, const TetgenParams &params, Progress 
         return result;
     }
 
-    WorkDirectory work;
-    const std::string poly = work.file("plc.poly"), output = work.file("mesh.tets"),
-                      log = work.file("tetgen.log");
-    writeTetgenPoly(plc, poly);
+    std::unique_ptr<WorkDirectory> work;
+    std::string poly, output, log;
+    try { // a full or read-only temporary folder
+        work = std::make_unique<WorkDirectory>();
+        poly = work->file("plc.poly");
+        output = work->file("mesh.tets");
+        log = work->file("tetgen.log");
+        writeTetgenPoly(plc, poly);
+    } catch (const FileError &e) {
+        result.outcome = TetgenOutcome::Aborted;
+        result.message = std::string("TetGen was not run: ") + e.what();
+        return result;
+    }
     Progress meshing = progressRange(progress, 0.2, 0.95);
     const ChildExit exit = runChild({helper, result.switches, poly, output}, log,
                                     {params.timeLimitSeconds, params.memoryLimitMB}, meshing,

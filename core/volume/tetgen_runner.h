@@ -60,8 +60,10 @@ std::string tetgenSwitches(const TetgenParams &params);
 // in ../bin from it, else its build-tree path. Empty when none is executable.
 std::string findTetgenHelper();
 
-// Throws Cancelled (after killing and reaping the helper) when progress is cancelled; every other
-// failure is a result with its outcome.
+// Throws Cancelled (after killing and reaping the helper) when progress is cancelled, InputError
+// for negative or NaN parameters; every other failure is a result with its outcome (a model
+// whose topology cannot be recovered is invalid_input, a work folder that cannot be written is
+// aborted).
 TetgenResult runTetgen(const Model &model, const TetgenParams &params,
                        Progress &progress = Progress::none());
 

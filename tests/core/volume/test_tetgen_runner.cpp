@@ -271,6 +271,30 @@ private slots:
                                  compareTetmeshes(twoRegionBox(), twoRegionBox(), {}, cancelled));
     }
 
+    void badModelsAreResults()
+    {
+        Model nan = twoRegionBox();
+        nan.surfaces[0].vertices[0].x() = std::nan("");
+        nan.vertices.clear();
+        nan.surfaceVertexToGlobal.clear();
+        QCOMPARE(tetgenOutcomeName(runTetgen(nan, {}).outcome), "invalid_input");
+        Model open = twoRegionBox();
+        open.regions[0].boundaries.resize(1);
+        TetgenParams unchecked;
+        unchecked.checkInput = false;
+        const TetgenResult r = runTetgen(open, unchecked);
+        QCOMPARE(tetgenOutcomeName(r.outcome), "invalid_input");
+        QVERIFY2(r.message.find(open.regions[0].name) != std::string::npos, r.message.c_str());
+        TetgenParams negative;
+        negative.quality = -1;
+        QVERIFY_THROWS_EXCEPTION(InputError, runTetgen(twoRegionBox(), negative));
+        qputenv("TMPDIR", "/nonexistent-folder");
+        const TetgenResult noTmp = runTetgen(twoRegionBox(), {});
+        qunsetenv("TMPDIR");
+        QCOMPARE(tetgenOutcomeName(noTmp.outcome), "aborted");
+        QVERIFY2(noTmp.message.find("work folder") != std::string::npos, noTmp.message.c_str());
+    }
+
     void missingHelperIsAborted()
     {
         TetgenParams p;
