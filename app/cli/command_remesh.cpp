@@ -1,12 +1,13 @@
 // stratamesh-cli remesh MODEL (--sites N | --edge-length L) [--d-resolution D] [--iterations 100]
-//     [--seed S] [--adaptive] [--merge-all] [--strip-factor F] [--allow-invalid] -o OUT.(ml|ts) --report REPORT.json
+//     [--seed S] [--adaptive] [--merge-all] [--strip-factor F] [--allow-invalid] -o
+//     OUT.(ml|ts|gm|msh|vtu|vtk|vtp) --report REPORT.json
 // Remeshes every surface of a model at once at the chosen resolution (thesis ch. 4), writes the
 // new model, and a JSON report: input and output (counts and mesh as `info --json`, validity),
 // the Hausdorff distance, histograms, timings, the simplification ledger and the CVT energy.
 #include "cli_output.h"
-#include "common/error.h"
 #include "command_args.h"
-#include "io/gocad_writer.h"
+#include "common/error.h"
+#include "io/mesh_writer.h"
 #include "io/model_reader.h"
 #include "json_report.h"
 #include "model/model_counts.h"
@@ -25,7 +26,10 @@ namespace stratamesh::cli {
 
 namespace {
 
-QJsonArray vec3(const Vec3 &v) { return QJsonArray{v.x(), v.y(), v.z()}; }
+QJsonArray vec3(const Vec3 &v)
+{
+    return QJsonArray{v.x(), v.y(), v.z()};
+}
 
 QJsonObject countsJson(const EntityCounts &c)
 {
@@ -43,10 +47,11 @@ QJsonObject validityJson(const ValidityReport &report)
         QJsonArray entities;
         for (const std::string &e : p.entities)
             entities.append(QString::fromStdString(e));
-        problems.append(QJsonObject{{QStringLiteral("check"), QString::fromStdString(p.check)},
-                                    {QStringLiteral("entities"), entities},
-                                    {QStringLiteral("position"), vec3(p.position)},
-                                    {QStringLiteral("message"), QString::fromStdString(p.message)}});
+        problems.append(
+            QJsonObject{{QStringLiteral("check"), QString::fromStdString(p.check)},
+                        {QStringLiteral("entities"), entities},
+                        {QStringLiteral("position"), vec3(p.position)},
+                        {QStringLiteral("message"), QString::fromStdString(p.message)}});
     }
     QJsonObject counts;
     for (const auto &[check, count] : report.counts)
@@ -59,19 +64,22 @@ QJsonObject validityJson(const ValidityReport &report)
 QJsonObject sideJson(const Model &model, const MeshStatistics &mesh, const ValidityReport &validity)
 {
     const ModelCounts counts = countEntities(model);
-    return QJsonObject{{QStringLiteral("counts"), QJsonObject{{QStringLiteral("all"), countsJson(counts.all)},
-                                                              {QStringLiteral("without_box"), countsJson(counts.withoutBox)}}},
-                       {QStringLiteral("mesh"), toJson(mesh)},
-                       {QStringLiteral("validity"), validityJson(validity)}};
+    return QJsonObject{
+        {QStringLiteral("counts"),
+         QJsonObject{{QStringLiteral("all"), countsJson(counts.all)},
+                     {QStringLiteral("without_box"), countsJson(counts.withoutBox)}}},
+        {QStringLiteral("mesh"), toJson(mesh)},
+        {QStringLiteral("validity"), validityJson(validity)}};
 }
 
 QJsonArray refsJson(const std::vector<EntityRef> &refs)
 {
     QJsonArray a;
     for (const EntityRef &r : refs)
-        a.append(QJsonObject{{QStringLiteral("kind"), QString::fromStdString(entityKindName(r.kind))},
-                             {QStringLiteral("id"), r.id},
-                             {QStringLiteral("name"), QString::fromStdString(r.name)}});
+        a.append(
+            QJsonObject{{QStringLiteral("kind"), QString::fromStdString(entityKindName(r.kind))},
+                        {QStringLiteral("id"), r.id},
+                        {QStringLiteral("name"), QString::fromStdString(r.name)}});
     return a;
 }
 
@@ -79,31 +87,29 @@ QJsonArray ledgerJson(const SimplificationLedger &ledger)
 {
     QJsonArray a;
     for (const LedgerRecord &r : ledger)
-        a.append(QJsonObject{{QStringLiteral("kind"), QString::fromStdString(ledgerKindName(r.kind))},
-                             {QStringLiteral("inputs"), refsJson(r.inputs)},
-                             {QStringLiteral("outputs"), refsJson(r.outputs)},
-                             {QStringLiteral("position"), vec3(r.position)},
-                             {QStringLiteral("size"), r.size},
-                             {QStringLiteral("size_meaning"), QString::fromStdString(r.sizeMeaning)},
-                             {QStringLiteral("note"), QString::fromStdString(r.note)}});
+        a.append(
+            QJsonObject{{QStringLiteral("kind"), QString::fromStdString(ledgerKindName(r.kind))},
+                        {QStringLiteral("inputs"), refsJson(r.inputs)},
+                        {QStringLiteral("outputs"), refsJson(r.outputs)},
+                        {QStringLiteral("position"), vec3(r.position)},
+                        {QStringLiteral("size"), r.size},
+                        {QStringLiteral("size_meaning"), QString::fromStdString(r.sizeMeaning)},
+                        {QStringLiteral("note"), QString::fromStdString(r.note)}});
     return a;
 }
 
 void writeModelFile(const Model &model, const QString &path)
 {
-    const QString ext = QFileInfo(path).suffix().toLower();
-    if (ext == QLatin1String("ml"))
-        writeGocadModel3d(model, path.toStdString());
-    else
-        writeGocadTSurf(model, path.toStdString());
+    exportModel(model, path.toStdString());
 }
 
 void writeReport(const QJsonObject &report, const QString &path)
 {
     QSaveFile file(path); // written beside, renamed on commit
-    if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(report).toJson(QJsonDocument::Indented)) < 0 ||
-        !file.commit())
-        throw FileError(path.toStdString(), 0, "cannot write the report: " + file.errorString().toStdString());
+    if (!file.open(QIODevice::WriteOnly)
+        || file.write(QJsonDocument(report).toJson(QJsonDocument::Indented)) < 0 || !file.commit())
+        throw FileError(path.toStdString(), 0,
+                        "cannot write the report: " + file.errorString().toStdString());
 }
 
 } // namespace
@@ -130,10 +136,31 @@ int runRemesh(CommandArgs &args)
     if ((params.sites > 0) == (params.edgeLength > 0.0))
         throw UsageError(QStringLiteral("give exactly one of --sites N and --edge-length L"));
     if (!output)
-        throw UsageError(QStringLiteral("missing -o OUT.ml or -o OUT.ts"));
+        throw UsageError(QStringLiteral("missing -o OUT.ml (or .ts, .gm, .msh, .vtu, .vtk, .vtp)"));
     const QString ext = QFileInfo(*output).suffix().toLower();
-    if (ext != QLatin1String("ml") && ext != QLatin1String("ts"))
-        throw UsageError(QStringLiteral("the output must be a Gocad .ml or .ts file, not '%1'").arg(*output));
+    static const QStringList modelFormats{
+        QStringLiteral("ml"),  QStringLiteral("ts"),  QStringLiteral("gm"), QStringLiteral("msh"),
+        QStringLiteral("vtu"), QStringLiteral("vtk"), QStringLiteral("vtp")};
+    if (!modelFormats.contains(ext))
+        throw UsageError(
+            QStringLiteral(
+                "the output must be a model file (.ml, .ts, .gm, .msh, .vtu, .vtk, .vtp), not '%1'")
+                .arg(*output));
+    // Refused before the run, not after it: overwriting the input, or a report nobody can write.
+    if (QFileInfo(*output).absoluteFilePath() == QFileInfo(path).absoluteFilePath()
+        || (QFileInfo::exists(*output)
+            && QFileInfo(*output).canonicalFilePath() == QFileInfo(path).canonicalFilePath()))
+        throw UsageError(
+            QStringLiteral("the output '%1' is the input model; choose another file").arg(*output));
+    for (const QString &target : {*output, reportPath.value_or(QString())}) {
+        if (target.isEmpty())
+            continue;
+        const QFileInfo dir(QFileInfo(target).absolutePath());
+        if (!dir.isDir() || !dir.isWritable())
+            throw UsageError(
+                QStringLiteral("cannot write '%1': its folder does not exist or is not writable")
+                    .arg(target));
+    }
 
     const Model input = recoverTopology(readModel(path.toStdString()));
     const RemeshResult result = remeshModel(input, params);
@@ -143,12 +170,13 @@ int runRemesh(CommandArgs &args)
         std::string names;
         for (const std::string &e : p.entities)
             names += (names.empty() ? "" : ", ") + e;
-        throw InputError("remesh: the result is not valid after " + std::to_string(result.refinementRounds)
-                         + " refinement round(s) (" + std::to_string(result.siteCount) + " sites): "
-                         + std::to_string(outValidity.problems.size()) + " problem(s), first [" + p.check + "] "
-                         + names + " at " + std::to_string(p.position.x()) + " " + std::to_string(p.position.y())
-                         + " " + std::to_string(p.position.z()) + ": " + p.message
-                         + "; nothing written (--allow-invalid writes it anyway)");
+        throw InputError(
+            "remesh: the result is not valid after " + std::to_string(result.refinementRounds)
+            + " refinement round(s) (" + std::to_string(result.siteCount)
+            + " sites): " + std::to_string(outValidity.problems.size()) + " problem(s), first ["
+            + p.check + "] " + names + " at " + std::to_string(p.position.x()) + " "
+            + std::to_string(p.position.y()) + " " + std::to_string(p.position.z()) + ": "
+            + p.message + "; nothing written (--allow-invalid writes it anyway)");
     }
     writeModelFile(result.model, *output);
 
@@ -194,13 +222,16 @@ int runRemesh(CommandArgs &args)
                      {QStringLiteral("symmetric"), comparison.hausdorff.symmetric},
                      {QStringLiteral("bbox_diagonal"), comparison.hausdorff.bboxDiagonal}}},
         {QStringLiteral("histograms"),
-         QJsonObject{{QStringLiteral("min_angle_deg"), QJsonObject{{QStringLiteral("input"), toJson(comparison.inputMinAngle)},
-                                                                   {QStringLiteral("output"), toJson(comparison.outputMinAngle)}}},
-                     {QStringLiteral("quality"), QJsonObject{{QStringLiteral("input"), toJson(comparison.inputQuality)},
-                                                             {QStringLiteral("output"), toJson(comparison.outputQuality)}}}}},
-        {QStringLiteral("timings"), QJsonObject{{QStringLiteral("sampling_s"), result.timings.samplingSeconds},
-                                                {QStringLiteral("mesh_s"), result.timings.meshSeconds},
-                                                {QStringLiteral("total_s"), result.timings.totalSeconds}}},
+         QJsonObject{{QStringLiteral("min_angle_deg"),
+                      QJsonObject{{QStringLiteral("input"), toJson(comparison.inputMinAngle)},
+                                  {QStringLiteral("output"), toJson(comparison.outputMinAngle)}}},
+                     {QStringLiteral("quality"),
+                      QJsonObject{{QStringLiteral("input"), toJson(comparison.inputQuality)},
+                                  {QStringLiteral("output"), toJson(comparison.outputQuality)}}}}},
+        {QStringLiteral("timings"),
+         QJsonObject{{QStringLiteral("sampling_s"), result.timings.samplingSeconds},
+                     {QStringLiteral("mesh_s"), result.timings.meshSeconds},
+                     {QStringLiteral("total_s"), result.timings.totalSeconds}}},
         {QStringLiteral("ledger"), ledgerJson(result.ledger)},
         {QStringLiteral("energy"), energy},
     };
@@ -208,16 +239,18 @@ int runRemesh(CommandArgs &args)
         writeReport(report, *reportPath);
 
     QTextStream &o = out();
-    o << "remeshed " << QFileInfo(path).fileName() << " with " << result.siteCount << " sites (" << result.initialSiteCount
-      << " asked, " << result.refinementRounds << " refinement rounds) into " << *output << '\n'
-      << "  output: " << comparison.output.mesh.vertices << " vertices, " << comparison.output.mesh.triangles
-      << " triangles, mean Q " << QString::number(comparison.output.mesh.meanQuality, 'f', 3) << ", "
+    o << "remeshed " << QFileInfo(path).fileName() << " with " << result.siteCount << " sites ("
+      << result.initialSiteCount << " asked, " << result.refinementRounds
+      << " refinement rounds) into " << *output << '\n'
+      << "  output: " << comparison.output.mesh.vertices << " vertices, "
+      << comparison.output.mesh.triangles << " triangles, mean Q "
+      << QString::number(comparison.output.mesh.meanQuality, 'f', 3) << ", "
       << QString::number(comparison.output.mesh.pctTrianglesAngleBelow30, 'f', 2) << " % < 30°\n"
-      << "  Hausdorff " << QString::number(comparison.hausdorff.symmetricPctBbox, 'f', 3) << " % of the bbox diagonal, "
-      << result.ledger.size() << " ledger records, " << edits.total() << " topology edits, "
-      << (outValidity.valid ? "valid" : "NOT valid") << '\n'
-      << "  time: sampling " << QString::number(result.timings.samplingSeconds, 'f', 2) << " s, mesh "
-      << QString::number(result.timings.meshSeconds, 'f', 2) << " s\n";
+      << "  Hausdorff " << QString::number(comparison.hausdorff.symmetricPctBbox, 'f', 3)
+      << " % of the bbox diagonal, " << result.ledger.size() << " ledger records, " << edits.total()
+      << " topology edits, " << (outValidity.valid ? "valid" : "NOT valid") << '\n'
+      << "  time: sampling " << QString::number(result.timings.samplingSeconds, 'f', 2)
+      << " s, mesh " << QString::number(result.timings.meshSeconds, 'f', 2) << " s\n";
     return 0;
 }
 

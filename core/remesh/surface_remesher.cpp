@@ -5,6 +5,7 @@
 #include "cvt/cvt_optimizer.h"
 #include "cvt/initial_sampling.h"
 #include "model/topology.h"
+#include "quality/mesh_statistics.h"
 #include "remesh/cell_components.h"
 #include "remesh/duplicate_separation.h"
 #include "remesh/editable_soup.h"
@@ -62,7 +63,8 @@ std::vector<double> adaptiveDensity(const Model &model, const RemeshParams &para
     std::vector<double> rho(d.size(), 1.0);
     if (dMax > 0.0)
         for (std::size_t v = 0; v < d.size(); ++v)
-            rho[v] = std::max(params.adaptiveFloor, std::pow(1.0 - d[v] / dMax, params.adaptiveExponent));
+            rho[v] = std::max(params.adaptiveFloor,
+                              std::pow(1.0 - d[v] / dMax, params.adaptiveExponent));
     return rho;
 }
 
@@ -85,8 +87,9 @@ StripCollapse stripsRemoved(const Model &input, double edgeLength, const RemeshP
 }
 
 // The mesh-building half on the model without its thin strips.
-RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec3> &sites, const RemeshParams &params,
-                           SimplificationLedger ledger, Progress &progress)
+RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec3> &sites,
+                           const RemeshParams &params, SimplificationLedger ledger,
+                           Progress &progress)
 {
     const auto start = std::chrono::steady_clock::now();
     const Model &input = collapsed.model;
@@ -103,7 +106,8 @@ RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec
     CellPointsParams pointParams;
     pointParams.dResolution = params.dResolution;
     pointParams.mergeAllExtraPoints = params.mergeAllExtraPoints;
-    const CellPoints points = computeCellPoints(input, domain, rvd, components, pointParams, result.ledger);
+    const CellPoints points =
+        computeCellPoints(input, domain, rvd, components, pointParams, result.ledger);
     OutputMesh mesh;
     mesh.points = points.points;
     mesh.triangles = buildDualFaces(domain, rvd, components, points, result.faces);
@@ -150,17 +154,16 @@ double edgeLengthForSites(double area, int sites)
     return sites > 0 && area > 0.0 ? std::sqrt(area / (std::sqrt(3.0) / 2.0 * sites)) : 0.0;
 }
 
-RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &sites, const RemeshParams &params,
-                             Progress &progress)
+RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &sites,
+                             const RemeshParams &params, Progress &progress)
 {
     const Model input = withTopology(inputModel);
     SimplificationLedger ledger;
     const StripCollapse collapsed =
-        stripsRemoved(input, edgeLengthForSites(modelArea(input), static_cast<int>(sites.size())), params, ledger,
-                      progress);
+        stripsRemoved(input, edgeLengthForSites(modelArea(input), static_cast<int>(sites.size())),
+                      params, ledger, progress);
     return meshFromSites(collapsed, sites, params, std::move(ledger), progress);
 }
-
 
 RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Progress &progress)
 {
@@ -173,7 +176,8 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     const double area = modelArea(input);
     const int n = params.sites > 0 ? params.sites : sitesForEdgeLength(area, params.edgeLength);
     SimplificationLedger ledger;
-    const StripCollapse collapsed = stripsRemoved(input, edgeLengthForSites(area, n), params, ledger, progress);
+    const StripCollapse collapsed =
+        stripsRemoved(input, edgeLengthForSites(area, n), params, ledger, progress);
     const Model &simplified = collapsed.model;
     const RestrictionDomain domain = makeRestrictionDomain(
         simplified, params.adaptive ? adaptiveDensity(simplified, params) : std::vector<double>{});
@@ -181,8 +185,11 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     cvt.iterations = params.iterations;
     cvt.alpha = params.boundaryWeight;
     const CvtResult optimised =
-        params.iterations > 0 ? optimizeCvt(domain, sampleSurfaces(domain, n, params.seed), cvt, progress) : CvtResult{};
-    std::vector<Vec3> sites = params.iterations > 0 ? optimised.sites : sampleSurfaces(domain, n, params.seed);
+        params.iterations > 0
+            ? optimizeCvt(domain, sampleSurfaces(domain, n, params.seed), cvt, progress)
+            : CvtResult{};
+    std::vector<Vec3> sites =
+        params.iterations > 0 ? optimised.sites : sampleSurfaces(domain, n, params.seed);
     const double sampling = secondsSince(start);
     const std::size_t stripRecords = ledger.size();
     RemeshResult result = meshFromSites(collapsed, sites, params, ledger, progress);
@@ -190,22 +197,30 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
 
     // Rounds of local refinement where the output is wrong (topology_refinement.h).
     std::vector<double> density = domain.density;
-
     int rounds = 0;
+    auto score = [](const RemeshResult &r) {
+        return std::make_pair(r.validity.problems.size(), countTopologyEdits(r.ledger).total());
+    };
+    result.refinementRounds = 0;
+    RemeshResult best = result;
+    const double baseSlivers = computeMeshStatistics(result.model).pctTrianglesAngleBelow30;
     for (;;) {
         const double spacing = edgeLengthForSites(area, static_cast<int>(sites.size()));
         // Validity comes first: its places are refined while rounds are left, whatever the
         // growth cap; topology places only while the cap leaves room.
         const ValidityReport none;
-        const std::vector<Vec3> topology = refinementTargets(simplified, result.model, result.ledger, stripRecords,
-                                                             none, params.dResolution, 0.5 * spacing);
+        const std::vector<Vec3> topology =
+            refinementTargets(simplified, result.model, result.ledger, stripRecords, none,
+                              params.dResolution, 0.5 * spacing);
         std::vector<Vec3> invalid;
         for (const ValidityProblem &p : result.validity.problems)
             invalid.push_back(p.position);
         result.remainingTargets = static_cast<int>(topology.size() + invalid.size());
-        if (result.remainingTargets == 0 || rounds >= params.refinementRounds + (invalid.empty() ? 0 : 4))
+        if (result.remainingTargets == 0 || params.refinementRounds == 0
+            || rounds >= params.refinementRounds + (invalid.empty() ? 0 : 4))
             break;
-        const int room = static_cast<int>(std::lround(params.refinementMaxGrowth * n)) - (static_cast<int>(sites.size()) - n);
+        const int room = static_cast<int>(std::lround(params.refinementMaxGrowth * n))
+                         - (static_cast<int>(sites.size()) - n);
         std::vector<Vec3> targets = invalid;
         if (room > 0 && rounds < params.refinementRounds)
             targets.insert(targets.end(), topology.begin(), topology.end());
@@ -231,8 +246,24 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
             sites = optimizeCvt(refined, sites, local, progress).sites;
         RemeshResult again = meshFromSites(collapsed, sites, params, ledger, progress);
         again.validity = checkValidity(again.model);
+        // A round is kept only when it improves (validity first, then topology edits): the next
+        // round still starts from its sites, but the result never gets worse by refining.
+        const bool fixesValidity = again.validity.problems.size() < best.validity.problems.size();
+        const bool keepsQuality = computeMeshStatistics(again.model).pctTrianglesAngleBelow30
+                                  <= baseSlivers + params.refinementMaxQualityLoss;
+        if (score(again) < score(best) && (fixesValidity || keepsQuality)) {
+            best = again;
+            best.siteCount = static_cast<int>(sites.size());
+            best.refinementRounds = rounds;
+        }
         result = std::move(again);
     }
+    result = std::move(best);
+    rounds = result.refinementRounds;
+    result.remainingTargets = static_cast<int>(
+        refinementTargets(simplified, result.model, result.ledger, stripRecords, result.validity,
+                          params.dResolution, 0.5 * edgeLengthForSites(area, result.siteCount))
+            .size());
     result.energy = optimised.energy;
     result.initialSiteCount = n;
     result.refinementRounds = rounds;
@@ -246,13 +277,26 @@ TopologyEdits countTopologyEdits(const SimplificationLedger &ledger)
     TopologyEdits e;
     for (const LedgerRecord &r : ledger)
         switch (r.kind) {
-        case LedgerKind::SurfaceLost: ++e.surfacesLost; break;
-        case LedgerKind::SurfaceCreated: ++e.surfacesCreated; break;
-        case LedgerKind::LineLost: ++e.linesLost; break;
-        case LedgerKind::LineCreated: ++e.linesCreated; break;
-        case LedgerKind::CornerLost: ++e.cornersLost; break;
-        case LedgerKind::CornerCreated: ++e.cornersCreated; break;
-        default: break;
+        case LedgerKind::SurfaceLost:
+            ++e.surfacesLost;
+            break;
+        case LedgerKind::SurfaceCreated:
+            ++e.surfacesCreated;
+            break;
+        case LedgerKind::LineLost:
+            ++e.linesLost;
+            break;
+        case LedgerKind::LineCreated:
+            ++e.linesCreated;
+            break;
+        case LedgerKind::CornerLost:
+            ++e.cornersLost;
+            break;
+        case LedgerKind::CornerCreated:
+            ++e.cornersCreated;
+            break;
+        default:
+            break;
         }
     return e;
 }

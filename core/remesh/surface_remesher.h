@@ -50,6 +50,10 @@ struct RemeshParams {
     double refinementDensityFactor = 2.0; // density raised this much around each place, per round
     int refinementIterations = 20;        // CVT iterations after sites are added
     double refinementMaxGrowth = 1.0;     // topology places get at most this fraction of the asked sites
+    // A round that only saves topology is kept when its share of triangles below 30° grows by at
+    // most this many percentage points over the unrefined remesh (features far below the
+    // resolution cannot be kept without needles).
+    double refinementMaxQualityLoss = 0.75;
 };
 
 struct RemeshTimings {

@@ -67,7 +67,15 @@ std::vector<Vec3> refinementTargets(const Model &input, const Model &output,
                                     const ValidityReport &validity, double dResolution,
                                     double spacing)
 {
-    std::vector<Vec3> targets;
+    // Merges of features closer than d_resolution explain the edits along them (a cancelled
+    // throw joins two lines into one, loses the fault strip's corners...).
+    std::vector<Vec3> merges;
+    if (dResolution > 0.0)
+        for (std::size_t i = firstRecord; i < ledger.size(); ++i)
+            if (ledger[i].kind == LedgerKind::CloseFeatureMerge)
+                merges.push_back(ledger[i].position);
+    const double reach = std::max(dResolution, 2.0 * spacing);
+    std::vector<Vec3> targets, places;
     for (std::size_t i = firstRecord; i < ledger.size(); ++i) {
         const LedgerRecord &r = ledger[i];
         const bool wrong = r.kind == LedgerKind::IntersectionUnresolved
@@ -76,17 +84,23 @@ std::vector<Vec3> refinementTargets(const Model &input, const Model &output,
                                && !requested(r, dResolution));
         if (!wrong)
             continue;
-        targets.push_back(r.position);
+        places.assign(1, r.position);
         if (r.kind == LedgerKind::LineLost)
             for (const EntityRef &ref : r.inputs)
                 if (ref.kind == EntityKind::Line && ref.id >= 0
                     && ref.id < static_cast<int>(input.lines.size()))
-                    sampleLine(input, input.lines[ref.id], spacing, targets);
+                    sampleLine(input, input.lines[ref.id], spacing, places);
         if (r.kind == LedgerKind::LineCreated)
             for (const EntityRef &ref : r.outputs)
                 if (ref.kind == EntityKind::Line && ref.id >= 0
                     && ref.id < static_cast<int>(output.lines.size()))
-                    sampleLine(output, output.lines[ref.id], spacing, targets);
+                    sampleLine(output, output.lines[ref.id], spacing, places);
+        const bool explained = r.kind != LedgerKind::IntersectionUnresolved
+                               && std::any_of(places.begin(), places.end(), [&](const Vec3 &p) {
+                                      return nearAny(p, merges, reach * reach);
+                                  });
+        if (!explained)
+            targets.insert(targets.end(), places.begin(), places.end());
     }
     for (const ValidityProblem &p : validity.problems)
         targets.push_back(p.position);

@@ -133,6 +133,54 @@ private slots:
         QCOMPARE(info[QStringLiteral("counts")], rep[QStringLiteral("output")][QStringLiteral("counts")]);
     }
 
+    // Without refinement the modelA2 remesh at 1000 sites (seed 1) holds two points 1e-12 apart,
+    // which TetGen merges into duplicated facets: the CLI must not write it unless asked to.
+    void remeshRefusesToWriteAnInvalidResult()
+    {
+        STRATAMESH_REQUIRE_DATA(path, "modelA2.ml");
+        QTemporaryDir dir;
+        const QString out = dir.filePath(QStringLiteral("remeshed.ml"));
+        const QString report = dir.filePath(QStringLiteral("report.json"));
+        const QStringList base{QStringLiteral("remesh"), path, QStringLiteral("--sites"), QStringLiteral("1000"),
+                               QStringLiteral("--seed"), QStringLiteral("1"), QStringLiteral("--refinement-rounds"),
+                               QStringLiteral("0"), QStringLiteral("-o"), out, QStringLiteral("--report"), report};
+        const CliRun refused = runCli(base);
+        QVERIFY(refused.finished);
+        QCOMPARE(refused.exitCode, 1);
+        QVERIFY(!QFile::exists(out));
+        QVERIFY(!QFile::exists(report));
+        QVERIFY2(refused.err.contains(QStringLiteral("not valid")) && refused.err.contains(QStringLiteral("close_vertices")),
+                 qPrintable(refused.err));
+
+        const CliRun allowed = runCli(base + QStringList{QStringLiteral("--allow-invalid")});
+        QVERIFY2(allowed.finished && allowed.exitCode == 0, qPrintable(allowed.err));
+        QVERIFY(QFile::exists(out));
+        QFile reportFile(report);
+        QVERIFY(reportFile.open(QIODevice::ReadOnly));
+        const QJsonObject rep = parseObject(reportFile.readAll());
+        QVERIFY(!rep[QStringLiteral("output")][QStringLiteral("validity")][QStringLiteral("valid")].toBool());
+        QCOMPARE(rep[QStringLiteral("refinement")][QStringLiteral("rounds")].toInt(), 0);
+
+        // With refinement (the default) the same run is valid and says how many sites it added.
+        const CliRun refined = runCli({QStringLiteral("remesh"), path, QStringLiteral("--sites"), QStringLiteral("1000"),
+                                       QStringLiteral("--seed"), QStringLiteral("1"), QStringLiteral("-o"), out,
+                                       QStringLiteral("--report"), report});
+        QVERIFY2(refined.finished && refined.exitCode == 0, qPrintable(refined.err));
+        reportFile.close();
+        QVERIFY(reportFile.open(QIODevice::ReadOnly));
+        const QJsonObject again = parseObject(reportFile.readAll());
+        QVERIFY(again[QStringLiteral("output")][QStringLiteral("validity")][QStringLiteral("valid")].toBool());
+        const QJsonObject refinement = again[QStringLiteral("refinement")].toObject();
+        QCOMPARE(refinement[QStringLiteral("initial_sites")].toInt(), 1000);
+        QVERIFY(refinement[QStringLiteral("final_sites")].toInt() > 1000);
+        const QJsonObject edits = again[QStringLiteral("topology_edits")].toObject();
+        int sum = 0;
+        for (const char *k : {"surfaces_lost", "surfaces_created", "lines_lost", "lines_created", "corners_lost",
+                              "corners_created"})
+            sum += edits[QLatin1String(k)].toInt(-1000);
+        QCOMPARE(edits[QStringLiteral("total")].toInt(), sum);
+    }
+
     void remeshRefusesUnknownOutputFormat()
     {
         STRATAMESH_REQUIRE_DATA(path, "modelA1.ml");
