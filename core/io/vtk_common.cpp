@@ -13,7 +13,7 @@ void collect(vtkObject *, unsigned long event, void *clientData, void *callData)
 {
     auto *message = static_cast<std::string *>(clientData);
     const char *text = static_cast<const char *>(callData);
-    if (event != vtkCommand::ErrorEvent || !text)
+    if ((event != vtkCommand::ErrorEvent && event != vtkCommand::WarningEvent) || !text)
         return;
     std::string line(text);
     while (!line.empty() && (line.back() == '\n' || line.back() == ' '))
@@ -35,10 +35,10 @@ VtkErrorCapture::VtkErrorCapture(vtkObject *object) : m_object(object)
     error->SetCallback(collect);
     error->SetClientData(&m_message);
     m_errorTag = object->AddObserver(vtkCommand::ErrorEvent, error);
-    // Warnings are not failures; observing them keeps them off the console.
+    // Observing warnings keeps them off the console; whether they fail is the caller's choice.
     vtkNew<vtkCallbackCommand> warning;
     warning->SetCallback(collect);
-    warning->SetClientData(&m_message);
+    warning->SetClientData(&m_warnings);
     m_warningTag = object->AddObserver(vtkCommand::WarningEvent, warning);
 }
 

@@ -36,12 +36,15 @@ public:
     VtkErrorCapture &operator=(const VtkErrorCapture &) = delete;
     const std::string &message() const { return m_message; }
     bool failed() const { return !m_message.empty(); }
+    // Warnings, kept apart: a writer may go on, a reader may not.
+    const std::string &warnings() const { return m_warnings; }
 
 private:
     vtkObject *m_object;
     unsigned long m_errorTag = 0;
     unsigned long m_warningTag = 0;
     std::string m_message;
+    std::string m_warnings;
 };
 
 } // namespace stratamesh

@@ -1,7 +1,11 @@
 #include "io/vtk_reader.h"
 
 #include "common/error.h"
+#include "io/coordinate_bound.h"
+#include "io/group_index.h"
 #include "io/vtk_common.h"
+#include "io/vtk_legacy_counts.h"
+#include "io/vtk_output_capture.h"
 
 #include <vtkAbstractArray.h>
 #include <vtkCell.h>
@@ -22,7 +26,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
+#include <limits>
 
 namespace stratamesh {
 
@@ -35,7 +41,8 @@ std::string lowerExtension(const std::string &path)
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
         return {};
     std::string ext = path.substr(dot);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
 
@@ -72,7 +79,8 @@ std::vector<std::string> stringsOf(vtkFieldData *fd, const char *name)
 
 FeatureType featureTypeFromName(const std::string &word)
 {
-    for (FeatureType t : {FeatureType::Horizon, FeatureType::Fault, FeatureType::Unconformity, FeatureType::Boundary})
+    for (FeatureType t : {FeatureType::Horizon, FeatureType::Fault, FeatureType::Unconformity,
+                          FeatureType::Boundary})
         if (featureTypeName(t) == word)
             return t;
     return FeatureType::Unknown;
@@ -81,40 +89,69 @@ FeatureType featureTypeFromName(const std::string &word)
 template <class Reader>
 vtkSmartPointer<vtkDataSet> runReader(const std::string &path)
 {
+    // A warning is a failure too: VTK warns and goes on reading a file it misunderstood.
+    VtkOutputCapture console;
     vtkNew<Reader> reader;
     VtkErrorCapture errors(reader);
     reader->SetFileName(path.c_str());
     reader->Update();
     const unsigned long code = reader->GetErrorCode();
     vtkDataSet *out = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
-    if (errors.failed() || code != vtkErrorCode::NoError || !out) {
-        const std::string cause = errors.failed() ? errors.message()
-                                  : code != vtkErrorCode::NoError ? vtkErrorCode::GetStringFromErrorCode(code)
-                                                                  : "not a VTK data set";
-        throw FileError(path, 0, "cannot read: " + cause);
-    }
+    std::string cause = errors.message();
+    for (const std::string &more : {errors.warnings(), console.message()})
+        if (!more.empty())
+            cause += (cause.empty() ? "" : "; ") + more;
+    if (cause.empty() && code != vtkErrorCode::NoError)
+        cause = vtkErrorCode::GetStringFromErrorCode(code);
+    if (cause.empty() && !out)
+        cause = "not a VTK data set";
+    if (!cause.empty())
+        throw FileError(path, 0, "VTK cannot read it: " + cause);
     return out;
+}
+
+// How many point ids a cell of this VTK type has; 0 for "at least `minimum`" (poly types).
+int pointCountOf(int type)
+{
+    switch (type) {
+    case VTK_TETRA:
+        return 4;
+    case VTK_PYRAMID:
+        return 5;
+    case VTK_WEDGE:
+        return 6;
+    case VTK_TRIANGLE:
+        return 3;
+    case VTK_LINE:
+        return 2;
+    case VTK_VERTEX:
+        return 1;
+    default:
+        return 0;
+    }
 }
 
 // Integer cell array by name, or null.
 vtkDataArray *intArray(vtkDataSet *data, const char *name)
 {
     vtkDataArray *a = data->GetCellData()->GetArray(name);
-    return a && a->GetNumberOfComponents() == 1 && a->GetNumberOfTuples() == data->GetNumberOfCells() ? a
-                                                                                                    : nullptr;
+    return a && a->GetNumberOfComponents() == 1
+                   && a->GetNumberOfTuples() == data->GetNumberOfCells()
+               ? a
+               : nullptr;
 }
 
-int groupValue(vtkDataArray *a, vtkIdType cell, int fallback)
+// The group id of a cell, refused unless it is a whole number from 0 to INT_MAX.
+long long groupValue(const std::string &path, vtkDataArray *a, const char *name, vtkIdType cell)
 {
-    return a ? static_cast<int>(a->GetComponent(cell, 0)) : fallback;
-}
-
-// Names for group ids 0..max: from field data, else "<kind>_<id+1>".
-std::vector<std::string> groupNames(std::vector<std::string> names, int maxId, const char *kind)
-{
-    for (int i = static_cast<int>(names.size()); i <= maxId; ++i)
-        names.push_back(std::string(kind) + "_" + std::to_string(i + 1));
-    return names;
+    if (!a)
+        return 0;
+    const double v = a->GetComponent(cell, 0);
+    if (!(v >= 0 && v <= std::numeric_limits<int>::max()) || v != std::floor(v))
+        throw FileError(path, 0,
+                        std::string("cell ") + std::to_string(cell) + " has " + name + " "
+                            + doubleText(v) + " (expected a whole number from 0 to 2147483647)");
+    return static_cast<long long>(v);
 }
 
 } // namespace
@@ -129,9 +166,11 @@ VolumeMesh readVtk(const std::string &path)
         data = runReader<vtkXMLUnstructuredGridReader>(path);
     else if (ext == ".vtp")
         data = runReader<vtkXMLPolyDataReader>(path);
-    else if (ext == ".vtk")
+    else if (ext == ".vtk") {
+        const VtkLegacyCounts declared = scanVtkLegacyCounts(path);
         data = runReader<vtkDataSetReader>(path);
-    else
+        checkVtkLegacyCounts(path, declared, data->GetNumberOfPoints(), data->GetNumberOfCells());
+    } else
         throw FileError(path, 0, "unknown VTK extension '" + ext + "' (use .vtu, .vtp or .vtk)");
 
     VolumeMesh mesh;
@@ -141,88 +180,134 @@ VolumeMesh readVtk(const std::string &path)
     if (vtkDataArray *depth = fd ? fd->GetArray(vtkarrays::zPositiveDepth) : nullptr)
         mesh.zPositiveDepth = depth->GetNumberOfTuples() > 0 && depth->GetComponent(0, 0) != 0;
     mesh.points.resize(static_cast<std::size_t>(data->GetNumberOfPoints()));
-    for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
-        data->GetPoint(i, mesh.points[static_cast<std::size_t>(i)].data());
+    for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
+        Vec3 &p = mesh.points[static_cast<std::size_t>(i)];
+        data->GetPoint(i, p.data());
+        if (const std::string problem = pointProblem(p); !problem.empty())
+            throw FileError(path, 0,
+                            "point " + std::to_string(i) + " (numbered from 0): " + problem);
+    }
 
     vtkDataArray *regionIds = intArray(data, vtkarrays::regionId);
     vtkDataArray *surfaceIds = intArray(data, vtkarrays::surfaceId);
     vtkDataArray *lineIds = intArray(data, vtkarrays::lineId);
     const std::vector<std::string> qualityName = stringsOf(fd, vtkarrays::qualityName);
-    vtkDataArray *quality = qualityName.empty() ? nullptr : intArray(data, qualityName.front().c_str());
-    int maxRegion = -1, maxSurface = -1, maxLine = -1;
+    vtkDataArray *quality =
+        qualityName.empty() ? nullptr : intArray(data, qualityName.front().c_str());
+    // Group ids are file ids here and become dense indices once all are known.
+    std::vector<long long> cellRegion, triangleSurface, edgeLine;
+    GroupIndex regionIndex, surfaceIndex, lineIndex;
     vtkNew<vtkIdList> ids;
     for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c) {
         const int type = data->GetCellType(c);
         data->GetCellPoints(c, ids);
-        auto id = [&](int k) { return static_cast<int>(ids->GetId(k)); };
+        const vtkIdType count = ids->GetNumberOfIds();
+        const int expected = pointCountOf(type);
+        if ((expected > 0 && count != expected) || count < 1
+            || ((type == VTK_LINE || type == VTK_POLY_LINE) && count < 2))
+            throw FileError(
+                path, 0,
+                "cell " + std::to_string(c) + " (numbered from 0, VTK type " + std::to_string(type)
+                    + ") has " + std::to_string(count) + " point ids"
+                    + (expected > 0 ? ", its type needs " + std::to_string(expected) : ""));
+        auto id = [&](vtkIdType k) {
+            const vtkIdType v = ids->GetId(k);
+            if (v < 0 || v >= data->GetNumberOfPoints())
+                throw FileError(path, 0,
+                                "cell " + std::to_string(c) + " uses point " + std::to_string(v)
+                                    + " of " + std::to_string(data->GetNumberOfPoints()));
+            return static_cast<int>(v);
+        };
         switch (type) {
         case VTK_TETRA:
         case VTK_PYRAMID:
         case VTK_WEDGE: {
             Cell cell;
-            cell.type = type == VTK_TETRA ? CellType::Tet : type == VTK_PYRAMID ? CellType::Pyramid : CellType::Prism;
+            cell.type = type == VTK_TETRA     ? CellType::Tet
+                        : type == VTK_PYRAMID ? CellType::Pyramid
+                                              : CellType::Prism;
             for (int k = 0; k < cell.size(); ++k)
                 cell.nodes[k] = id(cell.type == CellType::Prism ? vtkWedgeMap[k] : k);
             mesh.cells.push_back(cell);
-            mesh.cellRegion.push_back(groupValue(regionIds, c, 0));
-            maxRegion = std::max(maxRegion, mesh.cellRegion.back());
+            cellRegion.push_back(groupValue(path, regionIds, vtkarrays::regionId, c));
+            regionIndex.add(cellRegion.back());
             if (quality)
                 mesh.cellQuality.push_back(quality->GetComponent(c, 0));
             break;
         }
         case VTK_TRIANGLE:
             mesh.triangles.push_back({id(0), id(1), id(2)});
-            mesh.triangleSurface.push_back(groupValue(surfaceIds, c, 0));
-            maxSurface = std::max(maxSurface, mesh.triangleSurface.back());
+            triangleSurface.push_back(groupValue(path, surfaceIds, vtkarrays::surfaceId, c));
+            surfaceIndex.add(triangleSurface.back());
             break;
         case VTK_LINE:
         case VTK_POLY_LINE:
-            for (vtkIdType k = 0; k + 1 < ids->GetNumberOfIds(); ++k) {
-                mesh.edges.push_back({id(static_cast<int>(k)), id(static_cast<int>(k + 1))});
-                mesh.edgeLine.push_back(groupValue(lineIds, c, 0));
-                maxLine = std::max(maxLine, mesh.edgeLine.back());
+            for (vtkIdType k = 0; k + 1 < count; ++k) {
+                mesh.edges.push_back({id(k), id(k + 1)});
+                edgeLine.push_back(groupValue(path, lineIds, vtkarrays::lineId, c));
+                lineIndex.add(edgeLine.back());
             }
             break;
         case VTK_VERTEX:
         case VTK_POLY_VERTEX:
-            for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-                mesh.corners.push_back(id(static_cast<int>(k)));
+            for (vtkIdType k = 0; k < count; ++k)
+                mesh.corners.push_back(id(k));
             break;
         default:
-            throw FileError(path, 0, "cell " + std::to_string(c) + " has VTK type " + std::to_string(type) +
-                                         ", which StrataMesh does not exchange (tets, pyramids, wedges, "
-                                         "triangles, lines and vertices only)");
+            throw FileError(path, 0,
+                            "cell " + std::to_string(c) + " has VTK type " + std::to_string(type)
+                                + ", which StrataMesh does not exchange (tets, pyramids, wedges, "
+                                  "triangles, lines and vertices only)");
         }
     }
+    if (mesh.cells.empty() && mesh.triangles.empty())
+        throw FileError(path, 0, "no triangle and no volume cell in the file (empty model)");
     if (quality)
         mesh.qualityName = qualityName.front();
     const std::string fallback = stem(path);
     std::vector<std::string> regions = stringsOf(fd, vtkarrays::regionNames);
     if (!regionIds && regions.empty() && !mesh.cells.empty())
         regions = {fallback};
-    mesh.regionNames = groupNames(regions, maxRegion, "region");
+    regionIndex.number(regions.size());
+    mesh.regionNames = regionIndex.names(regions, "region");
     std::vector<std::string> surfaceNames = stringsOf(fd, vtkarrays::surfaceNames);
     if (!surfaceIds && surfaceNames.empty() && !mesh.triangles.empty())
         surfaceNames = {fallback};
-    surfaceNames = groupNames(surfaceNames, maxSurface, "surface");
+    surfaceIndex.number(surfaceNames.size());
+    surfaceNames = surfaceIndex.names(surfaceNames, "surface");
     const std::vector<std::string> features = stringsOf(fd, vtkarrays::surfaceFeatures);
     const std::vector<std::string> types = stringsOf(fd, vtkarrays::surfaceTypes);
     for (std::size_t s = 0; s < surfaceNames.size(); ++s)
-        mesh.surfaces.push_back({surfaceNames[s], s < features.size() ? features[s] : surfaceNames[s],
-                                 s < types.size() ? featureTypeFromName(types[s]) : FeatureType::Unknown});
+        mesh.surfaces.push_back(
+            {surfaceNames[s], s < features.size() ? features[s] : surfaceNames[s],
+             s < types.size() ? featureTypeFromName(types[s]) : FeatureType::Unknown});
     std::vector<std::string> lines = stringsOf(fd, vtkarrays::lineNames);
     if (!lineIds && lines.empty() && !mesh.edges.empty())
         lines = {fallback};
-    mesh.lineNames = groupNames(lines, maxLine, "line");
+    lineIndex.number(lines.size());
+    mesh.lineNames = lineIndex.names(lines, "line");
+    for (long long v : cellRegion)
+        mesh.cellRegion.push_back(regionIndex.indexOf(v));
+    for (long long v : triangleSurface)
+        mesh.triangleSurface.push_back(surfaceIndex.indexOf(v));
+    for (long long v : edgeLine)
+        mesh.edgeLine.push_back(lineIndex.indexOf(v));
     if (vtkDataArray *sides = fd ? fd->GetArray(vtkarrays::regionSides) : nullptr) {
         vtkIdType i = 0;
         const vtkIdType n = sides->GetNumberOfTuples();
         for (std::size_t r = 0; r < mesh.regionNames.size() && i < n; ++r) {
-            const int count = static_cast<int>(sides->GetComponent(i++, 0));
+            const double count = sides->GetComponent(i++, 0);
             std::vector<RegionSide> list;
             for (int k = 0; k < count && i < n; ++k) {
-                const int v = static_cast<int>(sides->GetComponent(i++, 0));
-                list.push_back({std::abs(v) - 1, v > 0});
+                const double v = sides->GetComponent(i++, 0);
+                const int s = std::abs(v) <= std::numeric_limits<int>::max()
+                                  ? surfaceIndex.indexOf(static_cast<long long>(std::abs(v)) - 1)
+                                  : -1;
+                if (s < 0 || v != std::floor(v))
+                    throw FileError(path, 0,
+                                    "the RegionSides field data names surface " + doubleText(v)
+                                        + ", which the file does not have");
+                list.push_back({s, v > 0});
             }
             mesh.regionBoundaries.push_back(std::move(list));
         }

@@ -1,0 +1,146 @@
+#include "io/vtk_legacy_counts.h"
+
+#include "common/error.h"
+#include "io/number_text.h"
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <vector>
+
+namespace stratamesh {
+
+namespace {
+
+std::vector<std::string> words(const std::string &line)
+{
+    std::istringstream in(line);
+    std::vector<std::string> out;
+    for (std::string w; in >> w;)
+        out.push_back(w);
+    return out;
+}
+
+bool isVtkTypeName(const std::string &w)
+{
+    static const std::set<std::string> names{
+        "bit",           "unsigned_char", "char",   "unsigned_short", "short",  "unsigned_int",
+        "int",           "unsigned_long", "long",   "float",          "double", "vtktypeint64",
+        "vtktypeuint64", "vtkIdType",     "string", "utf8_string"};
+    return names.count(w) > 0;
+}
+
+class Scanner {
+public:
+    Scanner(const std::string &path, long long size) : m_path(path), m_size(size) {}
+
+    // One value per item at least (a byte in binary, a digit and a separator in ASCII): a
+    // count beyond the file's size cannot be real.
+    long long count(const std::vector<std::string> &w, std::size_t i, long long valuesPerItem,
+                    int line) const
+    {
+        long long n = 0;
+        if (i >= w.size() || !parseInt(w[i], n))
+            throw FileError(m_path, line, w[0] + " needs a count");
+        if (n < 0)
+            throw FileError(m_path, line, w[0] + " declares a negative count " + std::to_string(n));
+        if (n > m_size / valuesPerItem)
+            throw FileError(m_path, line,
+                            w[0] + " declares " + std::to_string(n)
+                                + " items, more than the file of " + std::to_string(m_size)
+                                + " bytes can hold");
+        return n;
+    }
+
+private:
+    std::string m_path;
+    long long m_size;
+};
+
+} // namespace
+
+VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
+{
+    std::error_code ec;
+    const auto size = static_cast<long long>(std::filesystem::file_size(path, ec));
+    if (ec)
+        throw FileError(path, 0, "cannot read the file size: " + ec.message());
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw FileError(path, 0, "cannot open the file");
+    const Scanner scan(path, size);
+    VtkLegacyCounts counts;
+    bool version5 = false;
+    std::string text;
+    for (int line = 1; std::getline(in, text); ++line) {
+        if (line == 1) {
+            version5 = text.find("Version 5") != std::string::npos;
+            continue;
+        }
+        const std::vector<std::string> w = words(text);
+        if (w.empty())
+            continue;
+        const std::string &key = w[0];
+        if (key == "DATASET") {
+            if (w.size() < 2 || (w[1] != "UNSTRUCTURED_GRID" && w[1] != "POLYDATA"))
+                throw FileError(
+                    path, line,
+                    "DATASET " + (w.size() < 2 ? std::string() : w[1])
+                        + " is not read by StrataMesh (UNSTRUCTURED_GRID or POLYDATA only)");
+        } else if (key == "POINTS") {
+            counts.points = {scan.count(w, 1, 3, line), line};
+        } else if (key == "CELLS" || key == "POLYGONS" || key == "LINES" || key == "VERTICES"
+                   || key == "TRIANGLE_STRIPS") {
+            // Version 5 declares offsets (cells + 1) and connectivity; 4.2 cells and their ids.
+            long long n = scan.count(w, 1, 1, line);
+            scan.count(w, 2, 1, line);
+            if (version5)
+                n = n > 0 ? n - 1 : 0;
+            counts.cells = {counts.cells.value < 0 ? n : counts.cells.value + n,
+                            counts.cells.line ? counts.cells.line : line};
+        } else if (key == "CELL_TYPES") {
+            counts.cellTypes = {scan.count(w, 1, 1, line), line};
+        } else if (key == "CELL_DATA") {
+            counts.cellData = {scan.count(w, 1, 1, line), line};
+        } else if (key == "POINT_DATA") {
+            counts.pointData = {scan.count(w, 1, 1, line), line};
+        } else if (key == "LOOKUP_TABLE" && w.size() >= 3) {
+            scan.count(w, 2, 4, line);
+        } else if (key == "DIMENSIONS" || key == "X_COORDINATES" || key == "Y_COORDINATES"
+                   || key == "Z_COORDINATES") {
+            scan.count(w, 1, 1, line);
+        } else if (w.size() == 4 && isVtkTypeName(w[3])) {
+            // A FIELD array "name components tuples type": components x tuples values.
+            long long components = 0, tuples = 0;
+            if (parseInt(w[1], components) && parseInt(w[2], tuples)) {
+                if (components < 0 || tuples < 0 || (components > 0 && tuples > size / components))
+                    throw FileError(path, line,
+                                    "array " + w[0] + " declares " + w[1] + " x " + w[2]
+                                        + " values, more than the file of " + std::to_string(size)
+                                        + " bytes can hold");
+            }
+        }
+    }
+    return counts;
+}
+
+void checkVtkLegacyCounts(const std::string &path, const VtkLegacyCounts &declared,
+                          long long points, long long cells)
+{
+    auto check = [&](const VtkLegacyCount &c, long long read, const char *keyword,
+                     const char *what) {
+        if (c.value >= 0 && c.value != read)
+            throw FileError(path, c.line,
+                            std::string(keyword) + " declares " + std::to_string(c.value) + " "
+                                + what + ", " + std::to_string(read)
+                                + " were read (short or misplaced section)");
+    };
+    check(declared.points, points, "POINTS", "points");
+    check(declared.cells, cells, "the cell section", "cells");
+    check(declared.cellTypes, cells, "CELL_TYPES", "cell types for the cells");
+    check(declared.cellData, cells, "CELL_DATA", "values for the cells");
+    check(declared.pointData, points, "POINT_DATA", "values for the points");
+}
+
+} // namespace stratamesh

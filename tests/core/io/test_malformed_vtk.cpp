@@ -1,0 +1,182 @@
+// Hostile legacy VTK files (issue 18): a huge group id costs one group, a cell short of point ids
+// and any complaint of VTK's own reader are FileErrors, not a silently different mesh.
+#include "bounded_read.h"
+#include "common/error.h"
+#include "io/model_reader.h"
+#include "io/vtk_reader.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace stratamesh;
+using namespace stratamesh::testing;
+
+namespace {
+
+QByteArray triangleWithSurfaceId(const QByteArray &id)
+{
+    return "# vtk DataFile Version 4.2\nhostile\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+           "POINTS 3 double\n0 0 0\n1 0 0\n0 1 0\n"
+           "CELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n5\n"
+           "CELL_DATA 1\nSCALARS SurfaceId int 1\nLOOKUP_TABLE default\n"
+           + id + "\n";
+}
+
+} // namespace
+
+class TestMalformedVtk : public QObject {
+    Q_OBJECT
+
+private slots:
+    // Before: one name per id up to the largest, 23 s and 4.8 GB, then "out of memory".
+    void hugeSurfaceIdIsOneSurface()
+    {
+        QTemporaryDir dir;
+        const std::string path =
+            writeTestFile(dir.path(), "huge_id.vtk", triangleWithSurfaceId("2147483647"));
+        VolumeMesh mesh;
+        const BoundedRead r = runBounded([&] {
+            mesh = readVtk(path);
+            if (mesh.surfaces.size() != 1 || mesh.surfaces[0].name != "surface_2147483648"
+                || mesh.triangleSurface != std::vector<int>{0})
+                throw std::runtime_error("wrong groups: " + std::to_string(mesh.surfaces.size())
+                                         + " surfaces");
+        });
+        qInfo("huge SurfaceId: %s in %.3f s, +%ld KiB %s", outcomeName(r.outcome), r.seconds,
+              r.peakKiB, r.message.c_str());
+        QCOMPARE(outcomeName(r.outcome), outcomeName(BoundedRead::Read));
+        QVERIFY2(r.peakKiB < 200 * 1024, r.message.c_str());
+        QVERIFY(r.seconds < 2);
+    }
+
+    void sparseSurfaceIdsKeepTheirOrder()
+    {
+        QTemporaryDir dir;
+        const QByteArray text =
+            "# vtk DataFile Version 4.2\nsparse\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+            "POINTS 4 double\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n"
+            "CELLS 3 12\n3 0 1 2\n3 1 3 2\n3 0 1 3\nCELL_TYPES 3\n5\n5\n5\n"
+            "CELL_DATA 3\nSCALARS SurfaceId int 1\nLOOKUP_TABLE default\n"
+            "900000 1 900000\n";
+        const VolumeMesh mesh = readVtk(writeTestFile(dir.path(), "sparse.vtk", text));
+        // Sparse ids are numbered in increasing order; names keep the file's ids.
+        QCOMPARE(int(mesh.surfaces.size()), 2);
+        QCOMPARE(mesh.surfaces[0].name, std::string("surface_2"));
+        QCOMPARE(mesh.surfaces[1].name, std::string("surface_900001"));
+        QCOMPARE(mesh.triangleSurface, (std::vector<int>{1, 0, 1}));
+    }
+
+    void badSurfaceIdsAreFileErrors_data()
+    {
+        QTest::addColumn<QByteArray>("id");
+        QTest::addColumn<QString>("cause");
+        QTest::newRow("negative") << QByteArray("-1") << "SurfaceId -1";
+        QTest::newRow("fraction") << QByteArray("2.5") << "SurfaceId 2.5";
+        QTest::newRow("beyond int") << QByteArray("1e300") << "SurfaceId 1e+300";
+    }
+    void badSurfaceIdsAreFileErrors()
+    {
+        QFETCH(QByteArray, id);
+        QFETCH(QString, cause);
+        QTemporaryDir dir;
+        // A double array, so that the values are kept as written.
+        QByteArray text = triangleWithSurfaceId(id);
+        text.replace("SurfaceId int", "SurfaceId double");
+        const std::string path = writeTestFile(dir.path(), "bad_id.vtk", text);
+        try {
+            readVtk(path);
+            QFAIL("read a file with a bad SurfaceId");
+        } catch (const FileError &e) {
+            QVERIFY2(QString(e.what()).contains(cause), e.what());
+            QCOMPARE(e.file(), path);
+        }
+    }
+
+    // Before: the second cell took its missing third id from the first cell, exit 0.
+    void cellShortOfPointIdsIsFileError()
+    {
+        QTemporaryDir dir;
+        const QByteArray text =
+            "# vtk DataFile Version 4.2\nshort\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+            "POINTS 4 double\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n"
+            "CELLS 2 7\n3 0 1 2\n2 1 3\nCELL_TYPES 2\n5\n5\n";
+        const std::string path = writeTestFile(dir.path(), "short_cell.vtk", text);
+        try {
+            readModel(path);
+            QFAIL("read a triangle with two point ids");
+        } catch (const FileError &e) {
+            QVERIFY2(QString(e.what()).contains(
+                         "cell 1 (numbered from 0, VTK type 5) has 2 point ids, its "
+                         "type needs 3"),
+                     e.what());
+        }
+    }
+
+    // Before: a cut CELLS section read as a mesh without cells, exit 0.
+    void cutCellSectionIsFileError()
+    {
+        QTemporaryDir dir;
+        const QByteArray text =
+            "# vtk DataFile Version 4.2\ncut\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+            "POINTS 3 double\n0 0 0\n1 0 0\n0 1 0\nCELLS 1 4\n3 0 1\n";
+        const std::string path = writeTestFile(dir.path(), "cut.vtk", text);
+        try {
+            readModel(path);
+            QFAIL("read a file cut inside CELLS");
+        } catch (const FileError &e) {
+            QCOMPARE(e.line(), 9);
+            QVERIFY2(QString(e.what()).contains("declares 1 cells, 0 were read"), e.what());
+        }
+    }
+
+    // VTK's reader prints its complaint about cut POINTS and goes on; it is our FileError now.
+    void vtkReaderComplaintIsFileError()
+    {
+        QTemporaryDir dir;
+        const QByteArray text =
+            "# vtk DataFile Version 4.2\ncut\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+            "POINTS 3 double\n0 0 0\n1 0 0\n0 1\n";
+        const std::string path = writeTestFile(dir.path(), "cut_points.vtk", text);
+        try {
+            readModel(path);
+            QFAIL("read a file cut inside POINTS");
+        } catch (const FileError &e) {
+            QVERIFY2(QString(e.what()).contains("VTK cannot read it: "), e.what());
+            QVERIFY2(!QString(e.what()).contains("ERROR: In"), e.what());
+        }
+    }
+
+    void hugeDeclaredCountsAreRefusedBeforeReading_data()
+    {
+        QTest::addColumn<QByteArray>("text");
+        QTest::addColumn<int>("line");
+        const QByteArray head =
+            "# vtk DataFile Version 4.2\nhuge\nASCII\nDATASET UNSTRUCTURED_GRID\n";
+        QTest::newRow("points") << head + "POINTS 2000000000 double\n0 0 0\n" << 5;
+        QTest::newRow("cells") << head + "POINTS 1 double\n0 0 0\nCELLS 3000000000 4\n" << 7;
+        QTest::newRow("field array") << head + "FIELD FieldData 1\nSurfaceNames 1 2000000000 char\n"
+                                     << 6;
+        QTest::newRow("negative") << head + "POINTS -3 double\n" << 5;
+        QTest::newRow("structured")
+            << QByteArray("# vtk DataFile Version 4.2\nx\nASCII\nDATASET "
+                          "STRUCTURED_POINTS\nDIMENSIONS 100000 100000 100000\n")
+            << 4;
+    }
+    void hugeDeclaredCountsAreRefusedBeforeReading()
+    {
+        QFETCH(QByteArray, text);
+        QFETCH(int, line);
+        QTemporaryDir dir;
+        const std::string path = writeTestFile(dir.path(), "huge.vtk", text);
+        const BoundedRead r = runBounded([&] { readModel(path); });
+        QVERIFY2(r.outcome == BoundedRead::FileErrorRaised,
+                 (outcomeName(r.outcome) + (": " + r.message)).c_str());
+        QVERIFY2(QString::fromStdString(r.message).startsWith(QString::fromStdString(path) + ":"
+                                                              + QString::number(line) + ": "),
+                 r.message.c_str());
+        QVERIFY(r.peakKiB < 200 * 1024);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMalformedVtk)
+#include "test_malformed_vtk.moc"
