@@ -76,7 +76,7 @@ QVariant LedgerTableModel::headerData(int section, Qt::Orientation orientation, 
 std::vector<LedgerKind> LedgerTableModel::allKinds()
 {
     std::vector<LedgerKind> kinds;
-    for (int k = 0; k <= int(LedgerKind::IntersectionUnresolved); ++k)
+    for (int k = 0; k <= int(kLastLedgerKind); ++k)
         kinds.push_back(LedgerKind(k));
     return kinds;
 }
@@ -97,6 +97,8 @@ QString LedgerTableModel::kindText(LedgerKind kind)
     case LedgerKind::LineCreated: return tr("Line created");
     case LedgerKind::CornerCreated: return tr("Corner created");
     case LedgerKind::IntersectionUnresolved: return tr("Unresolved intersection");
+    case LedgerKind::SurfacePartLost: return tr("Surface part lost");
+    case LedgerKind::SurfacePartCreated: return tr("Surface part created");
     }
     return QString::fromStdString(ledgerKindName(kind));
 }

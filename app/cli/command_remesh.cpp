@@ -14,6 +14,7 @@
 #include "model/topology.h"
 #include "model/validity.h"
 #include "quality/model_comparison.h"
+#include "remesh/ledger_reconciliation.h"
 #include "remesh/surface_remesher.h"
 
 #include <QElapsedTimer>
@@ -94,8 +95,24 @@ QJsonArray ledgerJson(const SimplificationLedger &ledger)
                         {QStringLiteral("position"), vec3(r.position)},
                         {QStringLiteral("size"), r.size},
                         {QStringLiteral("size_meaning"), QString::fromStdString(r.sizeMeaning)},
-                        {QStringLiteral("note"), QString::fromStdString(r.note)}});
+                        {QStringLiteral("note"), QString::fromStdString(r.note)},
+                        {QStringLiteral("cause"), r.cause}});
     return a;
+}
+
+QJsonObject balanceJson(const LedgerBalance &b)
+{
+    auto one = [](const EntityBalance &e) {
+        return QJsonObject{{QStringLiteral("input"), e.input},
+                           {QStringLiteral("lost"), e.lost},
+                           {QStringLiteral("created"), e.created},
+                           {QStringLiteral("output"), e.output},
+                           {QStringLiteral("balanced"), e.balanced()}};
+    };
+    return QJsonObject{{QStringLiteral("surfaces"), one(b.surfaces)},
+                       {QStringLiteral("lines"), one(b.lines)},
+                       {QStringLiteral("corners"), one(b.corners)},
+                       {QStringLiteral("balanced"), b.balanced()}};
 }
 
 void writeModelFile(const Model &model, const QString &path)
@@ -196,7 +213,11 @@ int runRemesh(CommandArgs &args)
                      {QStringLiteral("lines_lost"), edits.linesLost},
                      {QStringLiteral("lines_created"), edits.linesCreated},
                      {QStringLiteral("corners_lost"), edits.cornersLost},
-                     {QStringLiteral("corners_created"), edits.cornersCreated}}},
+                     {QStringLiteral("corners_created"), edits.cornersCreated},
+                     {QStringLiteral("surface_parts_lost"), edits.surfacePartsLost},
+                     {QStringLiteral("surface_parts_created"), edits.surfacePartsCreated}}},
+        {QStringLiteral("ledger_balance"),
+         balanceJson(ledgerBalance(input, result.model, result.ledger))},
         {QStringLiteral("refinement"),
          QJsonObject{{QStringLiteral("initial_sites"), result.initialSiteCount},
                      {QStringLiteral("final_sites"), result.siteCount},

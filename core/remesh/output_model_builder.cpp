@@ -1,5 +1,6 @@
 #include "remesh/output_model_builder.h"
 
+#include "complexity/element_sizes.h"
 #include "model/topology.h"
 
 #include <Eigen/Geometry>
@@ -156,16 +157,18 @@ void recordEntityChanges(const Model &input, const Model &output, Simplification
             centre += v;
         if (!in.vertices.empty())
             centre /= static_cast<double>(in.vertices.size());
-        for (int k = outCount; k < inCount; ++k)
+        if (outCount == 0)
             ledger.push_back(entityRecord(LedgerKind::SurfaceLost, surfaceRef(input, static_cast<int>(s)), true,
-                                          centre, 0.0, "area",
-                                          outCount == 0 ? "surface entirely below the resolution"
-                                                        : "a connected part of the surface disappeared"));
+                                          centre, surfaceArea(in), "area", "surface entirely below the resolution"));
+        else
+            for (int k = outCount; k < inCount; ++k)
+                ledger.push_back(entityRecord(LedgerKind::SurfacePartLost, surfaceRef(input, static_cast<int>(s)),
+                                              true, centre, 0.0, "area", "a connected part of the surface disappeared"));
         if (outCount > inCount) {
             // The largest parts continue the input's; each smaller one is a new piece to review.
             const std::vector<SurfacePart> parts = surfaceParts(output.surfaces[it->second]);
             for (int k = inCount; k < outCount; ++k)
-                ledger.push_back(entityRecord(LedgerKind::SurfaceCreated, surfaceRef(output, it->second), false,
+                ledger.push_back(entityRecord(LedgerKind::SurfacePartCreated, surfaceRef(output, it->second), false,
                                               parts[k].centroid, parts[k].area, "area",
                                               "the surface was split into more parts: this one is separate"));
         }

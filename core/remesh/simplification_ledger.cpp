@@ -20,6 +20,8 @@ std::string ledgerKindName(LedgerKind kind)
     case LedgerKind::LineCreated: return "line_created";
     case LedgerKind::CornerCreated: return "corner_created";
     case LedgerKind::IntersectionUnresolved: return "intersection_unresolved";
+    case LedgerKind::SurfacePartLost: return "surface_part_lost";
+    case LedgerKind::SurfacePartCreated: return "surface_part_created";
     }
     return "unknown";
 }

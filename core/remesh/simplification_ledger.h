@@ -24,7 +24,13 @@ enum class LedgerKind {
     LineCreated,
     CornerCreated,
     IntersectionUnresolved,    // intersecting output triangles left after repair (§4.4.5)
+    // Surface parts: SurfaceLost/SurfaceCreated count whole surfaces (so that input − lost +
+    // created = output for the `info` counts); a surface keeping its name but losing or gaining
+    // a connected part is one of these.
+    SurfacePartLost,
+    SurfacePartCreated,
 };
+inline constexpr LedgerKind kLastLedgerKind = LedgerKind::SurfacePartCreated;
 
 // snake_case name used in JSON reports ("corner_merge", ...).
 std::string ledgerKindName(LedgerKind kind);
@@ -47,6 +53,9 @@ struct LedgerRecord {
     double size = 0.0;              // distance moved, area or length (see sizeMeaning)
     std::string sizeMeaning;        // "distance", "area", "length"
     std::string note;               // one line for the reviewer
+    // For a lost or created entity: the index in the ledger of the simplification that caused it
+    // (the nearest one within reach), or -1 when none did (an artefact of the resolution).
+    int cause = -1;
 };
 
 using SimplificationLedger = std::vector<LedgerRecord>;

@@ -10,6 +10,7 @@
 #include "remesh/duplicate_separation.h"
 #include "remesh/editable_soup.h"
 #include "remesh/input_projector.h"
+#include "remesh/ledger_reconciliation.h"
 #include "remesh/line_fins.h"
 #include "remesh/mesh_smoothing.h"
 #include "remesh/output_model_builder.h"
@@ -162,7 +163,12 @@ RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &s
     const StripCollapse collapsed =
         stripsRemoved(input, edgeLengthForSites(modelArea(input), static_cast<int>(sites.size())),
                       params, ledger, progress);
-    return meshFromSites(collapsed, sites, params, std::move(ledger), progress);
+    const std::size_t stripRecords = ledger.size();
+    RemeshResult result = meshFromSites(collapsed, sites, params, std::move(ledger), progress);
+    reconcileLedger(input, result.model, result.ledger,
+                    2.0 * edgeLengthForSites(modelArea(input), result.siteCount), stripRecords);
+    result.validity = checkValidity(result.model);
+    return result;
 }
 
 RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Progress &progress)
@@ -264,6 +270,8 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         refinementTargets(simplified, result.model, result.ledger, stripRecords, result.validity,
                           params.dResolution, 0.5 * edgeLengthForSites(area, result.siteCount))
             .size());
+    reconcileLedger(input, result.model, result.ledger, 2.0 * edgeLengthForSites(area, result.siteCount),
+                    stripRecords);
     result.energy = optimised.energy;
     result.initialSiteCount = n;
     result.refinementRounds = rounds;
@@ -291,6 +299,12 @@ TopologyEdits countTopologyEdits(const SimplificationLedger &ledger)
             break;
         case LedgerKind::CornerLost:
             ++e.cornersLost;
+            break;
+        case LedgerKind::SurfacePartLost:
+            ++e.surfacePartsLost;
+            break;
+        case LedgerKind::SurfacePartCreated:
+            ++e.surfacePartsCreated;
             break;
         case LedgerKind::CornerCreated:
             ++e.cornersCreated;

@@ -80,14 +80,16 @@ struct RemeshResult {
     int remainingTargets = 0;     // places still wrong after the last round (0 when converged)
 };
 
-// Topology edits of a result per kind (surface/line/corner lost/created records).
+// Topology edits of a result per kind (surface, surface part, line and corner lost/created records).
 struct TopologyEdits {
     int surfacesLost = 0, surfacesCreated = 0;
     int linesLost = 0, linesCreated = 0;
     int cornersLost = 0, cornersCreated = 0;
+    int surfacePartsLost = 0, surfacePartsCreated = 0;
     int total() const
     {
-        return surfacesLost + surfacesCreated + linesLost + linesCreated + cornersLost + cornersCreated;
+        return surfacesLost + surfacesCreated + linesLost + linesCreated + cornersLost + cornersCreated
+               + surfacePartsLost + surfacePartsCreated;
     }
 };
 TopologyEdits countTopologyEdits(const SimplificationLedger &ledger);

@@ -56,6 +56,8 @@ bool isTopologyEdit(LedgerKind kind)
     case LedgerKind::SurfaceCreated:
     case LedgerKind::LineCreated:
     case LedgerKind::CornerCreated:
+    case LedgerKind::SurfacePartLost:
+    case LedgerKind::SurfacePartCreated:
         return true;
     default:
         return false;

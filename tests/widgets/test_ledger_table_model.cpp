@@ -96,7 +96,7 @@ private slots:
         QSet<QString> texts;
         for (LedgerKind kind : LedgerTableModel::allKinds())
             texts.insert(LedgerTableModel::kindText(kind));
-        QCOMPARE(int(LedgerTableModel::allKinds().size()), int(LedgerKind::IntersectionUnresolved) + 1);
+        QCOMPARE(int(LedgerTableModel::allKinds().size()), int(kLastLedgerKind) + 1);
         QCOMPARE(texts.size(), int(LedgerTableModel::allKinds().size()));
     }
 

@@ -8,6 +8,7 @@
 #include "io/model_reader.h"
 #include "model/topology.h"
 #include "model/validity.h"
+#include "remesh/ledger_reconciliation.h"
 #include "remesh/topology_refinement.h"
 #include "support/test_data.h"
 #include "volume/plc.h"
