@@ -12,25 +12,24 @@ namespace stratamesh {
 
 constexpr double maxCoordinate = 1e15;
 
-// Empty when `value` is finite and within maxCoordinate, else the reason, for a FileError.
+// Empty when `value` is finite and within maxCoordinate, else what is wrong with it, to follow
+// the coordinate as the file writes it ("x coordinate '1e200' is beyond ...").
 inline std::string coordinateProblem(double value)
 {
     if (!std::isfinite(value))
-        return "coordinate " + doubleText(value) + " is not finite";
+        return "is not finite (non-finite vertex)";
     if (std::abs(value) > maxCoordinate)
-        return "coordinate " + doubleText(value)
-               + " is beyond the bound of 1e15 that keeps squared distances "
-                 "and volumes finite";
+        return "is beyond the bound of 1e15 that keeps squared distances and volumes finite";
     return {};
 }
 
-// The first problem among three coordinates, or empty.
+// The first problem among three coordinates ("coordinate 1e+200 is beyond ..."), or empty.
 template <class Point>
 std::string pointProblem(const Point &p)
 {
     for (int k = 0; k < 3; ++k)
         if (std::string problem = coordinateProblem(p[k]); !problem.empty())
-            return problem;
+            return "coordinate " + doubleText(p[k]) + " " + problem;
     return {};
 }
 

@@ -1,6 +1,7 @@
 #include "io/geogram_mesh.h"
 
 #include "common/error.h"
+#include "io/coordinate_bound.h"
 
 #include <algorithm>
 #include <map>
@@ -105,8 +106,11 @@ std::vector<Vec3> geogramPoints(const GeogramFile &file, const std::string &wher
     const GeogramAttribute &a = required(file, kVertices, "point", 3, where);
     const std::vector<double> xyz = geogramDoubles(a, where);
     std::vector<Vec3> points(xyz.size() / 3);
-    for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t i = 0; i < points.size(); ++i) {
         points[i] = Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+        if (const std::string problem = pointProblem(points[i]); !problem.empty())
+            fail(where, "point " + std::to_string(i) + " (numbered from 0): " + problem);
+    }
     return points;
 }
 

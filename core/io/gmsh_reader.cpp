@@ -1,5 +1,6 @@
 #include "io/gmsh_reader.h"
 
+#include "io/coordinate_bound.h"
 #include "io/gmsh_element_types.h"
 #include "io/text_cursor.h"
 
@@ -176,6 +177,8 @@ private:
         if (xyz.size() < 3)
             c.fail("expected \"x y z\"");
         const Vec3 p(c.toDouble(xyz[0], "x"), c.toDouble(xyz[1], "y"), c.toDouble(xyz[2], "z"));
+        if (const std::string problem = pointProblem(p); !problem.empty())
+            c.fail("node " + std::to_string(tag) + ": " + problem);
         if (!nodeIndex.emplace(tag, static_cast<int>(points.size())).second)
             c.fail("node " + std::to_string(tag) + " is defined twice");
         points.push_back(p);

@@ -1,6 +1,7 @@
 #include "io/gocad_line_tokenizer.h"
 
 #include "common/error.h"
+#include "io/coordinate_bound.h"
 
 #include <charconv>
 #include <cmath>
@@ -157,6 +158,14 @@ double GocadLineTokenizer::finiteNumber(std::size_t i, std::string_view what) co
     const double v = number(i, what);
     if (!std::isfinite(v))
         fail(std::string(what) + " " + quoted(m_tokens[i]) + " is not finite");
+    return v;
+}
+
+double GocadLineTokenizer::coordinate(std::size_t i, std::string_view what) const
+{
+    const double v = number(i, what);
+    if (const std::string problem = coordinateProblem(v); !problem.empty())
+        fail(std::string(what) + " " + quoted(m_tokens[i]) + " " + problem);
     return v;
 }
 

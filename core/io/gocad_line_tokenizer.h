@@ -37,6 +37,8 @@ public:
     // `what` says what the token is, for the message ("x coordinate", "vertex id").
     double number(std::size_t i, std::string_view what) const;
     double finiteNumber(std::size_t i, std::string_view what) const;
+    // A point coordinate: finite and within maxCoordinate (coordinate_bound.h).
+    double coordinate(std::size_t i, std::string_view what) const;
     long long integer(std::size_t i, std::string_view what) const;
     // Throws unless the line has at least n tokens.
     void requireTokens(std::size_t n, std::string_view usage) const;

@@ -44,8 +44,8 @@ void readKeyTriangle(GocadLineTokenizer &tok, GocadHeaderFace &face)
             tok.failAt(tok.lastLineNumber(), "file ends inside the key triangle of TFACE " +
                                                  std::to_string(face.id) + " (truncated file?)");
         tok.requireTokens(3, "x y z of a key triangle point of TFACE " + std::to_string(face.id));
-        face.key[k] = Vec3(tok.finiteNumber(0, "x coordinate"), tok.finiteNumber(1, "y coordinate"),
-                           tok.finiteNumber(2, "z coordinate"));
+        face.key[k] = Vec3(tok.coordinate(0, "x coordinate"), tok.coordinate(1, "y coordinate"),
+                           tok.coordinate(2, "z coordinate"));
     }
     face.hasKey = true;
 }

@@ -95,8 +95,8 @@ private:
     {
         m_tok.requireTokens(5, "VRTX id x y z");
         const long long id = m_tok.integer(1, "vertex id");
-        const Vec3 p(m_tok.finiteNumber(2, "x coordinate"), m_tok.finiteNumber(3, "y coordinate"),
-                     m_tok.finiteNumber(4, "z coordinate"));
+        const Vec3 p(m_tok.coordinate(2, "x coordinate"), m_tok.coordinate(3, "y coordinate"),
+                     m_tok.coordinate(4, "z coordinate"));
         defineVertex(id, p);
     }
 

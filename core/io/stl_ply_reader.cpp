@@ -1,6 +1,7 @@
 #include "io/stl_ply_reader.h"
 
 #include "common/error.h"
+#include "io/coordinate_bound.h"
 #include "io/number_text.h"
 #include "io/text_cursor.h"
 
@@ -50,6 +51,9 @@ VolumeMesh readWithOpenMesh(const std::string &path)
     for (const auto v : mesh.vertices()) {
         const auto p = mesh.point(v);
         m.points.push_back({p[0], p[1], p[2]});
+        if (const std::string problem = pointProblem(m.points.back()); !problem.empty())
+            throw FileError(path, 0,
+                            "vertex " + std::to_string(v.idx()) + " (numbered from 0): " + problem);
     }
     for (const auto f : mesh.faces()) {
         Triangle t;
@@ -141,6 +145,9 @@ VolumeMesh readAsciiPly(const std::string &path)
             if (e.name == "vertex") {
                 if (x < 0 || y < 0 || z < 0)
                     c.fail("vertices without x, y and z");
+                if (const std::string problem = pointProblem(point); !problem.empty())
+                    c.fail("vertex " + std::to_string(m.points.size())
+                           + " (numbered from 0, as faces index it): " + problem);
                 m.points.push_back(point);
             } else if (e.name == "face" && indices >= 0) {
                 if (face.size() < 3)

@@ -1,6 +1,7 @@
 #include "io/surface_mesh_reader.h"
 
 #include "common/error.h"
+#include "io/coordinate_bound.h"
 #include "io/gocad_model_builder.h"
 #include "io/number_text.h"
 
@@ -71,8 +72,8 @@ Vec3 readPoint(const std::vector<std::string_view> &w, std::size_t first, const 
         const std::string_view token = w[first + k];
         if (!parseDouble(token, p[k]))
             throw FileError(path, line, "coordinate '" + std::string(token) + "' is not a number");
-        if (!std::isfinite(p[k]))
-            throw FileError(path, line, "coordinate '" + std::string(token) + "' is not finite (non-finite vertex)");
+        if (const std::string problem = coordinateProblem(p[k]); !problem.empty())
+            throw FileError(path, line, "coordinate '" + std::string(token) + "' " + problem);
     }
     return p;
 }

@@ -1,5 +1,6 @@
 #include "io/tsolid_reader.h"
 
+#include "io/coordinate_bound.h"
 #include "io/number_text.h"
 #include "io/text_cursor.h"
 
@@ -191,8 +192,8 @@ private:
             c.fail(t[0] + " needs an id and three coordinates");
         const long long vid = id(t[1], "a vertex id");
         const Vec3 p(c.toDouble(t[2], "x"), c.toDouble(t[3], "y"), c.toDouble(t[4], "z"));
-        if (!p.allFinite())
-            c.fail("non-finite coordinate");
+        if (const std::string problem = pointProblem(p); !problem.empty())
+            c.fail(t[0] + " " + t[1] + ": " + problem);
         if (!vertices.emplace(vid, Vertex{static_cast<int>(mesh.points.size()), volume}).second)
             c.fail("vertex id " + std::to_string(vid) + " is used twice");
         mesh.points.push_back(p);
