@@ -118,7 +118,7 @@ private:
     void readPhysicalNames()
     {
         c.nextNonBlank("the number of physical names");
-        const int n = c.toInt(c.tokens().at(0), "the number of physical names");
+        const int n = c.toCount(c.tokens().at(0), "the number of physical names", 6);
         for (int i = 0; i < n; ++i) {
             c.nextNonBlank("a physical name");
             const auto t = c.tokens();
@@ -144,7 +144,7 @@ private:
         if (counts.size() < 4)
             c.fail("expected \"numPoints numCurves numSurfaces numVolumes\"");
         for (int dim = 0; dim < 4; ++dim) {
-            const int n = c.toInt(counts[dim], "an entity count");
+            const int n = c.toCount(counts[dim], "an entity count", 2);
             for (int i = 0; i < n; ++i) {
                 c.nextNonBlank("an entity");
                 const auto t = c.tokens();
@@ -159,10 +159,14 @@ private:
                     c.toDouble(take("a coordinate"), "a coordinate");
                 EntityInfo &e = entities[{dim, tag}];
                 const int nPhys = c.toInt(take("the number of physical tags"), "a physical tag count");
+                if (nPhys < 0)
+                    c.fail("negative number of physical tags");
                 for (int j = 0; j < nPhys; ++j)
                     e.physicals.push_back(std::abs(c.toInt(take("a physical tag"), "a physical tag")));
                 if (dim > 0) {
                     const int nBnd = c.toInt(take("the number of bounding entities"), "a count");
+                    if (nBnd < 0)
+                        c.fail("negative number of bounding entities");
                     for (int j = 0; j < nBnd; ++j)
                         e.bounding.push_back(c.toInt(take("a bounding entity"), "an entity tag"));
                 }
@@ -187,7 +191,8 @@ private:
     void readNodes22()
     {
         c.nextNonBlank("the number of nodes");
-        const int n = c.toInt(c.tokens().at(0), "the number of nodes");
+        // "tag x y z" and its end of line take at least 8 bytes.
+        const int n = c.toCount(c.tokens().at(0), "the number of nodes", 8);
         for (int i = 0; i < n; ++i) {
             c.nextNonBlank("a node");
             auto t = c.tokens();
@@ -204,15 +209,20 @@ private:
         const auto h = c.tokens();
         if (h.size() < 4)
             c.fail("expected \"numEntityBlocks numNodes minNodeTag maxNodeTag\"");
-        const int blocks = c.toInt(h[0], "a block count");
+        const int blocks = c.toCount(h[0], "the number of node blocks", 8);
+        const long long declared = c.toCount(h[1], "the number of nodes", 8);
+        const int headerLine = c.lineNumber();
+        long long total = 0;
         for (int b = 0; b < blocks; ++b) {
             c.nextNonBlank("a node block");
             const auto bh = c.tokens();
             if (bh.size() < 4)
                 c.fail("expected \"entityDim entityTag parametric numNodesInBlock\"");
-            const int n = c.toInt(bh[3], "a node count");
+            // A tag line and a coordinate line take at least 2 + 6 bytes.
+            const int n = c.toCount(bh[3], "the number of nodes in the block", 8);
+            total += n;
             std::vector<std::string> tags;
-            tags.reserve(static_cast<std::size_t>(std::max(n, 0)));
+            tags.reserve(static_cast<std::size_t>(n));
             for (int i = 0; i < n; ++i) {
                 c.nextNonBlank("a node tag");
                 tags.emplace_back(c.tokens().at(0));
@@ -222,6 +232,10 @@ private:
                 addNode(tags[i], c.tokens());
             }
         }
+        if (total != declared)
+            throw FileError(c.path(), headerLine,
+                            "the $Nodes header declares " + std::to_string(declared)
+                                + " nodes, its blocks hold " + std::to_string(total));
         expectEnd("$EndNodes");
     }
 
@@ -249,7 +263,7 @@ private:
     void readElements22()
     {
         c.nextNonBlank("the number of elements");
-        const int n = c.toInt(c.tokens().at(0), "the number of elements");
+        const int n = c.toCount(c.tokens().at(0), "the number of elements", 8);
         for (int i = 0; i < n; ++i) {
             c.nextNonBlank("an element");
             const auto t = c.tokens();
@@ -257,7 +271,7 @@ private:
                 c.fail("expected \"tag type numTags tags... nodes...\"");
             const int type = c.toInt(t[1], "an element type");
             const int ntags = c.toInt(t[2], "a tag count");
-            if (ntags < 0 || t.size() < 3 + static_cast<std::size_t>(ntags))
+            if (ntags < 0 || static_cast<std::size_t>(ntags) > t.size() - 3)
                 c.fail("element line too short for its tags");
             const int physical = ntags > 0 ? c.toInt(t[3], "a physical tag") : 0;
             const int entity = ntags > 1 ? c.toInt(t[4], "an elementary tag") : 0;
@@ -272,19 +286,28 @@ private:
         const auto h = c.tokens();
         if (h.size() < 4)
             c.fail("expected \"numEntityBlocks numElements minElementTag maxElementTag\"");
-        const int blocks = c.toInt(h[0], "a block count");
+        const int blocks = c.toCount(h[0], "the number of element blocks", 8);
+        const long long declared = c.toCount(h[1], "the number of elements", 4);
+        const int headerLine = c.lineNumber();
+        long long total = 0;
         for (int b = 0; b < blocks; ++b) {
             c.nextNonBlank("an element block");
             const auto bh = c.tokens();
             if (bh.size() < 4)
                 c.fail("expected \"entityDim entityTag elementType numElementsInBlock\"");
             const int dim = c.toInt(bh[0], "a dimension"), entity = c.toInt(bh[1], "an entity tag");
-            const int type = c.toInt(bh[2], "an element type"), n = c.toInt(bh[3], "an element count");
+            const int type = c.toInt(bh[2], "an element type");
+            const int n = c.toCount(bh[3], "the number of elements in the block", 4);
+            total += n;
             for (int i = 0; i < n; ++i) {
                 c.nextNonBlank("an element");
                 addElement(dim, type, entity, 0, c.tokens(), 1);
             }
         }
+        if (total != declared)
+            throw FileError(c.path(), headerLine,
+                            "the $Elements header declares " + std::to_string(declared)
+                                + " elements, its blocks hold " + std::to_string(total));
         expectEnd("$EndElements");
     }
 

@@ -73,6 +73,18 @@ int TextCursor::toInt(std::string_view token, const char *what) const
     return static_cast<int>(v);
 }
 
+int TextCursor::toCount(std::string_view token, const char *what, std::size_t minBytesPerItem) const
+{
+    const int n = toInt(token, what);
+    if (n < 0)
+        fail(std::string(what) + " is negative (" + std::to_string(n) + ")");
+    const std::size_t remaining = m_pos < m_text.size() ? m_text.size() - m_pos : 0;
+    if (static_cast<std::size_t>(n) > remaining / minBytesPerItem)
+        fail(std::string(what) + " is " + std::to_string(n) + ", more than the remaining "
+             + std::to_string(remaining) + " bytes of the file can hold");
+    return n;
+}
+
 double TextCursor::toDouble(std::string_view token, const char *what) const
 {
     double v = 0;

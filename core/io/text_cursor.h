@@ -28,6 +28,9 @@ public:
     [[noreturn]] void fail(const std::string &cause) const { throw FileError(m_path, m_lineNumber, cause); }
     int toInt(std::string_view token, const char *what) const;
     double toDouble(std::string_view token, const char *what) const;
+    // A count the file declares for what follows (nodes, elements): refused when negative or
+    // when the rest of the file is too small to hold it, before anything is sized by it.
+    int toCount(std::string_view token, const char *what, std::size_t minBytesPerItem) const;
 
 private:
     std::string m_path;
