@@ -44,6 +44,14 @@ void readHeaderEntry(std::string_view entry, GocadObjectInfo &info)
     info.name = std::string(value);
 }
 
+// A block left open would swallow the END of its object, or the next object, and merge them.
+void refuseEndInBlock(const GocadLineTokenizer &tok, const char *block, int start)
+{
+    if (tok.is(0, "END") || tok.is(0, "GOCAD"))
+        tok.fail(std::string(block) + " started at line " + std::to_string(start)
+                 + " is not closed by '}' before " + std::string(tok.token(0)));
+}
+
 void readHeaderBlock(GocadLineTokenizer &tok, GocadObjectInfo &info)
 {
     const int start = tok.lineNumber();
@@ -53,6 +61,7 @@ void readHeaderBlock(GocadLineTokenizer &tok, GocadObjectInfo &info)
         if (!tok.next())
             tok.failAt(tok.lastLineNumber(), "file ends inside the HEADER block started at line " +
                                                  std::to_string(start));
+        refuseEndInBlock(tok, "the HEADER block", start);
         text = tok.line();
         open = text.find('{');
     }
@@ -65,6 +74,7 @@ void readHeaderBlock(GocadLineTokenizer &tok, GocadObjectInfo &info)
         if (!tok.next())
             tok.failAt(tok.lastLineNumber(), "file ends inside the HEADER block started at line " +
                                                  std::to_string(start));
+        refuseEndInBlock(tok, "the HEADER block", start);
         text = tok.line();
     }
 }
@@ -105,6 +115,7 @@ void skipBraceBlock(GocadLineTokenizer &tok)
         if (!tok.next())
             tok.failAt(tok.lastLineNumber(),
                        "file ends inside the { } block started at line " + std::to_string(start));
+        refuseEndInBlock(tok, "the { } block", start);
         text = tok.line();
     }
 }

@@ -119,6 +119,7 @@ private:
     void readHeader()
     {
         std::string_view line = c.line();
+        const int start = c.lineNumber();
         std::size_t open = line.find('{');
         if (open == std::string_view::npos)
             c.fail("HEADER without '{'");
@@ -130,6 +131,7 @@ private:
                 return;
             if (!c.next())
                 c.fail("HEADER block not closed by '}'");
+            refuseEndInBlock("HEADER block", start);
             rest = std::string(c.line());
         }
     }
@@ -158,9 +160,22 @@ private:
 
     void skipBlock()
     {
-        while (c.line().find('}') == std::string_view::npos)
+        const int start = c.lineNumber();
+        while (c.line().find('}') == std::string_view::npos) {
             if (!c.next())
                 c.fail("block not closed by '}'");
+            refuseEndInBlock("{ } block", start);
+        }
+    }
+
+    // A block left open would swallow the END of the object, or the next object.
+    void refuseEndInBlock(const char *block, int start) const
+    {
+        const std::string word = trim(c.line());
+        const std::string first = word.substr(0, word.find_first_of(" \t"));
+        if (first == "END" || first == "GOCAD")
+            c.fail(std::string(block) + " started at line " + std::to_string(start)
+                   + " is not closed by '}' before " + first);
     }
 
     int regionIndex(const std::string &name)
