@@ -4,10 +4,6 @@
 <context>
     <name>AboutDialog</name>
     <message>
-        <source>Remeshing and meshing of 3D structural models: conformal surface remeshing with restricted Voronoi diagrams, complexity measures and hybrid volume meshes, after J. Pellerin&apos;s PhD thesis.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>StrataMesh is free software: you can redistribute it and/or modify it under the terms of the GNU Affero General Public License, version 3 or (at your option) any later version (AGPL-3.0-or-later). It comes with no warranty.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -21,6 +17,10 @@
     </message>
     <message>
         <source>About StrataMesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remeshing and meshing of 3D structural models: conformal surface remeshing with restricted Voronoi diagrams, complexity measures and TetGen comparison meshes, after J. Pellerin&apos;s PhD thesis.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -495,6 +495,14 @@
         <source>%1 (length)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Surface part lost</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surface part created</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MainWindow</name>
@@ -852,6 +860,71 @@ per cell</source>
         <source>Could not export the complexity cells</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Tetrahedralise…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mesh the regions of the input and of the remesh with TetGen and compare the tetrahedra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel &amp;Tetrahedralisation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop TetGen; nothing is kept of this run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Tetrahedra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min dihedral
+angle (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralising %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input: %1 tets, %2 slivers, min dihedral %3° in %4 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remesh: %1 tets, %2 slivers, min dihedral %3° in %4 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralised — see Tetrahedra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen failed on a model — see Tetrahedra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation failed — see Messages</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>
@@ -1002,6 +1075,211 @@ per cell</source>
     </message>
     <message>
         <source>Ra&amp;ndom seed:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::TetmeshController</name>
+    <message>
+        <source>Tetrahedralising the input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralising the remesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation stopped without a result</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::TetmeshDialog</name>
+    <message>
+        <source>Let TetGen &amp;refine the surfaces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input and &amp;remesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Input only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest circumradius to shortest edge ratio TetGen accepts (its q switch); 0 turns quality refinement off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest volume of a tetrahedron (TetGen&apos;s a switch); 0 sets none.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Without it every surface triangle is kept as it is (TetGen&apos;s Y switch), so the meshes show what the surfaces themselves give.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen is stopped after this time on each model; a raw input model can keep it busy for hours.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Models</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remesh the model first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Quality (radius-edge ratio):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Maximum tet volume:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Time limit per model:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Tetrahedralise</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::TetmeshPanel</name>
+    <message>
+        <source>ok</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>timed out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>killed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>invalid input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen was not run on the input: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen was not run on the remesh: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen failed on the input after %1 s: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen failed on the remesh after %1 s: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C&amp;olour tets by:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min dihedral angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C&amp;lip plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only the tets on one side of a plane, the same in both views, to see inside the meshes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>North–south section (x)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>East–west section (y)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Horizontal section (z)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position of the plane across the meshes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slivers (min dihedral &lt; 5°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min dihedral (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen time (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min dihedral (% of tets)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radius ratio 3r/R (% of tets)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -4,10 +4,6 @@
 <context>
     <name>AboutDialog</name>
     <message>
-        <source>Remeshing and meshing of 3D structural models: conformal surface remeshing with restricted Voronoi diagrams, complexity measures and hybrid volume meshes, after J. Pellerin&apos;s PhD thesis.</source>
-        <translation>Remaillage et maillage de modèles structuraux 3D : remaillage conforme des surfaces par diagrammes de Voronoï restreints, mesures de complexité et maillages volumiques hybrides, d&apos;après la thèse de doctorat de J. Pellerin.</translation>
-    </message>
-    <message>
         <source>StrataMesh is free software: you can redistribute it and/or modify it under the terms of the GNU Affero General Public License, version 3 or (at your option) any later version (AGPL-3.0-or-later). It comes with no warranty.</source>
         <translation>StrataMesh est un logiciel libre : vous pouvez le redistribuer et/ou le modifier selon les termes de la licence publique générale GNU Affero, version 3 ou (à votre choix) toute version ultérieure (AGPL-3.0-or-later). Il est fourni sans aucune garantie.</translation>
     </message>
@@ -22,6 +18,10 @@
     <message>
         <source>About StrataMesh</source>
         <translation>À propos de StrataMesh</translation>
+    </message>
+    <message>
+        <source>Remeshing and meshing of 3D structural models: conformal surface remeshing with restricted Voronoi diagrams, complexity measures and TetGen comparison meshes, after J. Pellerin&apos;s PhD thesis.</source>
+        <translation>Remaillage et maillage de modèles structuraux 3D : remaillage conforme des surfaces par diagrammes de Voronoï restreints, mesures de complexité et maillages de comparaison TetGen, d&apos;après la thèse de doctorat de J. Pellerin.</translation>
     </message>
 </context>
 <context>
@@ -495,6 +495,14 @@
         <source>%1 (length)</source>
         <translation>%1 (longueur)</translation>
     </message>
+    <message>
+        <source>Surface part lost</source>
+        <translation>Partie de surface perdue</translation>
+    </message>
+    <message>
+        <source>Surface part created</source>
+        <translation>Partie de surface créée</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MainWindow</name>
@@ -853,6 +861,72 @@ par cellule</translation>
         <source>Could not export the complexity cells</source>
         <translation>Impossible d&apos;exporter les cellules de complexité</translation>
     </message>
+    <message>
+        <source>&amp;Tetrahedralise…</source>
+        <translation>&amp;Tétraédriser…</translation>
+    </message>
+    <message>
+        <source>Mesh the regions of the input and of the remesh with TetGen and compare the tetrahedra</source>
+        <translation>Mailler les régions du modèle d&apos;entrée et du remaillage avec TetGen et comparer les tétraèdres</translation>
+    </message>
+    <message>
+        <source>Cancel &amp;Tetrahedralisation</source>
+        <translation>Annuler la &amp;tétraédrisation</translation>
+    </message>
+    <message>
+        <source>Stop TetGen; nothing is kept of this run</source>
+        <translation>Arrêter TetGen ; rien n&apos;est gardé de cette exécution</translation>
+    </message>
+    <message>
+        <source>Tetrahedra</source>
+        <translation>Tétraèdres</translation>
+    </message>
+    <message>
+        <source>&amp;Tetrahedra</source>
+        <translation>&amp;Tétraèdres</translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation>Région</translation>
+    </message>
+    <message>
+        <source>Min dihedral
+angle (°)</source>
+        <translation>Angle dièdre
+min. (°)</translation>
+    </message>
+    <message>
+        <source>Tetrahedralising %1…</source>
+        <translation>Tétraédrisation de %1…</translation>
+    </message>
+    <message>
+        <source>Input: %1 tets, %2 slivers, min dihedral %3° in %4 s</source>
+        <translation>Entrée : %1 tétraèdres, %2 tétraèdres plats, angle dièdre min. %3° en %4 s</translation>
+    </message>
+    <message>
+        <source>Remesh: %1 tets, %2 slivers, min dihedral %3° in %4 s</source>
+        <translation>Remaillage : %1 tétraèdres, %2 tétraèdres plats, angle dièdre min. %3° en %4 s</translation>
+    </message>
+    <message>
+        <source>Tetrahedralised — see Tetrahedra</source>
+        <translation>Tétraédrisé — voir Tétraèdres</translation>
+    </message>
+    <message>
+        <source>TetGen failed on a model — see Tetrahedra</source>
+        <translation>Échec de TetGen sur un modèle — voir Tétraèdres</translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation failed: %1</source>
+        <translation>Échec de la tétraédrisation : %1</translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation failed — see Messages</source>
+        <translation>Échec de la tétraédrisation — voir Messages</translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation cancelled</source>
+        <translation>Tétraédrisation annulée</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>
@@ -1004,6 +1078,211 @@ par cellule</translation>
     <message>
         <source>Ra&amp;ndom seed:</source>
         <translation>&amp;Graine aléatoire :</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::TetmeshController</name>
+    <message>
+        <source>Tetrahedralising the input</source>
+        <translation>Tétraédrisation du modèle d&apos;entrée</translation>
+    </message>
+    <message>
+        <source>Tetrahedralising the remesh</source>
+        <translation>Tétraédrisation du remaillage</translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation stopped without a result</source>
+        <translation>La tétraédrisation s&apos;est arrêtée sans résultat</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::TetmeshDialog</name>
+    <message>
+        <source>Let TetGen &amp;refine the surfaces</source>
+        <translation>Laisser TetGen &amp;raffiner les surfaces</translation>
+    </message>
+    <message>
+        <source>Input and &amp;remesh</source>
+        <translation>Entrée et &amp;remaillage</translation>
+    </message>
+    <message>
+        <source>&amp;Input only</source>
+        <translation>&amp;Entrée seule</translation>
+    </message>
+    <message>
+        <source>Tetrahedralise</source>
+        <translation>Tétraédriser</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Désactivée</translation>
+    </message>
+    <message>
+        <source>Largest circumradius to shortest edge ratio TetGen accepts (its q switch); 0 turns quality refinement off.</source>
+        <translation>Plus grand rapport du rayon circonscrit à l&apos;arête la plus courte accepté par TetGen (son option q) ; 0 désactive le raffinement de qualité.</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Aucun</translation>
+    </message>
+    <message>
+        <source>Largest volume of a tetrahedron (TetGen&apos;s a switch); 0 sets none.</source>
+        <translation>Plus grand volume d&apos;un tétraèdre (option a de TetGen) ; 0 n&apos;en impose aucun.</translation>
+    </message>
+    <message>
+        <source>Without it every surface triangle is kept as it is (TetGen&apos;s Y switch), so the meshes show what the surfaces themselves give.</source>
+        <translation>Sans cela, chaque triangle des surfaces est gardé tel quel (option Y de TetGen) : les maillages montrent ce que donnent les surfaces elles-mêmes.</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>TetGen is stopped after this time on each model; a raw input model can keep it busy for hours.</source>
+        <translation>TetGen est arrêté après ce temps sur chaque modèle ; un modèle d&apos;entrée brut peut l&apos;occuper des heures.</translation>
+    </message>
+    <message>
+        <source>Models</source>
+        <translation>Modèles</translation>
+    </message>
+    <message>
+        <source>Remesh the model first</source>
+        <translation>Remailler d&apos;abord le modèle</translation>
+    </message>
+    <message>
+        <source>&amp;Quality (radius-edge ratio):</source>
+        <translation>&amp;Qualité (rapport rayon/arête) :</translation>
+    </message>
+    <message>
+        <source>&amp;Maximum tet volume:</source>
+        <translation>Volume &amp;maximal d&apos;un tétraèdre :</translation>
+    </message>
+    <message>
+        <source>&amp;Time limit per model:</source>
+        <translation>&amp;Temps limite par modèle :</translation>
+    </message>
+    <message>
+        <source>&amp;Tetrahedralise</source>
+        <translation>&amp;Tétraédriser</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::TetmeshPanel</name>
+    <message>
+        <source>ok</source>
+        <translation>réussi</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>interrompu</translation>
+    </message>
+    <message>
+        <source>timed out</source>
+        <translation>temps dépassé</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>mémoire épuisée</translation>
+    </message>
+    <message>
+        <source>killed</source>
+        <translation>tué</translation>
+    </message>
+    <message>
+        <source>invalid input</source>
+        <translation>entrée invalide</translation>
+    </message>
+    <message>
+        <source>TetGen was not run on the input: %1</source>
+        <translation>TetGen n&apos;a pas été lancé sur le modèle d&apos;entrée : %1</translation>
+    </message>
+    <message>
+        <source>TetGen was not run on the remesh: %1</source>
+        <translation>TetGen n&apos;a pas été lancé sur le remaillage : %1</translation>
+    </message>
+    <message>
+        <source>TetGen failed on the input after %1 s: %2</source>
+        <translation>Échec de TetGen sur le modèle d&apos;entrée après %1 s : %2</translation>
+    </message>
+    <message>
+        <source>TetGen failed on the remesh after %1 s: %2</source>
+        <translation>Échec de TetGen sur le remaillage après %1 s : %2</translation>
+    </message>
+    <message>
+        <source>C&amp;olour tets by:</source>
+        <translation>C&amp;olorer les tétraèdres par :</translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation>Région</translation>
+    </message>
+    <message>
+        <source>Min dihedral angle</source>
+        <translation>Angle dièdre minimal</translation>
+    </message>
+    <message>
+        <source>C&amp;lip plane</source>
+        <translation>P&amp;lan de coupe</translation>
+    </message>
+    <message>
+        <source>Show only the tets on one side of a plane, the same in both views, to see inside the meshes</source>
+        <translation>Ne montrer que les tétraèdres d&apos;un côté d&apos;un plan, le même dans les deux vues, pour voir l&apos;intérieur des maillages</translation>
+    </message>
+    <message>
+        <source>North–south section (x)</source>
+        <translation>Coupe nord–sud (x)</translation>
+    </message>
+    <message>
+        <source>East–west section (y)</source>
+        <translation>Coupe est–ouest (y)</translation>
+    </message>
+    <message>
+        <source>Horizontal section (z)</source>
+        <translation>Coupe horizontale (z)</translation>
+    </message>
+    <message>
+        <source>Position of the plane across the meshes</source>
+        <translation>Position du plan à travers les maillages</translation>
+    </message>
+    <message>
+        <source>Input</source>
+        <translation>Entrée</translation>
+    </message>
+    <message>
+        <source>Remesh</source>
+        <translation>Remaillage</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>Issue</translation>
+    </message>
+    <message>
+        <source>Tetrahedra</source>
+        <translation>Tétraèdres</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Points</translation>
+    </message>
+    <message>
+        <source>Slivers (min dihedral &lt; 5°)</source>
+        <translation>Tétraèdres plats (dièdre min. &lt; 5°)</translation>
+    </message>
+    <message>
+        <source>Min dihedral (°)</source>
+        <translation>Dièdre min. (°)</translation>
+    </message>
+    <message>
+        <source>TetGen time (s)</source>
+        <translation>Temps TetGen (s)</translation>
+    </message>
+    <message>
+        <source>Min dihedral (% of tets)</source>
+        <translation>Dièdre min. (% des tétraèdres)</translation>
+    </message>
+    <message>
+        <source>Radius ratio 3r/R (% of tets)</source>
+        <translation>Rapport des rayons 3r/R (% des tétraèdres)</translation>
     </message>
 </context>
 </TS>

@@ -37,31 +37,37 @@ void HistogramChart::setHistograms(const QString &title, const std::optional<His
         f.setPointSizeF(f.pointSizeF() * 0.9);
         return f;
     }());
-    if (!input || !output || input->edges() != output->edges())
+    if (!input || (output && input->edges() != output->edges()))
         return;
     m_binCount = int(input->binCount());
-    m_input = new QBarSet(tr("Input"));
-    m_output = new QBarSet(tr("Output"));
+    m_input = new QBarSet(m_inputName.isEmpty() ? tr("Input") : m_inputName);
     m_input->setColor(QColor(150, 150, 160));
-    m_output->setColor(QColor(70, 130, 200));
+    if (output) {
+        m_output = new QBarSet(m_outputName.isEmpty() ? tr("Output") : m_outputName);
+        m_output->setColor(QColor(70, 130, 200));
+    }
     QStringList labels;
     const QLocale locale;
     double top = 0.0;
     for (std::size_t i = 0; i < input->binCount(); ++i) {
-        const double a = 100.0 * input->fraction(i), b = 100.0 * output->fraction(i);
+        const double a = 100.0 * input->fraction(i), b = output ? 100.0 * output->fraction(i) : 0.0;
         *m_input << a;
-        *m_output << b;
+        if (m_output)
+            *m_output << b;
         top = std::max({top, a, b});
         labels << locale.toString(input->edges()[i], 'f', decimals);
     }
     auto *series = new QBarSeries;
     series->append(m_input);
-    series->append(m_output);
+    if (m_output)
+        series->append(m_output);
     series->setBarWidth(0.9);
     c->addSeries(series);
     auto *x = new QBarCategoryAxis;
     x->append(labels);
     x->setLabelsAngle(-90);
+    // Qt Charts elides rotated labels of many narrow bins (18 and more) to "…" even when they fit.
+    x->setTruncateLabels(false);
     QFont small = x->labelsFont();
     small.setPointSizeF(small.pointSizeF() * 0.8);
     x->setLabelsFont(small);
@@ -73,6 +79,12 @@ void HistogramChart::setHistograms(const QString &title, const std::optional<His
     c->addAxis(y, Qt::AlignLeft);
     series->attachAxis(x);
     series->attachAxis(y);
+}
+
+void HistogramChart::setSeriesNames(const QString &input, const QString &output)
+{
+    m_inputName = input;
+    m_outputName = output;
 }
 
 double HistogramChart::inputPercent(int bin) const

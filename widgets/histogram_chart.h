@@ -19,9 +19,12 @@ public:
     explicit HistogramChart(QWidget *parent = nullptr);
 
     // `decimals`: of the bin edge labels. Both histograms must have the same edges; otherwise,
-    // or with std::nullopt, the chart is cleared.
+    // or without input, the chart is cleared. Without output, the input is drawn alone.
     void setHistograms(const QString &title, const std::optional<Histogram> &input,
                        const std::optional<Histogram> &output, int decimals);
+    // Names of the two bar sets in the legend for the next setHistograms(); empty: "Input" and
+    // "Output".
+    void setSeriesNames(const QString &input, const QString &output);
 
     int binCount() const { return m_binCount; }
     // Height of a bar in %, for tests; -1 out of range.
@@ -32,6 +35,8 @@ private:
     QBarSet *m_input = nullptr;
     QBarSet *m_output = nullptr;
     int m_binCount = 0;
+    QString m_inputName;
+    QString m_outputName;
 };
 
 } // namespace stratamesh

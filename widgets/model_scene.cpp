@@ -237,13 +237,22 @@ void ModelScene::buildLegend()
 void ModelScene::applyVisibility()
 {
     for (std::size_t i = 0; i < m_surfaceActors.size(); ++i) {
-        m_surfaceActors[i]->SetVisibility(!m_isBoxSurface[i] || m_boxVisible);
+        m_surfaceActors[i]->SetVisibility(m_visible && (!m_isBoxSurface[i] || m_boxVisible));
         m_surfaceActors[i]->GetProperty()->SetEdgeVisibility(m_edgesVisible);
     }
+    for (auto *actor : {&m_lines, &m_corners})
+        if (*actor)
+            (*actor)->SetVisibility(m_visible);
     if (m_boxLines)
-        m_boxLines->SetVisibility(m_boxVisible);
+        m_boxLines->SetVisibility(m_visible && m_boxVisible);
     if (m_boxCorners)
-        m_boxCorners->SetVisibility(m_boxVisible);
+        m_boxCorners->SetVisibility(m_visible && m_boxVisible);
+}
+
+void ModelScene::setVisible(bool visible)
+{
+    m_visible = visible;
+    applyVisibility();
 }
 
 void ModelScene::setBoxVisible(bool visible)

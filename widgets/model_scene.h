@@ -42,6 +42,9 @@ public:
     bool boxVisible() const { return m_boxVisible; }
     void setEdgesVisible(bool visible);
     bool edgesVisible() const { return m_edgesVisible; }
+    // The whole model, e.g. while its tetrahedra are drawn in its place.
+    void setVisible(bool visible);
+    bool isVisible() const { return m_visible; }
 
     // One entry per feature type present, box last, in a stable order.
     const std::vector<LegendEntry> &legend() const { return m_legend; }
@@ -68,6 +71,7 @@ private:
     std::shared_ptr<const Model> m_model;
     bool m_boxVisible = false;
     bool m_edgesVisible = false;
+    bool m_visible = true;
 
     std::vector<vtkSmartPointer<vtkActor>> m_surfaceActors; // one per surface
     std::vector<bool> m_isBoxSurface;

@@ -13,7 +13,7 @@ void showAboutDialog(QWidget *parent)
         QStringLiteral("<h3>StrataMesh %1</h3><p>%2</p><p>%3</p><p>%4</p><p>%5</p>")
             .arg(QStringLiteral(STRATAMESH_VERSION),
                  QCoreApplication::translate("AboutDialog", "Remeshing and meshing of 3D structural models: conformal surface remeshing with "
-                    "restricted Voronoi diagrams, complexity measures and hybrid volume meshes, after "
+                    "restricted Voronoi diagrams, complexity measures and TetGen comparison meshes, after "
                     "J. Pellerin's PhD thesis."),
                  QCoreApplication::translate("AboutDialog", "StrataMesh is free software: you can redistribute it and/or modify it under the "
                     "terms of the GNU Affero General Public License, version 3 or (at your option) any "

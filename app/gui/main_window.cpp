@@ -13,6 +13,8 @@
 #include "position_marker.h"
 #include "remesh_controller.h"
 #include "remesh_dialog.h"
+#include "tet_mesh_pair.h"
+#include "tetmesh_controller.h"
 #include "vtk_view_widget.h"
 
 #include "common/error.h"
@@ -49,7 +51,8 @@ namespace stratamesh {
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent), m_view(new VtkViewWidget(this)), m_controller(new OpenModelController(this)),
       m_outputView(new VtkViewWidget(this)), m_remeshController(new RemeshController(this)),
-      m_complexityController(new ComplexityController(this))
+      m_complexityController(new ComplexityController(this)),
+      m_tetmeshController(new TetmeshController(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
     createViews();
@@ -65,6 +68,7 @@ MainWindow::MainWindow(QWidget *parent)
     createDocks();
     createStatusBar();
     createComplexityUi();
+    createTetmeshUi();
     retranslate();
 
     connect(m_controller, &OpenModelController::started, this, &MainWindow::onLoadStarted);
@@ -88,6 +92,9 @@ MainWindow::~MainWindow()
     delete m_remeshController;
     m_complexityController->disconnect(this);
     delete m_complexityController;
+    m_tetmeshController->disconnect(this); // kills a running TetGen helper
+    delete m_tetmeshController;
+    m_tetScenes.reset();
     m_heatMap.reset();
     m_marker.reset();
     m_outputScene.reset();
@@ -296,6 +303,7 @@ void MainWindow::retranslate()
     m_comparisonDock->toggleViewAction()->setText(tr("&Input vs Output"));
     updateViewTitles();
     retranslateComplexity();
+    retranslateTetmesh();
     m_toolBar->setWindowTitle(tr("Main Toolbar"));
     m_messageDock->setWindowTitle(tr("Messages"));
     m_messageDock->toggleViewAction()->setText(tr("&Messages"));
@@ -397,11 +405,13 @@ void MainWindow::onLoaded(const LoadedModel &loaded)
     m_messages->clear();
     m_displayName = loaded.displayName;
     m_counts = loaded.counts;
+    clearTetmeshOutcome();
     clearRemeshOutcome();
     clearComplexityOutcome();
     m_scene->setModel(loaded.model);
     m_remesh->setEnabled(true);
     m_complexity->setEnabled(true);
+    m_tetmesh->setEnabled(true);
     updateLegend();
     resetCamera();
 
@@ -457,7 +467,12 @@ void MainWindow::updateCounts()
     m_countsLabel->setToolTip(tr("With the box: %1").arg(describe(m_counts.all)));
 }
 
-void MainWindow::updateLegend() { m_legend->setEntries(m_scene->legend(), m_scene->boxVisible()); }
+// While tets are drawn in place of the surfaces, the surface legend would describe nothing shown.
+void MainWindow::updateLegend()
+{
+    m_legend->setEntries(m_scene->isVisible() ? m_scene->legend() : std::vector<LegendEntry>{},
+                         m_scene->boxVisible());
+}
 
 } // namespace stratamesh
 
@@ -470,6 +485,7 @@ void MainWindow::setBusy(bool busy)
     m_openSample->setEnabled(!busy);
     m_remesh->setEnabled(!busy && m_scene->model());
     m_complexity->setEnabled(!busy && m_scene->model());
+    m_tetmesh->setEnabled(!busy && m_scene->model());
     m_exportCells->setEnabled(!busy && m_complexityOutcome.has_value());
     m_saveRemeshed->setEnabled(!busy && m_outcome.has_value());
     setAcceptDrops(!busy);
@@ -509,7 +525,7 @@ void MainWindow::remesh()
 
 bool MainWindow::startRemesh(const RemeshParams &params)
 {
-    if (m_controller->isBusy() || m_complexityController->isBusy())
+    if (isWorking())
         return false;
     m_lastParams = params;
     return m_remeshController->start(m_scene->model(), params);
@@ -537,6 +553,7 @@ void MainWindow::onRemeshStarted()
 
 void MainWindow::onRemeshed(const RemeshOutcome &outcome)
 {
+    clearTetmeshOutcome(); // its remesh side was another model
     m_outcome = outcome;
     m_cancelRemesh->setEnabled(false);
     m_cancelButton->hide();

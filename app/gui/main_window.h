@@ -5,6 +5,7 @@
 #include "complexity_outcome.h"
 #include "loaded_model.h"
 #include "remesh_outcome.h"
+#include "tetmesh_outcome.h"
 
 #include <QMainWindow>
 
@@ -32,6 +33,9 @@ class ModelScene;
 class OpenModelController;
 class PositionMarker;
 class RemeshController;
+class TetMeshPair;
+class TetmeshController;
+class TetmeshPanel;
 class VtkViewWidget;
 
 class MainWindow : public QMainWindow {
@@ -72,6 +76,15 @@ public:
     // The last analysis shown, if any (cleared when another model is opened).
     const std::optional<ComplexityOutcome> &complexityOutcome() const { return m_complexityOutcome; }
 
+    // TetGen comparison meshes (thesis §5.2): tets in both views, the Tetrahedra dock.
+    TetmeshController *tetmeshController() const { return m_tetmeshController; }
+    TetmeshPanel *tetmeshPanel() const { return m_tetmeshPanel; }
+    TetMeshPair *tetScenes() const { return m_tetScenes.get(); }
+    QAction *tetmeshAction() const { return m_tetmesh; }
+    QAction *cancelTetmeshAction() const { return m_cancelTetmesh; }
+    // The last meshes shown, if any (cleared by another model or another remesh).
+    const std::optional<TetmeshOutcome> &tetmeshOutcome() const { return m_tetmeshOutcome; }
+
 public slots:
     void openFile(const QString &path);
     void openSample();
@@ -100,6 +113,12 @@ public slots:
     bool exportComplexityCells(const QString &path);
     void setHeatMapVisible(bool visible);
     void setHeatMapThreshold(int threshold);
+    // Opens the TetGen dialog, then tetrahedralises the input and, by default, the remesh.
+    void tetrahedralise();
+    // With these switches, the remesh too when `withRemesh` and there is one; false when it
+    // cannot start.
+    bool startTetmesh(const TetgenParams &params, bool withRemesh);
+    void cancelTetmesh();
 
 signals:
     // After a load attempt has been shown (model displayed, or error listed).
@@ -108,6 +127,8 @@ signals:
     void remeshFinished(bool ok);
     // After a complexity analysis has ended and its outcome was shown.
     void complexityFinished(bool ok);
+    // After a tetrahedralisation has ended and its outcome was shown.
+    void tetmeshFinished(bool ok);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -144,6 +165,15 @@ private:
     void endComplexityRun();
     void updateHeatMapCount();
     bool isWorking() const;
+    void createTetmeshUi();
+    void retranslateTetmesh();
+    void clearTetmeshOutcome();
+    void onTetmeshStarted();
+    void onTetmeshed(const TetmeshOutcome &outcome);
+    void onTetmeshFailed(const Message &error);
+    void onTetmeshCancelled();
+    void endTetmeshRun();
+    void applyTetView();
 
     VtkViewWidget *m_view = nullptr;
     std::unique_ptr<ModelScene> m_scene;
@@ -184,6 +214,15 @@ private:
     QAction *m_cancelComplexity = nullptr;
     QAction *m_exportCells = nullptr;
     QMenu *m_analyseMenu = nullptr;
+
+    TetmeshController *m_tetmeshController = nullptr;
+    std::optional<TetmeshOutcome> m_tetmeshOutcome;
+    std::optional<TetgenParams> m_lastTetmeshParams;
+    std::unique_ptr<TetMeshPair> m_tetScenes;
+    TetmeshPanel *m_tetmeshPanel = nullptr;
+    QDockWidget *m_tetmeshDock = nullptr;
+    QAction *m_tetmesh = nullptr;
+    QAction *m_cancelTetmesh = nullptr;
 
     QAction *m_open = nullptr;
     QAction *m_openSample = nullptr;

@@ -11,6 +11,7 @@
 #include "model_scene.h"
 #include "open_model_controller.h"
 #include "remesh_controller.h"
+#include "tetmesh_controller.h"
 #include "vtk_view_widget.h"
 
 #include "common/error.h"
@@ -83,7 +84,8 @@ void MainWindow::retranslateComplexity()
 
 bool MainWindow::isWorking() const
 {
-    return m_controller->isBusy() || m_remeshController->isBusy() || m_complexityController->isBusy();
+    return m_controller->isBusy() || m_remeshController->isBusy() || m_complexityController->isBusy() ||
+           m_tetmeshController->isBusy();
 }
 
 void MainWindow::clearComplexityOutcome()
@@ -109,7 +111,7 @@ void MainWindow::analyseComplexity()
 
 bool MainWindow::startComplexity(const ComplexityParams &params)
 {
-    if (m_controller->isBusy() || m_remeshController->isBusy())
+    if (isWorking())
         return false;
     m_lastComplexityParams = params;
     return m_complexityController->start(m_scene->model(), params);

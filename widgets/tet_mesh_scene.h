@@ -1,0 +1,77 @@
+// The tetrahedra of a TetGen comparison mesh (core/volume) drawn in a 3D view, coloured by region
+// or by each tet's minimum dihedral angle (thesis §5.2 judges the meshes by it), with a scalar
+// bar as legend. A clip plane keeps the whole tets on one side of it, so the inside of the mesh
+// shows tet by tet instead of as a cut. This only converts the core's mesh: no geometry here.
+#pragma once
+
+#include "mesh/volume_mesh.h"
+
+#include <vtkSmartPointer.h>
+
+#include <memory>
+
+class vtkActor;
+class vtkDataSetSurfaceFilter;
+class vtkExtractGeometry;
+class vtkPlane;
+class vtkRenderer;
+class vtkScalarBarActor;
+class vtkUnstructuredGrid;
+
+namespace stratamesh {
+
+enum class TetColouring { Region, MinDihedral };
+
+class TetMeshScene {
+public:
+    explicit TetMeshScene(vtkRenderer *renderer);
+    ~TetMeshScene();
+    TetMeshScene(const TetMeshScene &) = delete;
+    TetMeshScene &operator=(const TetMeshScene &) = delete;
+
+    // The tets of the mesh (other cells are left out); cellQuality, when there is one value per
+    // cell, is the min dihedral angle. The scene keeps the mesh alive; nullptr clears.
+    void setMesh(std::shared_ptr<const VolumeMesh> mesh);
+    const std::shared_ptr<const VolumeMesh> &mesh() const { return m_mesh; }
+
+    void setColouring(TetColouring colouring);
+    TetColouring colouring() const { return m_colouring; }
+    // Draws only the tets with a node on the side of the plane its normal points away from.
+    void setClipPlane(const double origin[3], const double normal[3]);
+    void clearClipPlane();
+    bool isClipped() const { return m_clipped; }
+    void setVisible(bool visible);
+
+    // Titles of the scalar bar (translated by the caller).
+    void setTitles(const char *region, const char *minDihedral);
+    // False without a mesh.
+    bool bounds(double bounds[6]) const;
+    int tetCount() const;
+    // Tets drawn after clipping (all of them when not clipped).
+    int shownTetCount() const;
+    vtkActor *actor() const;
+    vtkScalarBarActor *scalarBar() const;
+
+    // Minimum dihedral angles are coloured over [0°, kDihedralTop] (70.5° is the regular tet's).
+    static constexpr double kDihedralTop = 70.0;
+
+private:
+    void applyColouring();
+    void applyVisibility();
+
+    vtkSmartPointer<vtkRenderer> m_renderer;
+    vtkSmartPointer<vtkUnstructuredGrid> m_grid;
+    vtkSmartPointer<vtkPlane> m_plane;
+    vtkSmartPointer<vtkExtractGeometry> m_extract;
+    vtkSmartPointer<vtkDataSetSurfaceFilter> m_surface;
+    vtkSmartPointer<vtkActor> m_actor;
+    vtkSmartPointer<vtkScalarBarActor> m_scalarBar;
+    std::shared_ptr<const VolumeMesh> m_mesh;
+    TetColouring m_colouring = TetColouring::Region;
+    bool m_clipped = false;
+    bool m_visible = true;
+    std::string m_regionTitle = "Region";
+    std::string m_dihedralTitle = "Min dihedral (°)";
+};
+
+} // namespace stratamesh
