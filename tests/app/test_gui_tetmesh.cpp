@@ -2,7 +2,8 @@
 // the sample model and its remesh are tetrahedralised side by side, the Tetrahedra dock shows
 // the core's figures and histograms of both, the tets are drawn in both views and a clip plane
 // opens them; a helper killed mid-run is a result in the table, not an error; a cancel leaves
-// nothing; an input-only run fills the input column alone.
+// nothing, and a cancel while TetGen runs kills its helper; an input-only run fills the input
+// column alone.
 #include "widgets/image_compare.h"
 
 #include "histogram_chart.h"
@@ -20,10 +21,12 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QtTest>
 
+#include <atomic>
 #include <csignal>
 #include <sys/types.h>
 
@@ -129,6 +132,29 @@ private slots:
         QVERIFY(m_window->scene()->isVisible());
         QVERIFY(m_window->tetmeshAction()->isEnabled());
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), 0);
+    }
+
+    // Cancel while TetGen runs: the helper is killed and reaped, nothing is shown.
+    void cancelKillsTheRunningHelper()
+    {
+        TetgenParams params;
+        params.maxVolume = 300.0; // ~10^6 tets of the sample box: TetGen runs for seconds
+        std::atomic<int> helper{0};
+        MainWindow *window = m_window.get();
+        params.onStarted = [&helper, window](int pid) {
+            helper = pid;
+            QMetaObject::invokeMethod(window, &MainWindow::cancelTetmesh, Qt::QueuedConnection);
+        };
+        QSignalSpy cancelled(m_window->tetmeshController(), &TetmeshController::cancelled);
+        QElapsedTimer timer;
+        timer.start();
+        QVERIFY(!waitForTetmesh(*m_window, params, false));
+        QCOMPARE(cancelled.size(), 1);
+        QVERIFY(helper > 0);
+        QVERIFY2(timer.elapsed() < 20000, qPrintable(QString::number(timer.elapsed())));
+        QVERIFY(::kill(pid_t(helper.load()), 0) != 0); // gone, not left running
+        QVERIFY(!m_window->tetmeshOutcome());
+        QVERIFY(m_window->tetmeshAction()->isEnabled());
     }
 
     void inputAndRemeshSideBySide()
