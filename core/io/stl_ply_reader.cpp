@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "io/coordinate_bound.h"
 #include "io/number_text.h"
+#include "io/stl_reader.h"
 #include "io/text_cursor.h"
 
 // GCC 12 reports a false -Wmaybe-uninitialized inside OpenMesh's property containers while
@@ -41,12 +42,60 @@ VolumeMesh oneSurface(const std::string &path)
     return m;
 }
 
+struct PlyCounts {
+    long long vertices = 0;
+    long long faces = 0;
+};
+
+// The element counts of a binary PLY header, each refused unless the file's size can hold it
+// (a vertex takes 3 bytes at least, a face 4) before OpenMesh reserves room for them.
+PlyCounts binaryPlyCounts(const std::string &path)
+{
+    std::ifstream in(path, std::ios::binary);
+    in.seekg(0, std::ios::end);
+    const long long size = static_cast<long long>(in.tellg());
+    in.seekg(0);
+    PlyCounts counts;
+    std::string line;
+    for (int number = 1; std::getline(in, line) && line.rfind("end_header", 0) != 0; ++number) {
+        if (line.rfind("element ", 0) != 0)
+            continue;
+        const std::size_t space = line.find(' ', 8);
+        long long n = 0;
+        if (space == std::string::npos || !parseInt(line.substr(space + 1), n) || n < 0)
+            throw FileError(path, number, "bad element count");
+        const std::string name = line.substr(8, space - 8);
+        if (n > size / (name == "face" ? 4 : 3))
+            throw FileError(path, number,
+                            "element " + name + " declares " + std::to_string(n)
+                                + " items, more than the file of " + std::to_string(size)
+                                + " bytes can hold");
+        if (name == "vertex")
+            counts.vertices = n;
+        else if (name == "face")
+            counts.faces = n;
+    }
+    return counts;
+}
+
 VolumeMesh readWithOpenMesh(const std::string &path)
 {
+    const PlyCounts declared = binaryPlyCounts(path);
     DoubleTriMesh mesh;
     OpenMesh::IO::Options options;
     if (!OpenMesh::IO::read_mesh(mesh, path, options))
         throw FileError(path, 0, "OpenMesh could not read this file as a surface mesh");
+    // OpenMesh duplicates the vertices around a non-manifold edge and drops faces it cannot add:
+    // either would change the surface silently.
+    if (static_cast<long long>(mesh.n_vertices()) != declared.vertices)
+        throw FileError(path, 0,
+                        "non-manifold faces: " + std::to_string(declared.vertices)
+                            + " vertices in the file, " + std::to_string(mesh.n_vertices())
+                            + " after reading (save as ASCII PLY, which keeps them)");
+    if (static_cast<long long>(mesh.n_faces()) < declared.faces)
+        throw FileError(path, 0,
+                        std::to_string(declared.faces - static_cast<long long>(mesh.n_faces()))
+                            + " face(s) could not be added (degenerate or non-manifold faces)");
     VolumeMesh m = oneSurface(path);
     for (const auto v : mesh.vertices()) {
         const auto p = mesh.point(v);
@@ -90,9 +139,8 @@ VolumeMesh readAsciiPly(const std::string &path)
         if (t[0] == "element") {
             if (t.size() < 3)
                 c.fail("expected \"element NAME COUNT\"");
-            long long n = 0;
-            if (!parseInt(t[2], n) || n < 0)
-                c.fail("bad element count");
+            // Each item takes a line of at least two bytes.
+            const long long n = c.toCount(t[2], "the element count", 2);
             elements.push_back({std::string(t[1]), n, {}});
         } else if (t[0] == "property") {
             if (elements.empty())
@@ -104,6 +152,10 @@ VolumeMesh readAsciiPly(const std::string &path)
         }
     }
     VolumeMesh m = oneSurface(path);
+    long long vertexCount = 0;
+    for (const PlyElement &e : elements)
+        if (e.name == "vertex")
+            vertexCount = e.count;
     for (const PlyElement &e : elements) {
         int x = -1, y = -1, z = -1, indices = -1;
         for (std::size_t p = 0; p < e.properties.size(); ++p) {
@@ -132,8 +184,12 @@ VolumeMesh readAsciiPly(const std::string &path)
                         c.fail("line too short for its list");
                     for (int j = 0; j < n; ++j) {
                         const int v = c.toInt(t[k++], "a vertex index");
-                        if (static_cast<int>(p) == indices)
-                            face.push_back(v);
+                        if (static_cast<int>(p) != indices)
+                            continue;
+                        if (v < 0 || v >= vertexCount)
+                            c.fail("face uses vertex " + std::to_string(v) + " of "
+                                   + std::to_string(vertexCount) + " (numbered from 0)");
+                        face.push_back(v);
                     }
                 } else {
                     const std::string_view token = t[k++];
@@ -180,7 +236,9 @@ VolumeMesh readStlOrPly(const std::string &path)
         throw FileError(path, 0, "cannot open the file");
     std::string ext = path.substr(std::min(path.size(), path.find_last_of('.')));
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
-    VolumeMesh m = ext == ".ply" && isAsciiPly(path) ? readAsciiPly(path) : readWithOpenMesh(path);
+    VolumeMesh m = ext == ".stl"      ? readStl(path)
+                   : isAsciiPly(path) ? readAsciiPly(path)
+                                      : readWithOpenMesh(path);
     if (m.triangles.empty())
         throw FileError(path, 0, "no triangle in the file");
     try {

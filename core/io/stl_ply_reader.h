@@ -1,7 +1,7 @@
 // Single surfaces from STL and PLY files as an exchange mesh with one surface (named after the
 // file) and no region. ASCII PLY is parsed here so that double coordinates stay exact (OpenMesh 9
-// reads them as floats); binary PLY and STL (floats by definition) go through OpenMesh, which also
-// merges STL's repeated corners into shared vertices.
+// reads them as floats), STL by stl_reader.h (welded, non-manifold edges kept); binary PLY goes
+// through OpenMesh and is refused when OpenMesh changes its vertices or faces.
 #pragma once
 
 #include "mesh/volume_mesh.h"
