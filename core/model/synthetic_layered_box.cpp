@@ -26,17 +26,20 @@ double lerp(double a, double b, int k, int n)
     return a + (b - a) * (static_cast<double>(k) / n);
 }
 
-int steps(double length, double h) { return std::max(1, static_cast<int>(std::lround(length / h))); }
+int steps(double length, double h)
+{
+    return std::max(1, static_cast<int>(std::lround(length / h)));
+}
 
 struct Level {
     double c;
     bool flat; // z = c, else z = c + fold(y)
 };
 
-enum class Side { West, East, Whole }; // fault block: x < fault, x > fault, or no fault
-
+// A fault block lies between fault `index - 1` (or the box's west face) and fault `index` (or
+// the east face).
 struct Block {
-    Side side;
+    int index = 0;
     int nx = 1;
     std::vector<int> levels;   // level indices bounding its layers, bottom to top (incl. box)
     std::vector<int> features; // horizon feature number of each interior level (1-based)
@@ -45,17 +48,27 @@ struct Block {
 
 class LayeredBoxBuilder {
 public:
-    explicit LayeredBoxBuilder(const LayeredBoxParams &p) : m_p(p) { validate(); }
+    explicit LayeredBoxBuilder(const LayeredBoxParams &p) : m_p(p)
+    {
+        if (m_p.faultPositions.empty() && m_p.fault) {
+            m_p.faultPositions = {m_p.faultPosition};
+            m_p.faultThrows = {m_p.faultThrow};
+        }
+        m_p.fault = !m_p.faultPositions.empty();
+        validate();
+    }
 
     Model build()
     {
         setUpLevels();
         Model model;
-        model.name = m_p.fault ? "layered_box_fault" : "layered_box";
+        model.name = faultCount() > 1 ? "fault_network_box"
+                     : m_p.fault      ? "layered_box_fault"
+                                      : "layered_box";
         for (Block &b : m_blocks)
             addBlock(model, b);
-        if (m_p.fault)
-            addFault(model);
+        for (int f = 0; f < faultCount(); ++f)
+            addFault(model, f);
         groupLayers(model);
         return model;
     }
@@ -66,37 +79,68 @@ private:
         const Vec3 &s = m_p.size;
         if (!(s.x() > 0 && s.y() > 0 && s.z() > 0) || !(m_p.edgeLength > 0))
             throw InputError("layered box: the size and the edge length must be positive");
-        if (m_p.horizons < 0 || !(m_p.foldAmplitude >= 0) || !(m_p.faultThrow >= 0) || !(m_p.thinLayerThickness >= 0))
-            throw InputError("layered box: horizons, fold amplitude, throw and thin layer must not be negative");
+        if (m_p.faultThrows.size() != m_p.faultPositions.size())
+            throw InputError("layered box: give one throw per fault position");
+        for (std::size_t f = 0; f < m_p.faultThrows.size(); ++f)
+            if (!(m_p.faultThrows[f] >= 0)
+                || (f > 0 && !(m_p.faultPositions[f] > m_p.faultPositions[f - 1])))
+                throw InputError(
+                    "layered box: throws must not be negative and fault positions must increase");
+        if (m_p.horizons < 0 || !(m_p.foldAmplitude >= 0) || !(m_p.faultThrow >= 0)
+            || !(m_p.thinLayerThickness >= 0))
+            throw InputError(
+                "layered box: horizons, fold amplitude, throw and thin layer must not be negative");
         if (room() <= 0)
-            throw InputError("layered box: the fold amplitude and the throw leave no room for the horizons");
-        if (m_p.thinLayerThickness > 0 && (m_p.horizons == 0 || m_p.thinLayerThickness >= room() / (m_p.horizons + 1)))
-            throw InputError("layered box: the thin layer needs a horizon below it and must be thinner than a layer");
-        if (m_p.fault) {
-            if (!(m_p.faultDipDegrees > 0 && m_p.faultDipDegrees <= 90))
-                throw InputError("layered box: the fault dip must be in (0, 90] degrees");
-            if (!(faultX(0.0) < s.x() && faultX(s.z()) > 0.0 && faultX(0.0) > 0.0 && faultX(s.z()) < s.x()))
-                throw InputError("layered box: the fault must cross the box through its top and bottom faces");
-        }
+            throw InputError(
+                "layered box: the fold amplitude and the throw leave no room for the horizons");
+        if (m_p.thinLayerThickness > 0
+            && (m_p.horizons == 0 || m_p.thinLayerThickness >= room() / (m_p.horizons + 1)))
+            throw InputError("layered box: the thin layer needs a horizon below it and must be "
+                             "thinner than a layer");
+        if (m_p.fault && !(m_p.faultDipDegrees > 0 && m_p.faultDipDegrees <= 90))
+            throw InputError("layered box: the fault dip must be in (0, 90] degrees");
+        for (int f = 0; f < faultCount(); ++f)
+            if (!(faultX(f, 0.0) < s.x() && faultX(f, s.z()) > 0.0 && faultX(f, 0.0) > 0.0
+                  && faultX(f, s.z()) < s.x()))
+                throw InputError(
+                    "layered box: the fault must cross the box through its top and bottom faces");
         if (!m_p.fault && m_p.faultThrow > 0)
             throw InputError("layered box: a throw needs a fault");
     }
 
-    double room() const { return m_p.size.z() - m_p.foldAmplitude - (m_p.fault ? m_p.faultThrow : 0.0); }
+    int faultCount() const { return static_cast<int>(m_p.faultPositions.size()); }
+    // How far the horizons of fault block b are lowered: the throws of the faults west of it.
+    double offset(int block) const
+    {
+        double o = 0.0;
+        for (int f = 0; f < block; ++f)
+            o += m_p.faultThrows[f];
+        return o;
+    }
+    double room() const { return m_p.size.z() - m_p.foldAmplitude - offset(faultCount()); }
     double fold(double y) const { return m_p.foldAmplitude * std::sin(kPi * y / m_p.size.y()); }
     double levelZ(const Level &l, double y) const { return l.flat ? l.c : l.c + fold(y); }
 
     // The fault plane, dipping towards +x: x decreases upwards.
-    double faultX(double z) const
+    double faultX(int f, double z) const
     {
-        const double cot = m_p.faultDipDegrees == 90.0 ? 0.0 : 1.0 / std::tan(m_p.faultDipDegrees * kPi / 180.0);
-        return m_p.faultPosition * m_p.size.x() + (0.5 * m_p.size.z() - z) * cot;
+        const double cot =
+            m_p.faultDipDegrees == 90.0 ? 0.0 : 1.0 / std::tan(m_p.faultDipDegrees * kPi / 180.0);
+        return m_p.faultPositions[f] * m_p.size.x() + (0.5 * m_p.size.z() - z) * cot;
+    }
+    double westX(const Block &b, double z) const
+    {
+        return b.index == 0 ? 0.0 : faultX(b.index - 1, z);
+    }
+    double eastX(const Block &b, double z) const
+    {
+        return b.index == faultCount() ? m_p.size.x() : faultX(b.index, z);
     }
 
     void setUpLevels()
     {
         const double h = m_p.edgeLength;
-        const double throwZ = m_p.fault ? m_p.faultThrow : 0.0;
+        const double throwZ = offset(faultCount());
         std::vector<double> horizons;
         for (int i = 0; i < m_p.horizons; ++i)
             horizons.push_back(throwZ + room() * (i + 1) / (m_p.horizons + 1));
@@ -106,11 +150,9 @@ private:
 
         // Levels: bottom, top and every horizon of every block, merged when exactly equal.
         std::map<double, int> curved;
-        for (double c : horizons) {
-            curved[c] = 0;
-            if (m_p.fault)
-                curved[c - throwZ] = 0;
-        }
+        for (double c : horizons)
+            for (int b = 0; b <= faultCount(); ++b)
+                curved[c - offset(b)] = 0;
         m_levels.push_back({0.0, true});
         for (auto &[c, index] : curved) {
             index = static_cast<int>(m_levels.size());
@@ -150,34 +192,29 @@ private:
             }
             b.levels.push_back(static_cast<int>(m_levels.size()) - 1);
         };
-        if (m_p.fault) {
-            Block west{Side::West, steps(faultX(0.5 * m_p.size.z()), h), {}, {}, "_west"};
-            Block east{Side::East, steps(m_p.size.x() - faultX(0.5 * m_p.size.z()), h), {}, {}, "_east"};
-            blockLevels(0.0, west);
-            blockLevels(throwZ, east);
-            m_blocks = {west, east};
-        } else {
-            Block whole{Side::Whole, steps(m_p.size.x(), h), {}, {}, ""};
-            blockLevels(0.0, whole);
-            m_blocks = {whole};
+        const double mid = 0.5 * m_p.size.z();
+        for (int i = 0; i <= faultCount(); ++i) {
+            Block b;
+            b.index = i;
+            b.nx = steps(eastX(b, mid) - westX(b, mid), h);
+            b.suffix = faultCount() == 0   ? ""
+                       : faultCount() == 1 ? (i == 0 ? "_west" : "_east")
+                                           : "_b" + std::to_string(i);
+            blockLevels(offset(i), b);
+            m_blocks.push_back(b);
         }
     }
 
     Vec3 point(const Block &b, int k, int j, int s) const
     {
         const double z = m_z[j][s];
-        double x = 0.0;
-        switch (b.side) {
-        case Side::West: x = lerp(0.0, faultX(z), k, b.nx); break;
-        case Side::East: x = lerp(faultX(z), m_p.size.x(), k, b.nx); break;
-        case Side::Whole: x = lerp(0.0, m_p.size.x(), k, b.nx); break;
-        }
-        return {x, m_y[j], z};
+        return {lerp(westX(b, z), eastX(b, z), k, b.nx), m_y[j], z};
     }
 
     // A surface from the grid rectangle [u0, u1] × [v0, v1]; normals along ∂p/∂u × ∂p/∂v.
-    static int addPatch(Model &model, const std::string &name, const std::string &feature, FeatureType type,
-                        const std::function<Vec3(int, int)> &at, int u0, int u1, int v0, int v1)
+    static int addPatch(Model &model, const std::string &name, const std::string &feature,
+                        FeatureType type, const std::function<Vec3(int, int)> &at, int u0, int u1,
+                        int v0, int v1)
     {
         Surface s;
         s.name = name;
@@ -217,53 +254,65 @@ private:
             model.universe.push_back({surface, true});
         };
 
-        boxSide(0, addPatch(model, "box_bottom" + b.suffix, "box", box,
-                            [&](int u, int v) { return point(b, v, u, 0); }, 0, ny, 0, nx));
-        boxSide(layers - 1, addPatch(model, "box_top" + b.suffix, "box", box,
-                                     [&](int u, int v) { return point(b, u, v, top); }, 0, nx, 0, ny));
+        boxSide(0, addPatch(
+                       model, "box_bottom" + b.suffix, "box", box,
+                       [&](int u, int v) { return point(b, v, u, 0); }, 0, ny, 0, nx));
+        boxSide(layers - 1, addPatch(
+                                model, "box_top" + b.suffix, "box", box,
+                                [&](int u, int v) { return point(b, u, v, top); }, 0, nx, 0, ny));
         for (std::size_t i = 0; i < b.features.size(); ++i) {
             const int s = m_levelSample[b.levels[i + 1]];
             const std::string feature = "H" + std::to_string(b.features[i]);
-            const int surface = addPatch(model, feature + b.suffix, feature, FeatureType::Horizon,
-                                         [&](int u, int v) { return point(b, u, v, s); }, 0, nx, 0, ny);
+            const int surface = addPatch(
+                model, feature + b.suffix, feature, FeatureType::Horizon,
+                [&](int u, int v) { return point(b, u, v, s); }, 0, nx, 0, ny);
             side(i, surface, false); // normal up: the layer below is on its negative side
             side(i + 1, surface, true);
         }
         for (std::size_t l = 0; l < layers; ++l) {
             const int s0 = m_levelSample[b.levels[l]], s1 = m_levelSample[b.levels[l + 1]];
             const std::string n = std::to_string(l + 1) + b.suffix;
-            if (b.side != Side::East)
-                boxSide(l, addPatch(model, "box_west_" + n, "box", box,
-                                    [&](int u, int v) { return point(b, 0, v, u); }, s0, s1, 0, ny));
-            if (b.side != Side::West)
-                boxSide(l, addPatch(model, "box_east_" + n, "box", box,
-                                    [&](int u, int v) { return point(b, nx, u, v); }, 0, ny, s0, s1));
-            boxSide(l, addPatch(model, "box_south_" + n, "box", box,
-                                [&](int u, int v) { return point(b, u, 0, v); }, 0, nx, s0, s1));
-            boxSide(l, addPatch(model, "box_north_" + n, "box", box,
-                                [&](int u, int v) { return point(b, v, ny, u); }, s0, s1, 0, nx));
+            if (b.index == 0)
+                boxSide(l, addPatch(
+                               model, "box_west_" + n, "box", box,
+                               [&](int u, int v) { return point(b, 0, v, u); }, s0, s1, 0, ny));
+            if (b.index == faultCount())
+                boxSide(l, addPatch(
+                               model, "box_east_" + n, "box", box,
+                               [&](int u, int v) { return point(b, nx, u, v); }, 0, ny, s0, s1));
+            boxSide(l, addPatch(
+                           model, "box_south_" + n, "box", box,
+                           [&](int u, int v) { return point(b, u, 0, v); }, 0, nx, s0, s1));
+            boxSide(l, addPatch(
+                           model, "box_north_" + n, "box", box,
+                           [&](int u, int v) { return point(b, v, ny, u); }, s0, s1, 0, nx));
         }
     }
 
     // Fault patches between every level met by a horizon of either block; normal towards +x.
-    void addFault(Model &model)
+    void addFault(Model &model, int f)
     {
-        const Block &west = m_blocks[0];
-        const Block &east = m_blocks[1];
+        const Block &west = m_blocks[f];
+        const Block &east = m_blocks[f + 1];
+        const std::size_t layers = west.levels.size() - 1;
+        const std::string feature = "F" + std::to_string(f + 1);
         std::vector<int> cuts(west.levels);
         cuts.insert(cuts.end(), east.levels.begin(), east.levels.end());
         std::sort(cuts.begin(), cuts.end());
         cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
         auto layerOf = [](const Block &b, int level) {
-            return static_cast<std::size_t>(std::upper_bound(b.levels.begin(), b.levels.end(), level) - b.levels.begin()) - 1;
+            return static_cast<std::size_t>(
+                       std::upper_bound(b.levels.begin(), b.levels.end(), level) - b.levels.begin())
+                   - 1;
         };
         for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
             const int s0 = m_levelSample[cuts[i]], s1 = m_levelSample[cuts[i + 1]];
-            const int surface = addPatch(model, "F1_" + std::to_string(i + 1), "F1", FeatureType::Fault,
-                                         [&](int u, int v) { return point(west, west.nx, u, v); }, 0, m_ny, s0, s1);
+            const int surface = addPatch(
+                model, feature + "_" + std::to_string(i + 1), feature, FeatureType::Fault,
+                [&](int u, int v) { return point(west, west.nx, u, v); }, 0, m_ny, s0, s1);
             const std::size_t wl = layerOf(west, cuts[i]), el = layerOf(east, cuts[i]);
-            model.regions[wl].boundaries.push_back({surface, false});
-            model.regions[west.levels.size() - 1 + el].boundaries.push_back({surface, true});
+            model.regions[f * layers + wl].boundaries.push_back({surface, false});
+            model.regions[(f + 1) * layers + el].boundaries.push_back({surface, true});
         }
     }
 
@@ -291,7 +340,32 @@ private:
 
 } // namespace
 
-Model layeredBox(const LayeredBoxParams &params) { return LayeredBoxBuilder(params).build(); }
+Model layeredBox(const LayeredBoxParams &params)
+{
+    return LayeredBoxBuilder(params).build();
+}
+
+Model faultNetworkBox(int faults, double dipDegrees, int horizons, double throwUnit,
+                      double edgeLength)
+{
+    if (faults < 1 || faults > 10)
+        throw InputError("fault network box: between 1 and 10 faults");
+    LayeredBoxParams p;
+    const double cot = 1.0 / std::tan(dipDegrees * kPi / 180.0);
+    p.size = {(faults + 1) * (400.0 * cot + 4.0 * throwUnit + 2.0 * edgeLength), 1500.0, 400.0};
+    p.horizons = horizons;
+    p.foldAmplitude = 40.0;
+    p.faultDipDegrees = dipDegrees;
+    p.edgeLength = edgeLength;
+    const double throws[] = {0.3, 1.5, 0.6, 2.5};
+    for (int f = 0; f < faults; ++f) {
+        p.faultPositions.push_back((f + 1.0) / (faults + 1.0));
+        p.faultThrows.push_back(throws[f % 4] * throwUnit);
+    }
+    Model m = layeredBox(p);
+    m.name = "fault_network_" + std::to_string(faults);
+    return m;
+}
 
 Model sampleModel()
 {

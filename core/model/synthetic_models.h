@@ -23,6 +23,12 @@ struct LayeredBoxParams {
     double faultThrow = 0.0;       // ≥ 0, vertical offset of the +x block
     double thinLayerThickness = 0.0; // > 0 adds a horizon this far above the lowest one
     double edgeLength = 100.0;     // target triangle edge length
+    // A fault network: when not empty, these parallel faults (same dip, towards +x) replace the
+    // single fault above. Positions are where each crosses mid-height (fractions of size.x,
+    // increasing); each lowers everything east of it by its throw. Faults F1..Fn, fault blocks
+    // "_b0".."_bn" from the west.
+    std::vector<double> faultPositions;
+    std::vector<double> faultThrows;
 };
 
 // Surfaces: the box split into patches by the contacts (type Boundary, feature "box"), horizon
@@ -31,6 +37,13 @@ struct LayeredBoxParams {
 // Throws InputError when the parameters leave no room (a horizon would leave the box, the fault
 // would leave it, non-positive sizes or edge length).
 Model layeredBox(const LayeredBoxParams &params);
+
+// A training model like the industrial ones: `faults` (1..10) parallel low-dip normal faults
+// (dip in degrees) across a folded box 400 high with `horizons` horizons, throws cycling through
+// 0.3, 1.5, 0.6, 2.5 × throwUnit (choose throwUnit near the remesh edge length, so that some fault
+// strips are narrower than it and some wider); horizons are cut into faults + 1 pieces. The input
+// mesh has edges of about edgeLength.
+Model faultNetworkBox(int faults, double dipDegrees, int horizons, double throwUnit, double edgeLength);
 
 struct NestedSpheresParams {
     Vec3 centre = Vec3::Zero();
