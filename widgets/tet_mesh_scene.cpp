@@ -122,12 +122,6 @@ TetMeshScene::TetMeshScene(vtkRenderer *renderer)
     p->SetDiffuse(0.8);
     m_actor->PickableOff();
 
-    m_scalarBar->SetMaximumWidthInPixels(110);
-    m_scalarBar->SetMaximumHeightInPixels(300);
-    // On the left, names and figures right of the bar: they stay clear of the mesh in the middle.
-    m_scalarBar->SetPosition(0.02, 0.25);
-    m_scalarBar->SetWidth(0.12);
-    m_scalarBar->SetHeight(0.5);
     m_scalarBar->UnconstrainedFontSizeOn();
     styleText(m_scalarBar->GetTitleTextProperty(), 14);
     styleText(m_scalarBar->GetLabelTextProperty(), 12);
@@ -247,7 +241,15 @@ void TetMeshScene::applyColouring()
         m_scalarBar->SetLookupTable(table);
         m_scalarBar->SetTitle(m_regionTitle.c_str());
         m_scalarBar->SetNumberOfLabels(0);
-        m_scalarBar->SetTextPositionToPrecedeScalarBar(); // annotations go opposite the labels
+        // Names need width: a column on the left, names right of the swatches (annotations go
+        // opposite the labels).
+        m_scalarBar->SetOrientationToVertical();
+        m_scalarBar->SetTextPositionToPrecedeScalarBar();
+        m_scalarBar->SetMaximumWidthInPixels(110);
+        m_scalarBar->SetMaximumHeightInPixels(300);
+        m_scalarBar->SetPosition(0.02, 0.25);
+        m_scalarBar->SetWidth(0.12);
+        m_scalarBar->SetHeight(0.5);
     } else {
         // Slivers stand out in red; well-shaped tets are calm greens and blues, not alarms.
         vtkNew<vtkColorTransferFunction> colours;
@@ -264,7 +266,14 @@ void TetMeshScene::applyColouring()
         m_scalarBar->SetTitle(m_dihedralTitle.c_str());
         m_scalarBar->SetNumberOfLabels(8);
         m_scalarBar->SetLabelFormat("%.0f");
-        m_scalarBar->SetTextPositionToSucceedScalarBar();
+        // Short figures: a band along the bottom, below the mesh and right of the axes marker.
+        m_scalarBar->SetOrientationToHorizontal();
+        m_scalarBar->SetTextPositionToPrecedeScalarBar();
+        m_scalarBar->SetMaximumWidthInPixels(420);
+        m_scalarBar->SetMaximumHeightInPixels(80);
+        m_scalarBar->SetPosition(0.2, 0.02);
+        m_scalarBar->SetWidth(0.7);
+        m_scalarBar->SetHeight(0.14);
     }
     mapper->Modified();
 }
