@@ -277,6 +277,20 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     result.refinementRounds = rounds;
     result.timings.samplingSeconds = sampling;
     result.timings.totalSeconds = secondsSince(start);
+    // Whole-strip removal moves lines before the remesh; when refinement cannot make its
+    // result valid, the strips are kept and the run done again (their slivers beat an invalid model).
+    if (!result.validity.valid && params.stripWidthFactor > 0.0 && !result.strips.empty()
+        && params.refinementRounds > 0) {
+        RemeshParams keepStrips = params;
+        keepStrips.stripWidthFactor = 0.0;
+        RemeshResult again = remeshModel(input, keepStrips, progress);
+        if (again.validity.problems.size() < result.validity.problems.size()) {
+            again.timings.samplingSeconds += result.timings.samplingSeconds;
+            again.timings.meshSeconds += result.timings.meshSeconds;
+            again.timings.totalSeconds = secondsSince(start);
+            return again;
+        }
+    }
     return result;
 }
 
