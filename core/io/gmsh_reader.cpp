@@ -255,6 +255,10 @@ private:
             auto it = nodeIndex.find(tag);
             if (it == nodeIndex.end())
                 c.fail("element uses node " + std::to_string(tag) + ", which is not in $Nodes");
+            for (std::size_t i = e.firstNode; i < elementNodes.size(); ++i)
+                if (elementNodes[i] == it->second)
+                    c.fail(std::string("the ") + gmshTypeName(type) + " uses node "
+                           + std::to_string(tag) + " twice");
             elementNodes.push_back(it->second);
         }
         elements.push_back(e);

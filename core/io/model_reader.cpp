@@ -39,13 +39,21 @@ Model readModel(const std::string &path)
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw FileError(path, 0, "cannot open the file (missing or not a regular file)");
+    Model model;
     if (ext == ".ml" || ext == ".ts")
-        return readGocadFile(path);
-    if (ext == ".obj" || ext == ".off")
-        return readSurfaceMesh(path);
-    if (ext == ".gm")
-        return readRingMeshModel(path);
-    return readMeshAsModel(path); // volume meshes: their surfaces and regions, cells dropped
+        model = readGocadFile(path);
+    else if (ext == ".obj" || ext == ".off")
+        model = readSurfaceMesh(path);
+    else if (ext == ".gm")
+        model = readRingMeshModel(path);
+    else
+        model = readMeshAsModel(path); // volume meshes: their surfaces and regions, cells dropped
+    // An empty model would open as a "valid" one with nothing in it.
+    const bool empty = std::all_of(model.surfaces.begin(), model.surfaces.end(),
+                                   [](const Surface &s) { return s.triangles.empty(); });
+    if (empty)
+        throw FileError(path, 0, "the file holds no surface triangle (empty model)");
+    return model;
 }
 
 } // namespace stratamesh

@@ -78,19 +78,49 @@ Vec3 readPoint(const std::vector<std::string_view> &w, std::size_t first, const 
     return p;
 }
 
+// OpenMesh skips a face with a bad index after printing a warning; the scan names its line.
+// "v", "v/vt", "v//vn" and "v/vt/vn" forms; a negative index counts back from the last vertex
+// defined so far. Returns the index, a positive one to be checked once all vertices are known.
+long long checkObjIndex(std::string_view token, std::size_t vertices, const std::string &path,
+                        int line)
+{
+    const std::string_view index = token.substr(0, token.find('/'));
+    long long v = 0;
+    if (!parseInt(index, v))
+        throw FileError(path, line, "face vertex '" + std::string(token) + "' is not an index");
+    if (v == 0 || v < -static_cast<long long>(vertices))
+        throw FileError(path, line,
+                        "face uses vertex " + std::to_string(v)
+                            + " (numbered from 1, or back from -1)");
+    return v;
+}
+
 FileScan scanObj(std::istream &in, const std::string &path)
 {
     FileScan scan;
     std::string text;
+    std::pair<long long, int> largest{0, 0}; // the largest face index and its line
     for (int line = 1; std::getline(in, text); ++line) {
         const auto w = splitWords(content(text));
         if (w.empty())
             continue;
-        if (w[0] == "v")
+        if (w[0] == "v") {
             scan.points.push_back(readPoint(w, 1, path, line));
-        else if (w[0] == "f" && w.size() >= 4)
+        } else if (w[0] == "f") {
+            if (w.size() < 4)
+                throw FileError(path, line, "a face needs at least three vertices");
+            for (std::size_t k = 1; k < w.size(); ++k) {
+                const long long v = checkObjIndex(w[k], scan.points.size(), path, line);
+                if (v > largest.first)
+                    largest = {v, line};
+            }
             scan.triangles += w.size() - 3;
+        }
     }
+    if (largest.first > static_cast<long long>(scan.points.size()))
+        throw FileError(path, largest.second,
+                        "face uses vertex " + std::to_string(largest.first) + ", the file defines "
+                            + std::to_string(scan.points.size()));
     return scan;
 }
 
@@ -139,6 +169,17 @@ FileScan scanOff(std::istream &in, const std::string &path)
         long long k = 0;
         if (!parseInt(w[0], k) || k < 3)
             throw FileError(path, line, "a face needs at least three vertices");
+        if (k > static_cast<long long>(w.size()) - 1)
+            throw FileError(path, line,
+                            "a face of " + std::to_string(k) + " vertices lists "
+                                + std::to_string(w.size() - 1));
+        for (long long j = 1; j <= k; ++j) {
+            long long v = 0;
+            if (!parseInt(w[std::size_t(j)], v) || v < 0 || v >= nv)
+                throw FileError(path, line,
+                                "face vertex '" + std::string(w[std::size_t(j)])
+                                    + "' is not an index from 0 to " + std::to_string(nv - 1));
+        }
         scan.triangles += std::size_t(k - 2);
     }
     return scan;

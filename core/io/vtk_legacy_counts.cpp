@@ -122,6 +122,18 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
             }
         }
     }
+    // Declared counts that disagree with each other: named with their line before VTK reads.
+    auto agree = [&](const VtkLegacyCount &c, const VtkLegacyCount &with, const char *keyword,
+                     const char *what) {
+        if (c.value >= 0 && with.value >= 0 && c.value != with.value)
+            throw FileError(path, c.line,
+                            std::string(keyword) + " declares " + std::to_string(c.value)
+                                + " values, " + what + " at line " + std::to_string(with.line)
+                                + " declares " + std::to_string(with.value));
+    };
+    agree(counts.cellTypes, counts.cells, "CELL_TYPES", "CELLS");
+    agree(counts.cellData, counts.cells, "CELL_DATA", "the cell section");
+    agree(counts.pointData, counts.points, "POINT_DATA", "POINTS");
     return counts;
 }
 

@@ -6,6 +6,7 @@
 #include "io/vtk_common.h"
 #include "io/vtk_legacy_counts.h"
 #include "io/vtk_output_capture.h"
+#include "io/vtk_xml_counts.h"
 
 #include <vtkAbstractArray.h>
 #include <vtkCell.h>
@@ -162,6 +163,8 @@ VolumeMesh readVtk(const std::string &path)
         throw FileError(path, 0, "cannot open the file");
     const std::string ext = lowerExtension(path);
     vtkSmartPointer<vtkDataSet> data;
+    if (ext == ".vtu" || ext == ".vtp")
+        checkVtkXmlCounts(path);
     if (ext == ".vtu")
         data = runReader<vtkXMLUnstructuredGridReader>(path);
     else if (ext == ".vtp")
