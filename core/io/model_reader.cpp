@@ -52,7 +52,9 @@ Model readModel(const std::string &path)
     const bool empty = std::all_of(model.surfaces.begin(), model.surfaces.end(),
                                    [](const Surface &s) { return s.triangles.empty(); });
     if (empty)
-        throw FileError(path, 0, "the file holds no surface triangle (empty model)");
+        throw FileError(path, 0,
+                        "the file holds no surface triangle (an empty model; volume cells alone "
+                        "give no surface)");
     return model;
 }
 

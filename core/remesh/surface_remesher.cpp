@@ -209,6 +209,7 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     };
     result.refinementRounds = 0;
     RemeshResult best = result;
+    int idle = 0; // rounds since the last improvement
     const double baseSlivers = computeMeshStatistics(result.model).pctTrianglesAngleBelow30;
     for (;;) {
         const double spacing = edgeLengthForSites(area, static_cast<int>(sites.size()));
@@ -257,12 +258,18 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         const bool fixesValidity = again.validity.problems.size() < best.validity.problems.size();
         const bool keepsQuality = computeMeshStatistics(again.model).pctTrianglesAngleBelow30
                                   <= baseSlivers + params.refinementMaxQualityLoss;
-        if (score(again) < score(best) && (fixesValidity || keepsQuality)) {
+        const bool improved = score(again) < score(best) && (fixesValidity || keepsQuality);
+        if (improved) {
             best = again;
             best.siteCount = static_cast<int>(sites.size());
             best.refinementRounds = rounds;
         }
         result = std::move(again);
+        // A valid result that two more rounds did not improve is as good as refinement gets here
+        // (what is left are features far below the resolution): stop spending time.
+        idle = improved ? 0 : idle + 1;
+        if (idle >= 2 && best.validity.valid)
+            break;
     }
     result = std::move(best);
     rounds = result.refinementRounds;
