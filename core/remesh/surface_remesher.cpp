@@ -23,7 +23,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <string>
 
 namespace stratamesh {
 
@@ -67,6 +69,25 @@ std::vector<double> adaptiveDensity(const Model &model, const RemeshParams &para
             rho[v] = std::max(params.adaptiveFloor,
                               std::pow(1.0 - d[v] / dMax, params.adaptiveExponent));
     return rho;
+}
+
+std::string number(double v)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return text;
+}
+
+double bboxDiagonal(const Model &model)
+{
+    if (model.vertices.empty())
+        return 0.0;
+    Vec3 lo = model.vertices.front(), hi = lo;
+    for (const Vec3 &p : model.vertices) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    return (hi - lo).norm();
 }
 
 double modelArea(const Model &model)
@@ -146,7 +167,13 @@ int sitesForEdgeLength(double area, double edgeLength)
 {
     if (!(edgeLength > 0.0))
         throw InputError("remesh: the target edge length must be positive");
+    // In doubles: a small edge length on a large model gives more sites than an int holds.
     const double n = area / (std::sqrt(3.0) / 2.0 * edgeLength * edgeLength);
+    if (!(n <= kMaxRemeshSites))
+        throw InputError("remesh: an edge length of " + number(edgeLength) + " gives about "
+                         + number(n) + " sites, more than the " + std::to_string(kMaxRemeshSites)
+                         + " allowed; use an edge length of at least "
+                         + number(edgeLengthForSites(area, kMaxRemeshSites)));
     return std::max(4, static_cast<int>(std::lround(n)));
 }
 
@@ -181,6 +208,19 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         throw InputError("remesh: d_resolution cannot be negative");
     const double area = modelArea(input);
     const int n = params.sites > 0 ? params.sites : sitesForEdgeLength(area, params.edgeLength);
+    // Fewer sites than surfaces cannot give every surface a cell: the result would lose most of
+    // the model (modelA5 at 4 sites: 12 regions on 9 surfaces).
+    const int fewest = std::max(4, static_cast<int>(input.surfaces.size()));
+    if (n < fewest || n > kMaxRemeshSites)
+        throw InputError("remesh: " + std::to_string(n) + " sites is outside " + std::to_string(fewest) + ".."
+                         + std::to_string(kMaxRemeshSites) + " for this model of "
+                         + std::to_string(input.surfaces.size()) + " surfaces (edge length at most "
+                         + number(edgeLengthForSites(area, fewest)) + ")");
+    const double diagonal = bboxDiagonal(input);
+    if (params.dResolution > 0.1 * diagonal)
+        throw InputError("remesh: d_resolution " + number(params.dResolution)
+                         + " would merge features across a tenth of the model (bounding-box diagonal "
+                         + number(diagonal) + "); use at most " + number(0.1 * diagonal));
     SimplificationLedger ledger;
     const StripCollapse collapsed =
         stripsRemoved(input, edgeLengthForSites(area, n), params, ledger, progress);

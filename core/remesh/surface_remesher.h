@@ -94,7 +94,11 @@ struct TopologyEdits {
 };
 TopologyEdits countTopologyEdits(const SimplificationLedger &ledger);
 
-// Number of sites for a target edge length over a total surface area.
+// The most sites a remesh takes (the CLI's --sites cap as well).
+inline constexpr int kMaxRemeshSites = 10000000;
+
+// Number of sites for a target edge length over a total surface area (at least 4). Throws
+// InputError when the edge length is not positive or gives more than kMaxRemeshSites.
 int sitesForEdgeLength(double area, double edgeLength);
 // Its inverse: the edge length of a hexagonal packing of `sites` points over `area`.
 double edgeLengthForSites(double area, int sites);

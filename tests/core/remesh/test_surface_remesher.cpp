@@ -225,6 +225,18 @@ private slots:
         const Model input = recoverTopology(layeredBox(bp));
         QCOMPARE(sitesForEdgeLength(std::sqrt(3.0) / 2.0 * 100.0, 1.0), 100);
         QVERIFY_THROWS_EXCEPTION(InputError, sitesForEdgeLength(1.0, 0.0));
+        // An edge length that overflowed int (modelA1 at 0.6 ran with 4 sites) is refused.
+        QVERIFY_THROWS_EXCEPTION(InputError, sitesForEdgeLength(1e12, 0.6));
+        QCOMPARE(sitesForEdgeLength(std::sqrt(3.0) / 2.0 * kMaxRemeshSites, 1.0), kMaxRemeshSites);
+
+        // Parameters that make no sense for this model are refused before any work.
+        RemeshParams tooFew;
+        tooFew.sites = static_cast<int>(input.surfaces.size()) - 1;
+        QVERIFY_THROWS_EXCEPTION(InputError, remeshModel(input, tooFew));
+        RemeshParams tooCoarse;
+        tooCoarse.sites = 500;
+        tooCoarse.dResolution = 1000.0; // the box diagonal is about 1229
+        QVERIFY_THROWS_EXCEPTION(InputError, remeshModel(input, tooCoarse));
 
         RemeshParams params;
         params.edgeLength = 100;
