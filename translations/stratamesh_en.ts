@@ -925,6 +925,20 @@ angle (°)</source>
         <source>Tetrahedralisation cancelled</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source>The remeshed model is NOT valid: %n problem(s) left after local refinement; saving it is at your own risk</source>
+        <translation>
+            <numerusform>The remeshed model is NOT valid: %n problem left after local refinement; saving it is at your own risk</numerusform>
+            <numerusform>The remeshed model is NOT valid: %n problems left after local refinement; saving it is at your own risk</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed, NOT valid: %n problem(s) — see Messages</source>
+        <translation>
+            <numerusform>Remeshed, NOT valid: %n problem — see Messages</numerusform>
+            <numerusform>Remeshed, NOT valid: %n problems — see Messages</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>

@@ -927,6 +927,20 @@ min. (°)</translation>
         <source>Tetrahedralisation cancelled</source>
         <translation>Tétraédrisation annulée</translation>
     </message>
+    <message numerus="yes">
+        <source>The remeshed model is NOT valid: %n problem(s) left after local refinement; saving it is at your own risk</source>
+        <translation>
+            <numerusform>Le modèle remaillé n’est PAS valide : %n problème après le raffinement local ; l’enregistrer est à vos risques</numerusform>
+            <numerusform>Le modèle remaillé n’est PAS valide : %n problèmes après le raffinement local ; l’enregistrer est à vos risques</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed, NOT valid: %n problem(s) — see Messages</source>
+        <translation>
+            <numerusform>Remaillé, NON valide : %n problème — voir Messages</numerusform>
+            <numerusform>Remaillé, NON valide : %n problèmes — voir Messages</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>

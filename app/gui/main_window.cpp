@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "error_message.h"
+#include "validity_messages.h"
 #include "about_dialog.h"
 #include "cell_heat_map.h"
 #include "complexity_controller.h"
@@ -586,6 +587,22 @@ void MainWindow::onRemeshed(const RemeshOutcome &outcome)
                          QLocale().toString(outcome.milliseconds / 1000.0, 'f', 2),
                          QLocale().toString(qulonglong(outcome.output->triangleCount())));
     m_messages->addMessage(done);
+    if (!outcome.validity.valid) {
+        // Never announced as a plain success: a volume mesher would fail on it.
+        Message invalid;
+        invalid.severity = Message::Severity::Warning;
+        invalid.text = tr("The remeshed model is NOT valid: %n problem(s) left after local refinement; saving it "
+                          "is at your own risk",
+                          nullptr, int(outcome.validity.problems.size()));
+        m_messages->addMessage(invalid);
+        for (const Message &m : validityMessages(outcome.validity, QString()))
+            m_messages->addMessage(m);
+        m_messageDock->show();
+        m_messageDock->raise();
+        m_stageLabel->setText(tr("Remeshed, NOT valid: %n problem(s) — see Messages", nullptr,
+                                 int(outcome.validity.problems.size())));
+        return;
+    }
     m_stageLabel->setText(tr("Remeshed: %n simplification(s) — see Simplifications", nullptr,
                              int(outcome.ledger->size())));
 }

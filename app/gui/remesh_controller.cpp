@@ -51,6 +51,8 @@ void runRemesh(QPromise<RemeshRun> &promise, std::shared_ptr<const Model> input,
         o.comparison.output.meshSeconds = result.timings.meshSeconds;
         o.counts = countEntities(result.model);
         o.siteCount = result.siteCount;
+        o.initialSiteCount = result.initialSiteCount;
+        o.validity = result.validity;
         o.params = params;
         o.input = std::move(input);
         o.ledger = std::make_shared<const SimplificationLedger>(std::move(result.ledger));

@@ -24,6 +24,8 @@ struct RemeshOutcome {
     ModelCounts counts; // of the output, with and without the box
     RemeshParams params;
     int siteCount = 0;
+    int initialSiteCount = 0;  // asked for; siteCount includes the local refinement
+    ValidityReport validity;   // of the output: an invalid result is shown as such
     qint64 milliseconds = 0;
 };
 
