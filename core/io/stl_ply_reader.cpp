@@ -218,14 +218,36 @@ VolumeMesh readAsciiPly(const std::string &path)
     return m;
 }
 
-bool isAsciiPly(const std::string &path)
+// The format a PLY header states ("ascii", "binary_little_endian", "binary_big_endian"); OpenMesh
+// loops for a long time on a file whose header is not one, so it is checked first.
+std::string plyFormat(const std::string &path)
 {
-    std::ifstream in(path);
-    std::string line;
-    for (int i = 0; i < 3 && std::getline(in, line); ++i)
-        if (line.rfind("format ascii", 0) == 0)
-            return true;
-    return false;
+    std::ifstream in(path, std::ios::binary);
+    std::string line, format;
+    int number = 0;
+    auto next = [&] {
+        if (!std::getline(in, line))
+            return false;
+        ++number;
+        if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+        return true;
+    };
+    if (!next() || line != "ply")
+        throw FileError(path, 1, "not a PLY file: the first line is not \"ply\"");
+    while (next() && line != "end_header") {
+        if (line.rfind("format ", 0) != 0)
+            continue;
+        format = line.substr(7, line.find(' ', 7) == std::string::npos ? std::string::npos
+                                                                       : line.find(' ', 7) - 7);
+        if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
+            throw FileError(path, number, "unknown PLY format \"" + format + "\"");
+    }
+    if (line != "end_header")
+        throw FileError(path, number, "the PLY header has no end_header");
+    if (format.empty())
+        throw FileError(path, number, "the PLY header has no format line");
+    return format;
 }
 
 } // namespace
@@ -236,9 +258,9 @@ VolumeMesh readStlOrPly(const std::string &path)
         throw FileError(path, 0, "cannot open the file");
     std::string ext = path.substr(std::min(path.size(), path.find_last_of('.')));
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
-    VolumeMesh m = ext == ".stl"      ? readStl(path)
-                   : isAsciiPly(path) ? readAsciiPly(path)
-                                      : readWithOpenMesh(path);
+    VolumeMesh m = ext == ".stl"                ? readStl(path)
+                   : plyFormat(path) == "ascii" ? readAsciiPly(path)
+                                                : readWithOpenMesh(path);
     if (m.triangles.empty())
         throw FileError(path, 0, "no triangle in the file");
     try {

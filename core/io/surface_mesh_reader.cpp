@@ -156,6 +156,8 @@ FileScan scanOff(std::istream &in, const std::string &path)
         countsAt = 0;
     }
     long long nv = 0, nf = 0;
+    if (w.size() < countsAt + 2)
+        throw FileError(path, line, "expected the vertex and face counts");
     if (!parseInt(w[countsAt], nv) || !parseInt(w[countsAt + 1], nf) || nv < 0 || nf < 0)
         throw FileError(path, line, "invalid vertex and face counts");
     for (long long i = 0; i < nv; ++i) {

@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "io/number_text.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -58,6 +59,129 @@ private:
     long long m_size;
 };
 
+// The 4.2 cell list "npts id id ... npts id ...": VTK 9.1 walks it without checking that each
+// cell fits in the declared size, and crashes on a list that does not. Reads it (big-endian
+// int32 in a BINARY file) and checks that its cells use exactly `size` values.
+void checkCellList(std::istream &in, bool binary, long long cells, long long size,
+                   const std::string &path, int &line, const std::string &keyword)
+{
+    const int start = line;
+    std::vector<long long> values;
+    values.reserve(static_cast<std::size_t>(size));
+    if (binary) {
+        std::string bytes(static_cast<std::size_t>(size) * 4, '\0');
+        if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+            throw FileError(path, start, keyword + " data is cut short");
+        for (long long i = 0; i < size; ++i) {
+            const auto *b = reinterpret_cast<const unsigned char *>(bytes.data() + 4 * i);
+            values.push_back(
+                static_cast<std::int32_t>(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16
+                                          | std::uint32_t(b[2]) << 8 | std::uint32_t(b[3])));
+        }
+    } else {
+        std::string text;
+        while (static_cast<long long>(values.size()) < size) {
+            if (!std::getline(in, text))
+                throw FileError(path, line,
+                                keyword + " declares " + std::to_string(size)
+                                    + " values, the file ends after "
+                                    + std::to_string(values.size()));
+            ++line;
+            for (const std::string &w : words(text)) {
+                long long v = 0;
+                if (!parseInt(w, v))
+                    throw FileError(path, line, keyword + " value '" + w + "' is not an integer");
+                values.push_back(v);
+            }
+        }
+    }
+    long long at = 0;
+    for (long long c = 0; c < cells; ++c) {
+        const long long points = at < size ? values[static_cast<std::size_t>(at)] : -1;
+        if (points < 0 || at + 1 + points > size)
+            throw FileError(path, start,
+                            keyword + " declares " + std::to_string(size) + " values, cell "
+                                + std::to_string(c) + " (numbered from 0) runs past them");
+        at += 1 + points;
+    }
+    if (at != size)
+        throw FileError(path, start,
+                        keyword + " declares " + std::to_string(size) + " values, its "
+                            + std::to_string(cells) + " cells use " + std::to_string(at));
+}
+
+// Binary bytes of a damaged header as '?', so that the message stays one line of text.
+std::string printable(std::string text)
+{
+    for (char &c : text)
+        if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126)
+            c = '?';
+    return text;
+}
+
+// Bytes per value of a legacy type in a BINARY file; 0 for a type whose size varies.
+long long typeBytes(const std::string &type)
+{
+    if (type == "char" || type == "unsigned_char")
+        return 1;
+    if (type == "short" || type == "unsigned_short")
+        return 2;
+    if (type == "int" || type == "unsigned_int" || type == "float")
+        return 4;
+    if (type == "long" || type == "unsigned_long" || type == "double" || type == "vtkIdType"
+        || type == "vtktypeint64" || type == "vtktypeuint64")
+        return 8;
+    return 0;
+}
+
+// The arrays of a FIELD block, each "name components tuples type" then its values: VTK 9.1
+// reads a malformed header as sizes and goes on into memory it does not own. Skips the values.
+void checkFieldArrays(std::istream &in, bool binary, long long arrays, long long fileSize,
+                      const std::string &path, int &line)
+{
+    std::string text;
+    for (long long a = 0; a < arrays; ++a) {
+        do {
+            if (!std::getline(in, text))
+                throw FileError(path, line,
+                                "the file ends before FIELD array " + std::to_string(a + 1));
+            ++line;
+        } while (words(text).empty());
+        const std::vector<std::string> w = words(text);
+        long long components = 0, tuples = 0;
+        if (w.size() != 4 || !parseInt(w[1], components) || !parseInt(w[2], tuples)
+            || components < 0 || tuples < 0 || !isVtkTypeName(w[3]))
+            throw FileError(path, line,
+                            "FIELD array header \"" + printable(text.substr(0, 60))
+                                + "\" is not \"name components tuples type\"");
+        if (components > 0 && tuples > fileSize / components)
+            throw FileError(path, line,
+                            "array " + w[0] + " declares " + w[1] + " x " + w[2]
+                                + " values, more than the file of " + std::to_string(fileSize)
+                                + " bytes can hold");
+        const long long values = components * tuples;
+        if (binary) {
+            const long long bytes = typeBytes(w[3]);
+            if (bytes == 0)
+                return; // strings and bits: VTK checks them itself
+            in.ignore(static_cast<std::streamsize>(values * bytes));
+            if (!in)
+                throw FileError(path, line, "array " + w[0] + " is cut short");
+            std::getline(in, text); // the end of line after the values
+        } else if (w[3] == "string" || w[3] == "utf8_string") {
+            return;
+        } else {
+            long long read = 0;
+            while (read < values) {
+                if (!std::getline(in, text))
+                    throw FileError(path, line, "array " + w[0] + " is cut short");
+                ++line;
+                read += static_cast<long long>(words(text).size());
+            }
+        }
+    }
+}
+
 } // namespace
 
 VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
@@ -72,12 +196,15 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
     const Scanner scan(path, size);
     VtkLegacyCounts counts;
     bool version5 = false;
+    bool binary = false;
     std::string text;
     for (int line = 1; std::getline(in, text); ++line) {
         if (line == 1) {
             version5 = text.find("Version 5") != std::string::npos;
             continue;
         }
+        if (line == 3)
+            binary = text.rfind("BINARY", 0) == 0;
         const std::vector<std::string> w = words(text);
         if (w.empty())
             continue;
@@ -93,12 +220,17 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
         } else if (key == "CELLS" || key == "POLYGONS" || key == "LINES" || key == "VERTICES"
                    || key == "TRIANGLE_STRIPS") {
             // Version 5 declares offsets (cells + 1) and connectivity; 4.2 cells and their ids.
+            const int keyLine = line;
             long long n = scan.count(w, 1, 1, line);
-            scan.count(w, 2, 1, line);
+            const long long values = scan.count(w, 2, 1, line);
             if (version5)
                 n = n > 0 ? n - 1 : 0;
+            else
+                checkCellList(in, binary, n, values, path, line, key);
             counts.cells = {counts.cells.value < 0 ? n : counts.cells.value + n,
-                            counts.cells.line ? counts.cells.line : line};
+                            counts.cells.line ? counts.cells.line : keyLine};
+        } else if (key == "FIELD") {
+            checkFieldArrays(in, binary, scan.count(w, 2, 1, line), size, path, line);
         } else if (key == "CELL_TYPES") {
             counts.cellTypes = {scan.count(w, 1, 1, line), line};
         } else if (key == "CELL_DATA") {

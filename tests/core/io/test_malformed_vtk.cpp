@@ -124,8 +124,9 @@ private slots:
             readModel(path);
             QFAIL("read a file cut inside CELLS");
         } catch (const FileError &e) {
-            QCOMPARE(e.line(), 9);
-            QVERIFY2(QString(e.what()).contains("declares 1 cells, 0 were read"), e.what());
+            QCOMPARE(e.line(), 10);
+            QVERIFY2(QString(e.what()).contains("CELLS declares 4 values, the file ends after 3"),
+                     e.what());
         }
     }
 

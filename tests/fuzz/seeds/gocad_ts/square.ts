@@ -1,0 +1,12 @@
+GOCAD TSurf 1
+HEADER {
+name: square
+}
+TFACE
+VRTX 1 0 0 0
+VRTX 2 1 0 0
+VRTX 3 1 1 0
+VRTX 4 0 1 0.5
+TRGL 1 2 3
+TRGL 1 3 4
+END
