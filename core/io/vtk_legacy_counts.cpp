@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "io/number_text.h"
 
+#include <cctype>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -110,11 +111,20 @@ void checkCellList(std::istream &in, bool binary, long long cells, long long siz
                             + std::to_string(cells) + " cells use " + std::to_string(at));
 }
 
+const char *const keywords[] = {"DATASET",      "POINTS",          "CELLS",
+                                "CELL_TYPES",   "POLYGONS",        "LINES",
+                                "VERTICES",     "TRIANGLE_STRIPS", "CELL_DATA",
+                                "POINT_DATA",   "FIELD",           "SCALARS",
+                                "VECTORS",      "NORMALS",         "TENSORS",
+                                "LOOKUP_TABLE", "COLOR_SCALARS",   "TEXTURE_COORDINATES",
+                                "METADATA",     "GLOBAL_IDS",      "PEDIGREE_IDS"};
+
 // Binary bytes of a damaged header as '?', so that the message stays one line of text.
 std::string printable(std::string text)
 {
     for (char &c : text)
-        if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126)
+        if ((static_cast<unsigned char>(c) < 32 && c != '\t' && c != '\r')
+            || static_cast<unsigned char>(c) > 126)
             c = '?';
     return text;
 }
@@ -149,8 +159,8 @@ void checkFieldArrays(std::istream &in, bool binary, long long arrays, long long
         } while (words(text).empty());
         const std::vector<std::string> w = words(text);
         long long components = 0, tuples = 0;
-        if (w.size() != 4 || !parseInt(w[1], components) || !parseInt(w[2], tuples)
-            || components < 0 || tuples < 0 || !isVtkTypeName(w[3]))
+        if (w.size() != 4 || printable(text) != text || !parseInt(w[1], components)
+            || !parseInt(w[2], tuples) || components < 0 || tuples < 0 || !isVtkTypeName(w[3]))
             throw FileError(path, line,
                             "FIELD array header \"" + printable(text.substr(0, 60))
                                 + "\" is not \"name components tuples type\"");
@@ -167,7 +177,8 @@ void checkFieldArrays(std::istream &in, bool binary, long long arrays, long long
             in.ignore(static_cast<std::streamsize>(values * bytes));
             if (!in)
                 throw FileError(path, line, "array " + w[0] + " is cut short");
-            std::getline(in, text); // the end of line after the values
+            if (in.peek() == '\n')
+                in.get();
         } else if (w[3] == "string" || w[3] == "utf8_string") {
             return;
         } else {
@@ -208,7 +219,15 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
         const std::vector<std::string> w = words(text);
         if (w.empty())
             continue;
-        const std::string &key = w[0];
+        // VTK matches keywords by a case-blind prefix ("FIELD\xa0x" is FIELD to it): so do we,
+        // and a keyword glued to other bytes is refused rather than read two ways.
+        std::string key = w[0];
+        for (char &c : key)
+            c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        for (const char *keyword : keywords)
+            if (key.rfind(keyword, 0) == 0 && key != keyword)
+                throw FileError(path, line,
+                                "\"" + printable(w[0].substr(0, 40)) + "\" is not a VTK keyword");
         if (key == "DATASET") {
             if (w.size() < 2 || (w[1] != "UNSTRUCTURED_GRID" && w[1] != "POLYDATA"))
                 throw FileError(
@@ -230,6 +249,11 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
             counts.cells = {counts.cells.value < 0 ? n : counts.cells.value + n,
                             counts.cells.line ? counts.cells.line : keyLine};
         } else if (key == "FIELD") {
+            // VTK reads the name and count with >>, whatever bytes they hold.
+            if (w.size() != 3 || printable(text) != text)
+                throw FileError(path, line,
+                                "a FIELD line is \"FIELD name arrays\", found \""
+                                    + printable(text.substr(0, 60)) + "\"");
             checkFieldArrays(in, binary, scan.count(w, 2, 1, line), size, path, line);
         } else if (key == "CELL_TYPES") {
             counts.cellTypes = {scan.count(w, 1, 1, line), line};

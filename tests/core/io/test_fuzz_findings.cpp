@@ -269,6 +269,61 @@ const char vtuHugeBlock[] =
     "  </UnstructuredGrid>\012"
     "</VTKFile>\012";
 
+// fuzz_vtk_legacy: a FIELD line of five words with binary bytes in its name (VTK 9.1 SEGV).
+const char vtkFieldLineGarbled[] =
+    "# vtk DataFile Version 4.2\012"
+    "vtk output\012"
+    "BINARY\012"
+    "DATASET UNSTRUCTURED_GRID\012"
+    "FIELD \003\000\000\000\002\000\000\000\000\000\000\000\001\000\000es 1 0 unsigned"
+    "_char\012"
+    "\012"
+    "SrfaceNames 1 7 unsigned_char\012"
+    "square\012"
+    "SurfaceId 1 6 int\012"
+    "\000\000\000\000\000\000\000\000\377\377\377\377\377\377\377\377\377\377\377\377\377"
+    "\377\377\377\377\012"
+    "LineId 1 6 int\012"
+    "\377\377\377\377\377\377\377\377\000\000\000\000\000\000\000\000\000\000\000\000\000"
+    "\000\000\000\012"
+    "CellType 1 6 unsigned_char\012"
+    "\005\005\003\003\003\003\012";
+
+// fuzz_vtk_legacy: "FIELD\240FieldData 7", which VTK takes for FIELD by its prefix (VTK 9.1 SEGV).
+const char vtkFieldKeywordGlued[] =
+    "# vtk DataFile Version 4.2\012"
+    "vtk output\012"
+    "BINARY\012"
+    "DATASET UNSTRUCTURED_GRID\012"
+    "FIELD\240FieldData 7\012"
+    "MeshName 1 7 unsigned_char\012"
+    "square\012"
+    "\012"
+    "ZPositiveDepth 1 1 ed_char\012"
+    "\012"
+    "SrfaceNames 1 7 unsigned_char\012"
+    "\012"
+    "SrfaceNames 1 7 unsigned_char\012"
+    "square\012"
+    "\012"
+    "SurfaceFeatures 1 7 unsigned_char\012"
+    "square\012"
+    "\012"
+    "SurfaceTypes 1 8 unsigned_char\012"
+    "unknown\012"
+    "\012"
+    "LineNames 0 7 unsigned_char\012"
+    "line_0\012"
+    "\012"
+    "POINTS 4 double\012"
+    "\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000"
+    "\000\000\000\077\360\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000\000"
+    "\000\000\000\000\000\000\077_char\012"
+    "unknown\012"
+    "\012"
+    "Lined_char\012"
+    "\005\005\003\003\003\003\012";
+
 QByteArray bytes(const char *data, std::size_t size)
 {
     return QByteArray(data, int(size) - 1);
@@ -288,6 +343,10 @@ private slots:
             << "a.off" << bytes(offCountsShort, sizeof offCountsShort);
         QTest::newRow("vtk field header cut")
             << "a.vtk" << bytes(vtkFieldHeaderCut, sizeof vtkFieldHeaderCut);
+        QTest::newRow("vtk field line garbled")
+            << "b.vtk" << bytes(vtkFieldLineGarbled, sizeof vtkFieldLineGarbled);
+        QTest::newRow("vtk field keyword glued")
+            << "c.vtk" << bytes(vtkFieldKeywordGlued, sizeof vtkFieldKeywordGlued);
         QTest::newRow("ply garbled header")
             << "a.ply" << bytes(plyGarbledHeader, sizeof plyGarbledHeader);
         QTest::newRow("vtu damaged array")
