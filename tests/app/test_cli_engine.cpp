@@ -176,9 +176,21 @@ private slots:
         const QJsonObject edits = again[QStringLiteral("topology_edits")].toObject();
         int sum = 0;
         for (const char *k : {"surfaces_lost", "surfaces_created", "lines_lost", "lines_created", "corners_lost",
-                              "corners_created"})
+                              "corners_created", "surface_parts_lost", "surface_parts_created"})
             sum += edits[QLatin1String(k)].toInt(-1000);
         QCOMPARE(edits[QStringLiteral("total")].toInt(), sum);
+        // The ledger adds up: input - lost + created = output for surfaces, lines and corners.
+        const QJsonObject balance = again[QStringLiteral("ledger_balance")].toObject();
+        QVERIFY(balance[QStringLiteral("balanced")].toBool());
+        for (const char *k : {"surfaces", "lines", "corners"}) {
+            const QJsonObject e = balance[QLatin1String(k)].toObject();
+            QCOMPARE(e[QStringLiteral("input")].toInt() - e[QStringLiteral("lost")].toInt()
+                         + e[QStringLiteral("created")].toInt(),
+                     e[QStringLiteral("output")].toInt());
+            QCOMPARE(e[QStringLiteral("output")].toInt(),
+                     again[QStringLiteral("output")][QStringLiteral("counts")][QStringLiteral("all")][QLatin1String(k)]
+                         .toInt());
+        }
     }
 
     void remeshRefusesUnknownOutputFormat()
