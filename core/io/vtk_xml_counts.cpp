@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <set>
 
 namespace stratamesh {
 
@@ -83,6 +84,17 @@ void checkCompressionHeaders(const std::string &path, const std::string &text, l
                                 + std::to_string(blocks) + " blocks of " + std::to_string(blockSize)
                                 + " bytes, the last of " + std::to_string(last) + ", in a file of "
                                 + std::to_string(size) + " bytes");
+        // Each block's compressed size is read (allocated) as stated: none exceeds the file.
+        const std::string all = decodeBase64Prefix(text, close + 1, (3 + blocks) * width);
+        if (all.size() < (3 + blocks) * width)
+            throw FileError(path, line, "the header of a compressed array is cut short");
+        for (unsigned long long b = 0; b < blocks; ++b)
+            if (headerValue(all, 3 + b, width, bigEndian) > limit)
+                throw FileError(path, line,
+                                "block " + std::to_string(b + 1) + " of a compressed array states "
+                                    + std::to_string(headerValue(all, 3 + b, width, bigEndian))
+                                    + " compressed bytes, more than the file of "
+                                    + std::to_string(size) + " bytes");
     }
 }
 
@@ -125,6 +137,24 @@ void checkVtkXmlCounts(const std::string &path)
         }
     }
     checkCompressionHeaders(path, text, size);
+    // VTK 9.1 dereferences the array it could not make for an unknown type.
+    static const std::set<std::string> types{
+        "Int8",    "UInt8",   "Int16",  "UInt16", "Int32", "UInt32", "Int64",  "UInt64",
+        "Float32", "Float64", "String", "Bit",    "Char",  "Float",  "Double", "IdType"};
+    for (std::size_t at = text.find("<DataArray"); at != std::string::npos;
+         at = text.find("<DataArray", at + 1)) {
+        const std::string tag = text.substr(at, text.find('>', at) - at);
+        const std::size_t type = tag.find(" type=\"");
+        const std::string name = type == std::string::npos
+                                     ? std::string()
+                                     : tag.substr(type + 7, tag.find('"', type + 7) - type - 7);
+        if (types.count(name) == 0) {
+            const int line =
+                1 + static_cast<int>(std::count(text.begin(), text.begin() + long(at), '\n'));
+            throw FileError(path, line,
+                            "a DataArray has type \"" + name + "\", which is not a VTK type");
+        }
+    }
 }
 
 } // namespace stratamesh
