@@ -249,7 +249,6 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     };
     result.refinementRounds = 0;
     RemeshResult best = result;
-    int idle = 0; // rounds since the last improvement
     const double baseSlivers = computeMeshStatistics(result.model).pctTrianglesAngleBelow30;
     for (;;) {
         const double spacing = edgeLengthForSites(area, static_cast<int>(sites.size()));
@@ -305,11 +304,6 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
             best.refinementRounds = rounds;
         }
         result = std::move(again);
-        // A valid result that two more rounds did not improve is as good as refinement gets here
-        // (what is left are features far below the resolution): stop spending time.
-        idle = improved ? 0 : idle + 1;
-        if (idle >= 2 && best.validity.valid)
-            break;
     }
     result = std::move(best);
     rounds = result.refinementRounds;
