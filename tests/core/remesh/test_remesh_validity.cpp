@@ -186,8 +186,10 @@ private slots:
         QCOMPARE(r.initialSiteCount, sites);
         QVERIFY(r.siteCount >= sites);
         QVERIFY(r.siteCount <= 2 * sites + 4 * sites); // growth cap plus the validity rounds
-        QVERIFY2(edits <= plainEdits,
-                 qPrintable(QStringLiteral("%1 > %2").arg(edits).arg(plainEdits)));
+        // Refinement never trades topology away, except to make an invalid remesh valid.
+        if (plain.validity.valid)
+            QVERIFY2(edits <= plainEdits,
+                     qPrintable(QStringLiteral("%1 > %2").arg(edits).arg(plainEdits)));
 
         // TetGen agrees: nothing to report, and every region gets tets.
         QTemporaryDir dir;
