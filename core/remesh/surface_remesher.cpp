@@ -276,8 +276,12 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         raiseDensity(domain, targets, radius, params.refinementDensityFactor, density);
         const int near = std::max(4, sitesNearTargets(sites, targets, radius));
         int extra = static_cast<int>(std::lround((params.refinementDensityFactor - 1.0) * near));
-        if (invalid.empty())
-            extra = std::min(extra, room);
+        // Topology places share the growth cap; places that are not valid get at most as many
+        // sites again (an 8-fault network doubled its sites every round to 15 GB without it).
+        extra = std::min(extra, std::max(room, 0) + (invalid.empty() ? 0 : n));
+        extra = std::min(extra, 3 * n - static_cast<int>(sites.size()));
+        if (extra <= 0)
+            break;
         const std::vector<Vec3> added =
             sampleNearTargets(domain, targets, radius, extra, params.seed + 7919u * (rounds + 1));
         if (added.empty())
