@@ -19,7 +19,8 @@ namespace stratamesh {
 
 CellHeatMap::CellHeatMap(vtkRenderer *renderer)
     : m_renderer(renderer), m_polyData(vtkSmartPointer<vtkPolyData>::New()),
-      m_lookupTable(vtkSmartPointer<vtkLookupTable>::New()), m_actor(vtkSmartPointer<vtkActor>::New()),
+      m_lookupTable(vtkSmartPointer<vtkLookupTable>::New()),
+      m_actor(vtkSmartPointer<vtkActor>::New()),
       m_scalarBar(vtkSmartPointer<vtkScalarBarActor>::New())
 {
     // Blue (few elements) to red (many), as the thesis figure.
@@ -70,7 +71,8 @@ CellHeatMap::~CellHeatMap()
     m_renderer->RemoveViewProp(m_scalarBar);
 }
 
-void CellHeatMap::setCells(std::shared_ptr<const std::vector<ConvexPolyhedron>> cells, std::vector<int> counts)
+void CellHeatMap::setCells(std::shared_ptr<const std::vector<ConvexPolyhedron>> cells,
+                           std::vector<int> counts)
 {
     if (cells && cells->size() != counts.size())
         cells = nullptr;
@@ -101,13 +103,25 @@ void CellHeatMap::setVisible(bool visible)
     m_scalarBar->SetVisibility(m_visible && m_cells);
 }
 
-vtkPolyData *CellHeatMap::polyData() const { return m_polyData; }
+vtkPolyData *CellHeatMap::polyData() const
+{
+    return m_polyData;
+}
 
-vtkActor *CellHeatMap::actor() const { return m_actor; }
+vtkActor *CellHeatMap::actor() const
+{
+    return m_actor;
+}
 
-vtkScalarBarActor *CellHeatMap::scalarBar() const { return m_scalarBar; }
+vtkScalarBarActor *CellHeatMap::scalarBar() const
+{
+    return m_scalarBar;
+}
 
-void CellHeatMap::setTitle(const char *title) { m_scalarBar->SetTitle(title); }
+void CellHeatMap::setTitle(const char *title)
+{
+    m_scalarBar->SetTitle(title);
+}
 
 void CellHeatMap::rebuild()
 {
@@ -122,7 +136,9 @@ void CellHeatMap::rebuild()
     if (m_cells) {
         const std::vector<ConvexPolyhedron> &cells = *m_cells;
         const int n = int(cells.size());
-        const auto shown = [&](int i) { return i >= 0 && i < n && m_counts[i] >= m_threshold && !cells[i].empty(); };
+        const auto shown = [&](int i) {
+            return i >= 0 && i < n && m_counts[i] >= m_threshold && !cells[i].empty();
+        };
         for (int i = 0; i < n; ++i) {
             if (!shown(i))
                 continue;

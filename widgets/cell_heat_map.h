@@ -28,7 +28,8 @@ public:
     CellHeatMap &operator=(const CellHeatMap &) = delete;
 
     // counts[i] belongs to cells[i]; the cells are kept alive. nullptr clears.
-    void setCells(std::shared_ptr<const std::vector<ConvexPolyhedron>> cells, std::vector<int> counts);
+    void setCells(std::shared_ptr<const std::vector<ConvexPolyhedron>> cells,
+                  std::vector<int> counts);
     void clear() { setCells(nullptr, {}); }
     bool hasCells() const { return m_cells != nullptr; }
 

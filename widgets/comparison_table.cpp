@@ -13,8 +13,9 @@
 namespace stratamesh {
 
 ComparisonTable::ComparisonTable(QWidget *parent)
-    : QWidget(parent), m_table(new QTableWidget(RowCount, ColumnCount, this)), m_caption(new QLabel(this)),
-      m_charts(new QTabWidget(this)), m_minAngle(new HistogramChart(this)), m_quality(new HistogramChart(this))
+    : QWidget(parent), m_table(new QTableWidget(RowCount, ColumnCount, this)),
+      m_caption(new QLabel(this)), m_charts(new QTabWidget(this)),
+      m_minAngle(new HistogramChart(this)), m_quality(new HistogramChart(this))
 {
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
@@ -47,13 +48,17 @@ void ComparisonTable::setComparison(std::optional<ModelComparison> comparison)
 
 QSize ComparisonTable::sizeHint() const
 {
-    const int figures = m_table->fontMetrics().horizontalAdvance(QStringLiteral("000 000 000")) + 12;
-    const int width = m_table->verticalHeader()->sizeHint().width() + ColumnCount * figures +
-                      2 * m_table->frameWidth() + 2 * layout()->contentsMargins().left();
+    const int figures =
+        m_table->fontMetrics().horizontalAdvance(QStringLiteral("000 000 000")) + 12;
+    const int width = m_table->verticalHeader()->sizeHint().width() + ColumnCount * figures
+                      + 2 * m_table->frameWidth() + 2 * layout()->contentsMargins().left();
     return {width, QWidget::sizeHint().height()};
 }
 
-QString ComparisonTable::cellText(Row row, Column column) const { return m_table->item(row, column)->text(); }
+QString ComparisonTable::cellText(Row row, Column column) const
+{
+    return m_table->item(row, column)->text();
+}
 
 void ComparisonTable::changeEvent(QEvent *event)
 {
@@ -65,10 +70,10 @@ void ComparisonTable::changeEvent(QEvent *event)
 void ComparisonTable::retranslate()
 {
     m_table->setHorizontalHeaderLabels({tr("Input"), tr("Output")});
-    m_table->setVerticalHeaderLabels({tr("Vertices"), tr("Triangles"), tr("Surfaces"), tr("Lines"), tr("Corners"),
-                                      tr("Min angle (°)"), tr("Angle < 30° (% triangles)"),
-                                      tr("Mean quality Q"), tr("Hausdorff (% bbox diagonal)"),
-                                      tr("Sampling time (s)"), tr("Mesh building time (s)")});
+    m_table->setVerticalHeaderLabels(
+        {tr("Vertices"), tr("Triangles"), tr("Surfaces"), tr("Lines"), tr("Corners"),
+         tr("Min angle (°)"), tr("Angle < 30° (% triangles)"), tr("Mean quality Q"),
+         tr("Hausdorff (% bbox diagonal)"), tr("Sampling time (s)"), tr("Mesh building time (s)")});
     m_charts->setTabText(0, tr("Min angle (% of triangles)"));
     m_charts->setTabText(1, tr("Quality Q (% of triangles)"));
     m_caption->setText(tr("As thesis Table 4.2: entities counted without the box; Q is 1 for an "
@@ -79,15 +84,17 @@ void ComparisonTable::retranslate()
 void ComparisonTable::fill()
 {
     const QLocale locale;
-    const auto set = [this](int row, int column, const QString &text) { m_table->item(row, column)->setText(text); };
+    const auto set = [this](int row, int column, const QString &text) {
+        m_table->item(row, column)->setText(text);
+    };
     // The table shows all its rows and takes no more room: the charts get the rest.
-    m_table->setFixedHeight(m_table->horizontalHeader()->sizeHint().height() + m_table->verticalHeader()->length() +
-                            2 * m_table->frameWidth() + 2);
+    m_table->setFixedHeight(m_table->horizontalHeader()->sizeHint().height()
+                            + m_table->verticalHeader()->length() + 2 * m_table->frameWidth() + 2);
     if (m_comparison) {
         m_minAngle->setHistograms(QString(), m_comparison->inputMinAngle,
                                   m_comparison->outputMinAngle, 0);
-        m_quality->setHistograms(QString(), m_comparison->inputQuality,
-                                 m_comparison->outputQuality, 2);
+        m_quality->setHistograms(QString(), m_comparison->inputQuality, m_comparison->outputQuality,
+                                 2);
     } else {
         m_minAngle->setHistograms(QString(), std::nullopt, std::nullopt, 0);
         m_quality->setHistograms(QString(), std::nullopt, std::nullopt, 0);
@@ -110,10 +117,12 @@ void ComparisonTable::fill()
         set(MinAngleRow, c, locale.toString(row.mesh.minAngleDeg, 'f', 2));
         set(Below30Row, c, locale.toString(row.mesh.pctTrianglesAngleBelow30, 'f', 1));
         set(MeanQualityRow, c, locale.toString(row.mesh.meanQuality, 'f', 3));
-        set(HausdorffRow, c, row.hausdorffPctBbox < 0.0 ? QStringLiteral("—")
-                                                         : locale.toString(row.hausdorffPctBbox, 'f', 3));
+        set(HausdorffRow, c,
+            row.hausdorffPctBbox < 0.0 ? QStringLiteral("—")
+                                       : locale.toString(row.hausdorffPctBbox, 'f', 3));
         const bool input = c == InputColumn;
-        set(SamplingTimeRow, c, input ? QStringLiteral("—") : locale.toString(row.samplingSeconds, 'f', 2));
+        set(SamplingTimeRow, c,
+            input ? QStringLiteral("—") : locale.toString(row.samplingSeconds, 'f', 2));
         set(MeshTimeRow, c, input ? QStringLiteral("—") : locale.toString(row.meshSeconds, 'f', 2));
     }
 }

@@ -22,8 +22,18 @@ class ComparisonTable : public QWidget {
     Q_OBJECT
 public:
     enum Row {
-        VerticesRow, TrianglesRow, SurfacesRow, LinesRow, CornersRow, MinAngleRow, Below30Row, MeanQualityRow,
-        HausdorffRow, SamplingTimeRow, MeshTimeRow, RowCount
+        VerticesRow,
+        TrianglesRow,
+        SurfacesRow,
+        LinesRow,
+        CornersRow,
+        MinAngleRow,
+        Below30Row,
+        MeanQualityRow,
+        HausdorffRow,
+        SamplingTimeRow,
+        MeshTimeRow,
+        RowCount
     };
     enum Column { InputColumn, OutputColumn, ColumnCount };
 

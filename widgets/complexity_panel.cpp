@@ -38,18 +38,19 @@ QTableWidget *makeTable(int rows, int columns, QWidget *parent)
 // All rows shown, no more room taken.
 void fitHeight(QTableWidget *table)
 {
-    const int header = table->horizontalHeader()->isHidden() ? 0 : table->horizontalHeader()->sizeHint().height();
-    table->setFixedHeight(header + table->verticalHeader()->length() +
-                          2 * table->frameWidth() + 2);
+    const int header =
+        table->horizontalHeader()->isHidden() ? 0 : table->horizontalHeader()->sizeHint().height();
+    table->setFixedHeight(header + table->verticalHeader()->length() + 2 * table->frameWidth() + 2);
 }
 
 } // namespace
 
 ComplexityPanel::ComplexityPanel(QWidget *parent)
     : QWidget(parent), m_globalCaption(new QLabel(this)),
-      m_global(makeTable(GlobalRowCount, GlobalColumnCount, this)), m_localCaption(new QLabel(this)),
-      m_local(makeTable(LocalRowCount, 1, this)), m_showHeatMap(new QCheckBox(this)),
-      m_thresholdLabel(new QLabel(this)), m_threshold(new QSpinBox(this)), m_shown(new QLabel(this))
+      m_global(makeTable(GlobalRowCount, GlobalColumnCount, this)),
+      m_localCaption(new QLabel(this)), m_local(makeTable(LocalRowCount, 1, this)),
+      m_showHeatMap(new QCheckBox(this)), m_thresholdLabel(new QLabel(this)),
+      m_threshold(new QSpinBox(this)), m_shown(new QLabel(this))
 {
     m_globalCaption->setWordWrap(true);
     m_localCaption->setWordWrap(true);
@@ -88,7 +89,8 @@ ComplexityPanel::ComplexityPanel(QWidget *parent)
     retranslate();
 }
 
-void ComplexityPanel::setReport(std::optional<ComplexityReport> report, const ComplexityParams &params)
+void ComplexityPanel::setReport(std::optional<ComplexityReport> report,
+                                const ComplexityParams &params)
 {
     m_report = std::move(report);
     m_params = params;
@@ -100,29 +102,46 @@ QString ComplexityPanel::globalText(GlobalRow row, GlobalColumn column) const
     return m_global->item(row, column)->text();
 }
 
-QString ComplexityPanel::localText(LocalRow row) const { return m_local->item(row, 0)->text(); }
+QString ComplexityPanel::localText(LocalRow row) const
+{
+    return m_local->item(row, 0)->text();
+}
 
-int ComplexityPanel::threshold() const { return m_threshold->value(); }
+int ComplexityPanel::threshold() const
+{
+    return m_threshold->value();
+}
 
-void ComplexityPanel::setThreshold(int threshold) { m_threshold->setValue(threshold); }
+void ComplexityPanel::setThreshold(int threshold)
+{
+    m_threshold->setValue(threshold);
+}
 
-bool ComplexityPanel::heatMapVisible() const { return m_showHeatMap->isChecked(); }
+bool ComplexityPanel::heatMapVisible() const
+{
+    return m_showHeatMap->isChecked();
+}
 
-void ComplexityPanel::setHeatMapVisible(bool visible) { m_showHeatMap->setChecked(visible); }
+void ComplexityPanel::setHeatMapVisible(bool visible)
+{
+    m_showHeatMap->setChecked(visible);
+}
 
 void ComplexityPanel::setShownCells(int shown, int total)
 {
     m_shownCells = shown;
     m_totalCells = total;
-    m_shown->setText(m_report ? tr("%1 of %2 cells drawn").arg(QLocale().toString(shown), QLocale().toString(total))
-                              : QString());
+    m_shown->setText(
+        m_report
+            ? tr("%1 of %2 cells drawn").arg(QLocale().toString(shown), QLocale().toString(total))
+            : QString());
 }
 
 QSize ComplexityPanel::sizeHint() const
 {
     const int figures = m_global->fontMetrics().horizontalAdvance(QStringLiteral("00000.00")) + 12;
-    const int width = m_global->verticalHeader()->sizeHint().width() + GlobalColumnCount * figures +
-                      2 * m_global->frameWidth() + 8;
+    const int width = m_global->verticalHeader()->sizeHint().width() + GlobalColumnCount * figures
+                      + 2 * m_global->frameWidth() + 8;
     return {width, QWidget::sizeHint().height()};
 }
 
@@ -135,19 +154,23 @@ void ComplexityPanel::changeEvent(QEvent *event)
 
 void ComplexityPanel::retranslate()
 {
-    m_global->setHorizontalHeaderLabels({tr("Regions"), tr("Surfaces"), tr("Lines"), tr("Corners"), tr("Total")});
+    m_global->setHorizontalHeaderLabels(
+        {tr("Regions"), tr("Surfaces"), tr("Lines"), tr("Corners"), tr("Total")});
     m_global->setVerticalHeaderLabels({tr("Count"), tr("Geometric"), tr("Size var. coeff.")});
-    m_global->verticalHeaderItem(CountsRow)->setToolTip(tr("Number of elements, box excluded (thesis Table 3.1)"));
+    m_global->verticalHeaderItem(CountsRow)->setToolTip(
+        tr("Number of elements, box excluded (thesis Table 3.1)"));
     m_global->verticalHeaderItem(GeometricRow)
         ->setToolTip(tr("Sum of C_t + C_f + C_e + C_a over the elements (thesis Table 3.2)"));
     m_global->verticalHeaderItem(VariationRow)
-        ->setToolTip(tr("Standard deviation / mean of the volumes, areas and lengths (thesis Table 3.3)"));
-    m_local->setVerticalHeaderLabels({tr("Cells"), tr("Q10"), tr("Q50 (median)"), tr("Q90"), tr("Max"), tr("Mean"),
-                                      tr("Var. coeff.")});
+        ->setToolTip(
+            tr("Standard deviation / mean of the volumes, areas and lengths (thesis Table 3.3)"));
+    m_local->setVerticalHeaderLabels({tr("Cells"), tr("Q10"), tr("Q50 (median)"), tr("Q90"),
+                                      tr("Max"), tr("Mean"), tr("Var. coeff.")});
     m_showHeatMap->setText(tr("Show the &heat map of elements per cell"));
     m_thresholdLabel->setText(tr("Draw cells with at &least"));
     m_threshold->setSuffix(tr(" elements"));
-    m_threshold->setToolTip(tr("Cells meeting fewer model elements are not drawn, so the model stays visible."));
+    m_threshold->setToolTip(
+        tr("Cells meeting fewer model elements are not drawn, so the model stays visible."));
     fill();
 }
 
@@ -170,7 +193,9 @@ void ComplexityPanel::fill()
         return;
     }
     const ComplexityReport &r = *m_report;
-    const auto set = [this](int row, int column, const QString &text) { m_global->item(row, column)->setText(text); };
+    const auto set = [this](int row, int column, const QString &text) {
+        m_global->item(row, column)->setText(text);
+    };
     const auto f2 = [&](double v) { return locale.toString(v, 'f', 2); };
     const QString none = QStringLiteral("—");
     const EntityCounts &c = r.counts;
@@ -189,10 +214,11 @@ void ComplexityPanel::fill()
     set(VariationRow, LinesColumn, f2(r.variation.lines));
     set(VariationRow, CornersColumn, none);
     set(VariationRow, TotalColumn, f2(r.variation.total));
-    m_globalCaption->setText(tr("Global measures, box excluded (thesis Tables 3.1–3.3); geometric with h = %1 m, "
-                                "α = %2°.")
-                                 .arg(locale.toString(m_params.geometric.h, 'g', 6),
-                                      locale.toString(m_params.geometric.alphaDegrees, 'g', 4)));
+    m_globalCaption->setText(
+        tr("Global measures, box excluded (thesis Tables 3.1–3.3); geometric with h = %1 m, "
+           "α = %2°.")
+            .arg(locale.toString(m_params.geometric.h, 'g', 6),
+                 locale.toString(m_params.geometric.alphaDegrees, 'g', 4)));
     if (r.local.empty()) {
         for (int row = 0; row < LocalRowCount; ++row)
             m_local->item(row, 0)->setText(QString());
@@ -201,7 +227,9 @@ void ComplexityPanel::fill()
     }
     const LocalComplexity &l = r.local.front();
     const CountStatistics &s = l.statistics;
-    const auto setLocal = [this](int row, const QString &text) { m_local->item(row, 0)->setText(text); };
+    const auto setLocal = [this](int row, const QString &text) {
+        m_local->item(row, 0)->setText(text);
+    };
     setLocal(CellsRow, locale.toString(int(l.counts.size())));
     setLocal(Q10Row, locale.toString(s.q10));
     setLocal(Q50Row, locale.toString(s.q50));
@@ -209,10 +237,11 @@ void ComplexityPanel::fill()
     setLocal(MaxRow, locale.toString(s.max));
     setLocal(MeanRow, locale.toString(s.mean, 'f', 3));
     setLocal(VarCoeffRow, locale.toString(s.varCoeff, 'f', 3));
-    m_localCaption->setText(tr("Elements per cell (thesis Table 3.4), seed %1, %n Lloyd iteration(s); "
-                               "%2 cell(s) outside the model left out of the statistics.",
-                               nullptr, l.cvt.iterations)
-                                .arg(QString::number(m_params.seed), locale.toString(l.outsideCells)));
+    m_localCaption->setText(
+        tr("Elements per cell (thesis Table 3.4), seed %1, %n Lloyd iteration(s); "
+           "%2 cell(s) outside the model left out of the statistics.",
+           nullptr, l.cvt.iterations)
+            .arg(QString::number(m_params.seed), locale.toString(l.outsideCells)));
     setShownCells(m_shownCells, m_totalCells);
 }
 

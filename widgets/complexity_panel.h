@@ -21,7 +21,14 @@ class ComplexityPanel : public QWidget {
     Q_OBJECT
 public:
     enum GlobalRow { CountsRow, GeometricRow, VariationRow, GlobalRowCount };
-    enum GlobalColumn { RegionsColumn, SurfacesColumn, LinesColumn, CornersColumn, TotalColumn, GlobalColumnCount };
+    enum GlobalColumn {
+        RegionsColumn,
+        SurfacesColumn,
+        LinesColumn,
+        CornersColumn,
+        TotalColumn,
+        GlobalColumnCount
+    };
     enum LocalRow { CellsRow, Q10Row, Q50Row, Q90Row, MaxRow, MeanRow, VarCoeffRow, LocalRowCount };
 
     explicit ComplexityPanel(QWidget *parent = nullptr);

@@ -8,8 +8,8 @@
 namespace stratamesh {
 
 namespace {
-constexpr int kMargin = 10;    // from the parent's corner
-constexpr int kPadding = 8;    // inside the frame
+constexpr int kMargin = 10; // from the parent's corner
+constexpr int kPadding = 8; // inside the frame
 constexpr int kSwatch = 12;
 constexpr int kIndent = 16;
 } // namespace
@@ -27,11 +27,16 @@ FeatureLegend::FeatureLegend(QWidget *parent) : QWidget(parent)
 QString FeatureLegend::typeLabel(FeatureType type)
 {
     switch (type) {
-    case FeatureType::Horizon: return tr("Horizons");
-    case FeatureType::Fault: return tr("Faults");
-    case FeatureType::Unconformity: return tr("Unconformities");
-    case FeatureType::Boundary: return tr("Box");
-    case FeatureType::Unknown: break;
+    case FeatureType::Horizon:
+        return tr("Horizons");
+    case FeatureType::Fault:
+        return tr("Faults");
+    case FeatureType::Unconformity:
+        return tr("Unconformities");
+    case FeatureType::Boundary:
+        return tr("Box");
+    case FeatureType::Unknown:
+        break;
     }
     return tr("Other surfaces");
 }
@@ -58,8 +63,10 @@ std::vector<FeatureLegend::Row> FeatureLegend::rows() const
         header.color = e.color;
         header.header = true;
         if (e.type == FeatureType::Boundary) {
-            header.text = m_boxVisible ? tr("%1 (%n surface(s))", nullptr, e.surfaceCount).arg(typeLabel(e.type))
-                                       : tr("%1 (hidden)").arg(typeLabel(e.type));
+            header.text =
+                m_boxVisible
+                    ? tr("%1 (%n surface(s))", nullptr, e.surfaceCount).arg(typeLabel(e.type))
+                    : tr("%1 (hidden)").arg(typeLabel(e.type));
             header.dimmed = !m_boxVisible;
             result.push_back(header);
             continue;
@@ -70,7 +77,8 @@ std::vector<FeatureLegend::Row> FeatureLegend::rows() const
             continue;
         for (int i = 0; i < e.featureNames.size(); ++i) {
             Row row;
-            row.color = std::size_t(i) < e.featureColors.size() ? e.featureColors[std::size_t(i)] : e.color;
+            row.color =
+                std::size_t(i) < e.featureColors.size() ? e.featureColors[std::size_t(i)] : e.color;
             row.text = e.featureNames[i].isEmpty() ? tr("(unnamed)") : e.featureNames[i];
             result.push_back(row);
         }
@@ -131,8 +139,8 @@ void FeatureLegend::paintEvent(QPaintEvent *)
     int y = kPadding;
     painter.setFont(bold);
     painter.setPen(QColor(30, 34, 40));
-    painter.drawText(QRect(kPadding, y, width() - 2 * kPadding, lineHeight), Qt::AlignVCenter | Qt::AlignLeft,
-                     tr("Legend"));
+    painter.drawText(QRect(kPadding, y, width() - 2 * kPadding, lineHeight),
+                     Qt::AlignVCenter | Qt::AlignLeft, tr("Legend"));
     y += lineHeight;
     for (const Row &row : rows()) {
         const int x = kPadding + (row.header ? 0 : kIndent);
@@ -145,8 +153,9 @@ void FeatureLegend::paintEvent(QPaintEvent *)
         painter.drawRoundedRect(swatch, 2, 2);
         painter.setFont(row.header ? bold : font());
         painter.setPen(row.dimmed ? QColor(110, 115, 122) : QColor(30, 34, 40));
-        painter.drawText(QRect(x + kSwatch + 6, y, width() - x - kSwatch - 6 - kPadding, lineHeight),
-                         Qt::AlignVCenter | Qt::AlignLeft, row.text);
+        painter.drawText(
+            QRect(x + kSwatch + 6, y, width() - x - kSwatch - 6 - kPadding, lineHeight),
+            Qt::AlignVCenter | Qt::AlignLeft, row.text);
         y += lineHeight;
     }
 }

@@ -22,17 +22,30 @@ QColor pick(const std::array<QRgb, N> &palette, int index)
 
 } // namespace
 
-QColor featureTypeColor(FeatureType type) { return featureColor(type, 0, 0); }
+QColor featureTypeColor(FeatureType type)
+{
+    return featureColor(type, 0, 0);
+}
 
 QColor featureColor(FeatureType type, int featureIndex, int surfaceIndex)
 {
     QColor base;
     switch (type) {
-    case FeatureType::Horizon: base = pick(kHorizon, featureIndex); break;
-    case FeatureType::Fault: base = pick(kFault, featureIndex); break;
-    case FeatureType::Unconformity: base = pick(kUnconformity, featureIndex); break;
-    case FeatureType::Boundary: base = QColor::fromRgb(kBoundary); break;
-    case FeatureType::Unknown: base = pick(kUnknown, featureIndex); break;
+    case FeatureType::Horizon:
+        base = pick(kHorizon, featureIndex);
+        break;
+    case FeatureType::Fault:
+        base = pick(kFault, featureIndex);
+        break;
+    case FeatureType::Unconformity:
+        base = pick(kUnconformity, featureIndex);
+        break;
+    case FeatureType::Boundary:
+        base = QColor::fromRgb(kBoundary);
+        break;
+    case FeatureType::Unknown:
+        base = pick(kUnknown, featureIndex);
+        break;
     }
     // Alternate lighter/darker steps: 0, +1, -1, +2, -2 ... limited to keep the hue readable.
     if (surfaceIndex <= 0)
@@ -42,8 +55,17 @@ QColor featureColor(FeatureType type, int featureIndex, int surfaceIndex)
     return (surfaceIndex % 2 == 1) ? base.lighter(factor) : base.darker(factor);
 }
 
-QColor contactLineColor() { return QColor::fromRgb(0x1f2328); }
-QColor boxLineColor() { return QColor::fromRgb(0x5d6873); }
-QColor cornerColor() { return QColor::fromRgb(0xffd84d); }
+QColor contactLineColor()
+{
+    return QColor::fromRgb(0x1f2328);
+}
+QColor boxLineColor()
+{
+    return QColor::fromRgb(0x5d6873);
+}
+QColor cornerColor()
+{
+    return QColor::fromRgb(0xffd84d);
+}
 
 } // namespace stratamesh

@@ -45,7 +45,8 @@ LedgerPanel::LedgerPanel(QWidget *parent)
 
     connect(m_kinds, &QComboBox::currentIndexChanged, this, [this](int i) {
         const QVariant kind = m_kinds->itemData(i);
-        m_filter->setKind(kind.isValid() ? std::optional<LedgerKind>(LedgerKind(kind.toInt())) : std::nullopt);
+        m_filter->setKind(kind.isValid() ? std::optional<LedgerKind>(LedgerKind(kind.toInt()))
+                                         : std::nullopt);
         onSelectionChanged();
     });
     connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this,
@@ -57,8 +58,9 @@ void LedgerPanel::setLedger(std::shared_ptr<const SimplificationLedger> ledger)
 {
     m_model->setLedger(std::move(ledger));
     fillKinds();
-    m_summary->setText(m_model->ledger() ? (m_model->ledger()->empty() ? tr("No simplification")
-                                                                       : LedgerTableModel::summary(*m_model->ledger()))
+    m_summary->setText(m_model->ledger() ? (m_model->ledger()->empty()
+                                                ? tr("No simplification")
+                                                : LedgerTableModel::summary(*m_model->ledger()))
                                          : QString());
     m_table->resizeColumnsToContents();
     // Long lists of entities stay readable in the tooltip; the columns stay on screen.
@@ -85,9 +87,15 @@ void LedgerPanel::selectRow(int row)
         m_table->selectRow(row);
 }
 
-int LedgerPanel::visibleRowCount() const { return m_filter->rowCount(); }
+int LedgerPanel::visibleRowCount() const
+{
+    return m_filter->rowCount();
+}
 
-QString LedgerPanel::summaryText() const { return m_summary->text(); }
+QString LedgerPanel::summaryText() const
+{
+    return m_summary->text();
+}
 
 void LedgerPanel::changeEvent(QEvent *event)
 {
@@ -114,11 +122,14 @@ void LedgerPanel::fillKinds()
     if (m_model->ledger())
         for (LedgerKind kind : LedgerTableModel::allKinds())
             if (const int n = countKind(*m_model->ledger(), kind); n > 0)
-                m_kinds->addItem(QStringLiteral("%1 (%2)").arg(LedgerTableModel::kindText(kind)).arg(n), int(kind));
+                m_kinds->addItem(
+                    QStringLiteral("%1 (%2)").arg(LedgerTableModel::kindText(kind)).arg(n),
+                    int(kind));
     const int i = current.isValid() ? m_kinds->findData(current) : 0;
     m_kinds->setCurrentIndex(i >= 0 ? i : 0);
     const QVariant kind = m_kinds->currentData();
-    m_filter->setKind(kind.isValid() ? std::optional<LedgerKind>(LedgerKind(kind.toInt())) : std::nullopt);
+    m_filter->setKind(kind.isValid() ? std::optional<LedgerKind>(LedgerKind(kind.toInt()))
+                                     : std::nullopt);
 }
 
 void LedgerPanel::onSelectionChanged()

@@ -25,7 +25,10 @@ int LedgerTableModel::rowCount(const QModelIndex &parent) const
     return parent.isValid() || !m_ledger ? 0 : int(m_ledger->size());
 }
 
-int LedgerTableModel::columnCount(const QModelIndex &parent) const { return parent.isValid() ? 0 : ColumnCount; }
+int LedgerTableModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
 
 QVariant LedgerTableModel::data(const QModelIndex &index, int role) const
 {
@@ -48,13 +51,20 @@ QVariant LedgerTableModel::data(const QModelIndex &index, int role) const
     if (role != Qt::DisplayRole)
         return {};
     switch (index.column()) {
-    case KindColumn: return kindText(r->kind);
-    case InputsColumn: return entitiesText(r->inputs);
-    case OutputsColumn: return entitiesText(r->outputs);
-    case SizeColumn: return sizeText(*r);
-    case PositionColumn: return positionText(r->position);
-    case NoteColumn: return QString::fromStdString(r->note);
-    default: return {};
+    case KindColumn:
+        return kindText(r->kind);
+    case InputsColumn:
+        return entitiesText(r->inputs);
+    case OutputsColumn:
+        return entitiesText(r->outputs);
+    case SizeColumn:
+        return sizeText(*r);
+    case PositionColumn:
+        return positionText(r->position);
+    case NoteColumn:
+        return QString::fromStdString(r->note);
+    default:
+        return {};
     }
 }
 
@@ -63,13 +73,20 @@ QVariant LedgerTableModel::headerData(int section, Qt::Orientation orientation, 
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
         return QAbstractTableModel::headerData(section, orientation, role);
     switch (section) {
-    case KindColumn: return tr("Kind");
-    case InputsColumn: return tr("Input entities");
-    case OutputsColumn: return tr("Output");
-    case SizeColumn: return tr("Size");
-    case PositionColumn: return tr("Position");
-    case NoteColumn: return tr("Note");
-    default: return {};
+    case KindColumn:
+        return tr("Kind");
+    case InputsColumn:
+        return tr("Input entities");
+    case OutputsColumn:
+        return tr("Output");
+    case SizeColumn:
+        return tr("Size");
+    case PositionColumn:
+        return tr("Position");
+    case NoteColumn:
+        return tr("Note");
+    default:
+        return {};
     }
 }
 
@@ -84,21 +101,36 @@ std::vector<LedgerKind> LedgerTableModel::allKinds()
 QString LedgerTableModel::kindText(LedgerKind kind)
 {
     switch (kind) {
-    case LedgerKind::CornerMerge: return tr("Corner merge");
-    case LedgerKind::MultiPointMerge: return tr("Multi-point merge");
-    case LedgerKind::CloseFeatureMerge: return tr("Close feature merge");
-    case LedgerKind::DegenerateContactTriangle: return tr("Degenerate contact triangle");
-    case LedgerKind::DegenerateBorderTriangle: return tr("Degenerate border triangle");
-    case LedgerKind::Valence3Removed: return tr("Valence-3 vertex removed");
-    case LedgerKind::SurfaceLost: return tr("Surface lost");
-    case LedgerKind::LineLost: return tr("Line lost");
-    case LedgerKind::CornerLost: return tr("Corner lost");
-    case LedgerKind::SurfaceCreated: return tr("Surface created");
-    case LedgerKind::LineCreated: return tr("Line created");
-    case LedgerKind::CornerCreated: return tr("Corner created");
-    case LedgerKind::IntersectionUnresolved: return tr("Unresolved intersection");
-    case LedgerKind::SurfacePartLost: return tr("Surface part lost");
-    case LedgerKind::SurfacePartCreated: return tr("Surface part created");
+    case LedgerKind::CornerMerge:
+        return tr("Corner merge");
+    case LedgerKind::MultiPointMerge:
+        return tr("Multi-point merge");
+    case LedgerKind::CloseFeatureMerge:
+        return tr("Close feature merge");
+    case LedgerKind::DegenerateContactTriangle:
+        return tr("Degenerate contact triangle");
+    case LedgerKind::DegenerateBorderTriangle:
+        return tr("Degenerate border triangle");
+    case LedgerKind::Valence3Removed:
+        return tr("Valence-3 vertex removed");
+    case LedgerKind::SurfaceLost:
+        return tr("Surface lost");
+    case LedgerKind::LineLost:
+        return tr("Line lost");
+    case LedgerKind::CornerLost:
+        return tr("Corner lost");
+    case LedgerKind::SurfaceCreated:
+        return tr("Surface created");
+    case LedgerKind::LineCreated:
+        return tr("Line created");
+    case LedgerKind::CornerCreated:
+        return tr("Corner created");
+    case LedgerKind::IntersectionUnresolved:
+        return tr("Unresolved intersection");
+    case LedgerKind::SurfacePartLost:
+        return tr("Surface part lost");
+    case LedgerKind::SurfacePartCreated:
+        return tr("Surface part created");
     }
     return QString::fromStdString(ledgerKindName(kind));
 }
@@ -121,7 +153,9 @@ QString LedgerTableModel::entitiesText(const std::vector<EntityRef> &refs)
         else if (ref.kind == EntityKind::Vertex)
             names << tr("vertex %1").arg(ref.id);
         else
-            names << QStringLiteral("%1 %2").arg(QString::fromStdString(entityKindName(ref.kind))).arg(ref.id);
+            names << QStringLiteral("%1 %2")
+                         .arg(QString::fromStdString(entityKindName(ref.kind)))
+                         .arg(ref.id);
     }
     return names.join(QStringLiteral(", "));
 }
@@ -144,7 +178,8 @@ QString LedgerTableModel::positionText(const Vec3 &p)
 {
     const QLocale locale;
     return QStringLiteral("%1, %2, %3")
-        .arg(locale.toString(p.x(), 'f', 1), locale.toString(p.y(), 'f', 1), locale.toString(p.z(), 'f', 1));
+        .arg(locale.toString(p.x(), 'f', 1), locale.toString(p.y(), 'f', 1),
+             locale.toString(p.z(), 'f', 1));
 }
 
 } // namespace stratamesh

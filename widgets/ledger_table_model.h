@@ -16,10 +16,18 @@ namespace stratamesh {
 class LedgerTableModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { KindColumn, InputsColumn, OutputsColumn, SizeColumn, PositionColumn, NoteColumn, ColumnCount };
+    enum Column {
+        KindColumn,
+        InputsColumn,
+        OutputsColumn,
+        SizeColumn,
+        PositionColumn,
+        NoteColumn,
+        ColumnCount
+    };
     enum Role {
         KindRole = Qt::UserRole + 1, // int(LedgerKind), for filtering
-        RecordIndexRole,            // index of the record in the ledger
+        RecordIndexRole,             // index of the record in the ledger
     };
 
     explicit LedgerTableModel(QObject *parent = nullptr);
@@ -32,7 +40,8 @@ public:
     int rowCount(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
-    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation,
+                        int role = Qt::DisplayRole) const override;
 
     // Every kind, in the order of LedgerKind.
     static std::vector<LedgerKind> allKinds();

@@ -17,9 +17,12 @@ constexpr int kMessageRole = Qt::UserRole + 1;
 QIcon severityIcon(Message::Severity severity, const QStyle *style)
 {
     switch (severity) {
-    case Message::Severity::Error: return style->standardIcon(QStyle::SP_MessageBoxCritical);
-    case Message::Severity::Warning: return style->standardIcon(QStyle::SP_MessageBoxWarning);
-    case Message::Severity::Info: break;
+    case Message::Severity::Error:
+        return style->standardIcon(QStyle::SP_MessageBoxCritical);
+    case Message::Severity::Warning:
+        return style->standardIcon(QStyle::SP_MessageBoxWarning);
+    case Message::Severity::Info:
+        break;
     }
     return style->standardIcon(QStyle::SP_MessageBoxInformation);
 }
@@ -27,9 +30,12 @@ QIcon severityIcon(Message::Severity severity, const QStyle *style)
 QString severityName(Message::Severity severity)
 {
     switch (severity) {
-    case Message::Severity::Error: return MessagePanel::tr("Error");
-    case Message::Severity::Warning: return MessagePanel::tr("Warning");
-    case Message::Severity::Info: break;
+    case Message::Severity::Error:
+        return MessagePanel::tr("Error");
+    case Message::Severity::Warning:
+        return MessagePanel::tr("Warning");
+    case Message::Severity::Info:
+        break;
     }
     return MessagePanel::tr("Info");
 }
@@ -66,7 +72,8 @@ void MessagePanel::retranslate()
     m_tree->setHeaderLabels({tr("Severity"), tr("Message"), tr("Location")});
     for (int row = 0; row < m_tree->topLevelItemCount(); ++row) {
         QTreeWidgetItem *item = m_tree->topLevelItem(row);
-        item->setText(SeverityColumn, severityName(item->data(0, kMessageRole).value<Message>().severity));
+        item->setText(SeverityColumn,
+                      severityName(item->data(0, kMessageRole).value<Message>().severity));
     }
 }
 
@@ -98,7 +105,10 @@ void MessagePanel::clear()
     emit countChanged(0);
 }
 
-int MessagePanel::count() const { return m_tree->topLevelItemCount(); }
+int MessagePanel::count() const
+{
+    return m_tree->topLevelItemCount();
+}
 
 int MessagePanel::count(Message::Severity severity) const
 {

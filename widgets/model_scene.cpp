@@ -19,7 +19,10 @@ namespace stratamesh {
 
 namespace {
 
-void setColor(vtkProperty *property, const QColor &c) { property->SetColor(c.redF(), c.greenF(), c.blueF()); }
+void setColor(vtkProperty *property, const QColor &c)
+{
+    property->SetColor(c.redF(), c.greenF(), c.blueF());
+}
 
 vtkSmartPointer<vtkActor> makeActor(vtkPolyData *data)
 {
@@ -62,7 +65,10 @@ vtkSmartPointer<vtkPoints> modelPoints(const Model &model)
     return points;
 }
 
-bool validVertex(const Model &model, int v) { return v >= 0 && std::size_t(v) < model.vertices.size(); }
+bool validVertex(const Model &model, int v)
+{
+    return v >= 0 && std::size_t(v) < model.vertices.size();
+}
 
 } // namespace
 
@@ -72,7 +78,10 @@ ModelScene::ModelScene(vtkRenderer *renderer) : m_renderer(renderer)
     vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
 }
 
-ModelScene::~ModelScene() { clear(); }
+ModelScene::~ModelScene()
+{
+    clear();
+}
 
 void ModelScene::setModel(std::shared_ptr<const Model> model)
 {
@@ -113,7 +122,8 @@ void ModelScene::buildSurfaces()
     for (const Surface &surface : model.surfaces) {
         auto &features = featureIndex[surface.type];
         const auto it = features.emplace(surface.featureName, int(features.size())).first;
-        const int surfaceIndex = surfacesSeen[featureTypeName(surface.type) + "/" + surface.featureName]++;
+        const int surfaceIndex =
+            surfacesSeen[featureTypeName(surface.type) + "/" + surface.featureName]++;
         const QColor color = featureColor(surface.type, it->second, surfaceIndex);
         const bool isBox = surface.type == FeatureType::Boundary;
 
@@ -125,7 +135,8 @@ void ModelScene::buildSurfaces()
         p->SetDiffuse(0.8);
         p->SetSpecular(isBox ? 0.0 : 0.18);
         p->SetSpecularPower(30.0);
-        p->SetEdgeColor(color.darker(180).redF(), color.darker(180).greenF(), color.darker(180).blueF());
+        p->SetEdgeColor(color.darker(180).redF(), color.darker(180).greenF(),
+                        color.darker(180).blueF());
         if (isBox)
             p->SetOpacity(0.18);
         m_renderer->AddActor(actor);
@@ -141,7 +152,8 @@ void ModelScene::buildLinesAndCorners()
     if (model.vertices.empty())
         return;
     auto isBoxSurface = [&](int s) {
-        return s >= 0 && std::size_t(s) < model.surfaces.size() && model.surfaces[std::size_t(s)].type == FeatureType::Boundary;
+        return s >= 0 && std::size_t(s) < model.surfaces.size()
+               && model.surfaces[std::size_t(s)].type == FeatureType::Boundary;
     };
     std::vector<bool> boxLine(model.lines.size(), false);
     vtkNew<vtkCellArray> lines, boxLines;
@@ -168,7 +180,8 @@ void ModelScene::buildLinesAndCorners()
             continue;
         bool onlyBox = !corner.lines.empty();
         for (int l : corner.lines)
-            onlyBox = onlyBox && l >= 0 && std::size_t(l) < boxLine.size() && boxLine[std::size_t(l)];
+            onlyBox =
+                onlyBox && l >= 0 && std::size_t(l) < boxLine.size() && boxLine[std::size_t(l)];
         const vtkIdType id = corner.vertex;
         (onlyBox ? boxCorners : corners)->InsertNextCell(1, &id);
         ++m_cornerCount;
@@ -211,8 +224,8 @@ void ModelScene::buildLinesAndCorners()
 void ModelScene::buildLegend()
 {
     const Model &model = *m_model;
-    const FeatureType order[] = {FeatureType::Horizon, FeatureType::Unconformity, FeatureType::Fault,
-                                 FeatureType::Unknown, FeatureType::Boundary};
+    const FeatureType order[] = {FeatureType::Horizon, FeatureType::Unconformity,
+                                 FeatureType::Fault, FeatureType::Unknown, FeatureType::Boundary};
     for (FeatureType type : order) {
         LegendEntry entry;
         entry.type = type;
@@ -271,7 +284,8 @@ bool ModelScene::bounds(double bounds[6]) const
 {
     vtkBoundingBox box;
     for (const auto &actor : m_surfaceActors)
-        if (auto *data = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)); data && data->GetNumberOfPoints() > 0)
+        if (auto *data = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
+            data && data->GetNumberOfPoints() > 0)
             box.AddBounds(data->GetBounds());
     if (!box.IsValid())
         return false;

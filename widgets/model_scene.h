@@ -22,7 +22,7 @@ struct LegendEntry {
     QColor color;
     int featureCount = 0;
     int surfaceCount = 0;
-    QStringList featureNames;   // in model order
+    QStringList featureNames;          // in model order
     std::vector<QColor> featureColors; // colour of each feature's first surface
 };
 

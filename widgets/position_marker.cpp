@@ -56,6 +56,9 @@ void PositionMarker::hide()
     m_halo->SetVisibility(false);
 }
 
-bool PositionMarker::isVisible() const { return m_actor->GetVisibility(); }
+bool PositionMarker::isVisible() const
+{
+    return m_actor->GetVisibility();
+}
 
 } // namespace stratamesh

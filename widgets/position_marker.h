@@ -28,8 +28,8 @@ public:
 private:
     vtkSmartPointer<vtkRenderer> m_renderer;
     vtkSmartPointer<vtkSphereSource> m_sphere;
-    vtkSmartPointer<vtkActor> m_actor;     // solid, depth-tested
-    vtkSmartPointer<vtkActor> m_halo;      // wireframe copy drawn on top of everything
+    vtkSmartPointer<vtkActor> m_actor; // solid, depth-tested
+    vtkSmartPointer<vtkActor> m_halo;  // wireframe copy drawn on top of everything
     Vec3 m_position = Vec3::Zero();
     double m_radius = 0.0;
 };

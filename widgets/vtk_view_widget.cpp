@@ -31,10 +31,14 @@ namespace {
 int vtkButtonEvent(Qt::MouseButton button, bool press)
 {
     switch (button) {
-    case Qt::LeftButton: return press ? vtkCommand::LeftButtonPressEvent : vtkCommand::LeftButtonReleaseEvent;
-    case Qt::MiddleButton: return press ? vtkCommand::MiddleButtonPressEvent : vtkCommand::MiddleButtonReleaseEvent;
-    case Qt::RightButton: return press ? vtkCommand::RightButtonPressEvent : vtkCommand::RightButtonReleaseEvent;
-    default: return vtkCommand::NoEvent;
+    case Qt::LeftButton:
+        return press ? vtkCommand::LeftButtonPressEvent : vtkCommand::LeftButtonReleaseEvent;
+    case Qt::MiddleButton:
+        return press ? vtkCommand::MiddleButtonPressEvent : vtkCommand::MiddleButtonReleaseEvent;
+    case Qt::RightButton:
+        return press ? vtkCommand::RightButtonPressEvent : vtkCommand::RightButtonReleaseEvent;
+    default:
+        return vtkCommand::NoEvent;
     }
 }
 
@@ -42,15 +46,24 @@ int vtkButtonEvent(Qt::MouseButton button, bool press)
 const char *keySym(int key)
 {
     switch (key) {
-    case Qt::Key_Left: return "Left";
-    case Qt::Key_Right: return "Right";
-    case Qt::Key_Up: return "Up";
-    case Qt::Key_Down: return "Down";
-    case Qt::Key_Shift: return "Shift_L";
-    case Qt::Key_Control: return "Control_L";
-    case Qt::Key_Plus: return "plus";
-    case Qt::Key_Minus: return "minus";
-    default: return nullptr;
+    case Qt::Key_Left:
+        return "Left";
+    case Qt::Key_Right:
+        return "Right";
+    case Qt::Key_Up:
+        return "Up";
+    case Qt::Key_Down:
+        return "Down";
+    case Qt::Key_Shift:
+        return "Shift_L";
+    case Qt::Key_Control:
+        return "Control_L";
+    case Qt::Key_Plus:
+        return "plus";
+    case Qt::Key_Minus:
+        return "minus";
+    default:
+        return nullptr;
     }
 }
 
@@ -59,7 +72,8 @@ const char *keySym(int key)
 bool isForwardedKey(const QKeyEvent *event)
 {
     const QString text = event->text().toLower();
-    return !(text == QLatin1String("e") || text == QLatin1String("q") || text == QLatin1String("3"));
+    return !(text == QLatin1String("e") || text == QLatin1String("q")
+             || text == QLatin1String("3"));
 }
 
 void configureAxesLabel(vtkCaptionActor2D *caption)
@@ -165,9 +179,18 @@ QSurfaceFormat VtkViewWidget::defaultFormat()
     return format;
 }
 
-vtkRenderer *VtkViewWidget::renderer() const { return m_renderer; }
-vtkGenericOpenGLRenderWindow *VtkViewWidget::renderWindow() const { return m_renderWindow; }
-vtkGenericRenderWindowInteractor *VtkViewWidget::interactor() const { return m_interactor; }
+vtkRenderer *VtkViewWidget::renderer() const
+{
+    return m_renderer;
+}
+vtkGenericOpenGLRenderWindow *VtkViewWidget::renderWindow() const
+{
+    return m_renderWindow;
+}
+vtkGenericRenderWindowInteractor *VtkViewWidget::interactor() const
+{
+    return m_interactor;
+}
 
 void VtkViewWidget::resetCamera()
 {
@@ -182,8 +205,8 @@ void VtkViewWidget::resetCamera(const double bounds[6])
     camera->SetFocalPoint(0.0, 0.0, 0.0);
     // From the south-west, 30 degrees above the horizon.
     const double elevation = 30.0 * M_PI / 180.0, azimuth = -35.0 * M_PI / 180.0;
-    camera->SetPosition(std::sin(azimuth) * std::cos(elevation), -std::cos(azimuth) * std::cos(elevation),
-                        std::sin(elevation));
+    camera->SetPosition(std::sin(azimuth) * std::cos(elevation),
+                        -std::cos(azimuth) * std::cos(elevation), std::sin(elevation));
     camera->SetViewUp(0.0, 0.0, 1.0);
     if (bounds[0] <= bounds[1]) {
         m_renderer->ResetCamera(bounds);
@@ -208,18 +231,27 @@ void VtkViewWidget::resetCamera(const double bounds[6])
     render();
 }
 
-void VtkViewWidget::render() { update(); }
+void VtkViewWidget::render()
+{
+    update();
+}
 
-QSize VtkViewWidget::minimumSizeHint() const { return {320, 240}; }
-QSize VtkViewWidget::sizeHint() const { return {900, 650}; }
+QSize VtkViewWidget::minimumSizeHint() const
+{
+    return {320, 240};
+}
+QSize VtkViewWidget::sizeHint() const
+{
+    return {900, 650};
+}
 
 void VtkViewWidget::initializeGL()
 {
     if (m_initialized)
         cleanupGL(); // a new context (the widget was reparented): start from scratch
     // QOpenGLWidget recreates its context on reparenting; VTK must drop resources of the old one.
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &VtkViewWidget::onContextAboutToBeDestroyed,
-            Qt::UniqueConnection);
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this,
+            &VtkViewWidget::onContextAboutToBeDestroyed, Qt::UniqueConnection);
     m_renderWindow->SetMapped(1);
     m_renderWindow->SetIsDirect(1);
     m_renderWindow->SetSupportsOpenGL(1);
@@ -312,9 +344,9 @@ void VtkViewWidget::onVtkEvent(vtkObject *, unsigned long eventId, void *clientD
 void VtkViewWidget::setPointerInfo(const QPointF &pos, Qt::KeyboardModifiers modifiers)
 {
     const qreal ratio = devicePixelRatioF();
-    m_interactor->SetEventInformationFlipY(int(std::lround(pos.x() * ratio)), int(std::lround(pos.y() * ratio)),
-                                           (modifiers & Qt::ControlModifier) ? 1 : 0,
-                                           (modifiers & Qt::ShiftModifier) ? 1 : 0);
+    m_interactor->SetEventInformationFlipY(
+        int(std::lround(pos.x() * ratio)), int(std::lround(pos.y() * ratio)),
+        (modifiers & Qt::ControlModifier) ? 1 : 0, (modifiers & Qt::ShiftModifier) ? 1 : 0);
     m_interactor->SetAltKey((modifiers & Qt::AltModifier) ? 1 : 0);
 }
 
@@ -373,7 +405,8 @@ void VtkViewWidget::keyPressEvent(QKeyEvent *event)
     const char *sym = keySym(event->key());
     m_interactor->SetKeyEventInformation((event->modifiers() & Qt::ControlModifier) ? 1 : 0,
                                          (event->modifiers() & Qt::ShiftModifier) ? 1 : 0, code,
-                                         event->isAutoRepeat() ? 1 : 0, sym ? sym : text.constData());
+                                         event->isAutoRepeat() ? 1 : 0,
+                                         sym ? sym : text.constData());
     m_interactor->InvokeEvent(vtkCommand::KeyPressEvent, nullptr);
     if (code != 0)
         m_interactor->InvokeEvent(vtkCommand::CharEvent, nullptr);

@@ -62,7 +62,8 @@ protected:
     void leaveEvent(QEvent *event) override;
 
 private:
-    static void onVtkEvent(vtkObject *caller, unsigned long eventId, void *clientData, void *callData);
+    static void onVtkEvent(vtkObject *caller, unsigned long eventId, void *clientData,
+                           void *callData);
     void setPointerInfo(const QPointF &pos, Qt::KeyboardModifiers modifiers);
     void cleanupGL();
     void onContextAboutToBeDestroyed();

@@ -21,7 +21,8 @@ RestrictionDomain generatedSurface(int triangles)
     for (int j = 0; j <= n; ++j)
         for (int i = 0; i <= n; ++i) {
             const double x = double(i) / n, y = double(j) / n;
-            d.points.push_back({x, y, 0.1 * std::sin(6 * x) * std::cos(4 * y) + 0.03 * std::sin(17 * x * y)});
+            d.points.push_back(
+                {x, y, 0.1 * std::sin(6 * x) * std::cos(4 * y) + 0.03 * std::sin(17 * x * y)});
         }
     const auto id = [n](int i, int j) { return j * (n + 1) + i; };
     d.triangles.reserve(2 * static_cast<std::size_t>(n) * n);
@@ -49,13 +50,14 @@ void printSpread(const char *what, std::vector<double> seconds)
     std::sort(seconds.begin(), seconds.end());
     const std::size_t n = seconds.size();
     const double median = n % 2 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
-    std::printf("  %s over %zu runs: min %.3f s, median %.3f s, max %.3f s\n", what, n, seconds.front(), median,
-                seconds.back());
+    std::printf("  %s over %zu runs: min %.3f s, median %.3f s, max %.3f s\n", what, n,
+                seconds.front(), median, seconds.back());
     std::fflush(stdout);
 }
 
-BenchResult runCase(const std::string &name, const RestrictionDomain &domain, int sites, int iterations,
-                    double alpha, int threads, NeighbourSearch search, double setupSeconds)
+BenchResult runCase(const std::string &name, const RestrictionDomain &domain, int sites,
+                    int iterations, double alpha, int threads, NeighbourSearch search,
+                    double setupSeconds)
 {
     BenchResult r;
     r.name = name;
@@ -64,7 +66,9 @@ BenchResult runCase(const std::string &name, const RestrictionDomain &domain, in
     r.sites = sites;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<Vec3> initial = sampleSurfaces(domain, sites, 1);
-    r.setupSeconds = setupSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.setupSeconds =
+        setupSeconds
+        + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     CvtParams params;
     params.iterations = iterations;
     params.alpha = alpha;
@@ -81,8 +85,10 @@ BenchResult runCase(const std::string &name, const RestrictionDomain &domain, in
     r.firstEnergy = cvt.initialEnergy;
     r.lastEnergy = cvt.energy.empty() ? cvt.initialEnergy : cvt.energy.back();
     const auto rvdStart = std::chrono::steady_clock::now();
-    const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(domain, cvt.sites, Progress::none(), search);
-    r.finalRvdSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - rvdStart).count();
+    const RestrictedVoronoiDiagram rvd =
+        computeRestrictedVoronoi(domain, cvt.sites, Progress::none(), search);
+    r.finalRvdSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - rvdStart).count();
     r.peakRssMb = peakRssMb();
     return r;
 }

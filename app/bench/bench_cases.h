@@ -31,8 +31,9 @@ struct BenchResult {
 // A smooth height field over [0, 1]² with about `triangles` triangles, as one surface.
 RestrictionDomain generatedSurface(int triangles);
 
-BenchResult runCase(const std::string &name, const RestrictionDomain &domain, int sites, int iterations,
-                    double alpha, int threads, NeighbourSearch search, double setupSeconds);
+BenchResult runCase(const std::string &name, const RestrictionDomain &domain, int sites,
+                    int iterations, double alpha, int threads, NeighbourSearch search,
+                    double setupSeconds);
 
 double peakRssMb();
 

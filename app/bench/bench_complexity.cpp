@@ -47,7 +47,8 @@ double since(std::chrono::steady_clock::time_point start)
 void printGlobal(const std::vector<ComplexityReport> &reports)
 {
     const char *rows[4] = {"regions", "surfaces", "lines", "total"};
-    std::printf("  Table 3.2  geometric complexity C_t+C_f+C_e+C_a (h 100 m, alpha 20 deg): ours (thesis)\n");
+    std::printf("  Table 3.2  geometric complexity C_t+C_f+C_e+C_a (h 100 m, alpha 20 deg): ours "
+                "(thesis)\n");
     std::printf("  %-10s %16s %16s %16s\n", "", kModels[0], kModels[1], kModels[2]);
     for (int r = 0; r < 4; ++r) {
         std::printf("  %-10s", rows[r]);
@@ -58,7 +59,8 @@ void printGlobal(const std::vector<ComplexityReport> &reports)
         }
         std::printf("\n");
     }
-    std::printf("\n  Table 3.3  variation coefficient of element sizes (std/mean): ours (thesis)\n");
+    std::printf(
+        "\n  Table 3.3  variation coefficient of element sizes (std/mean): ours (thesis)\n");
     std::printf("  %-10s %16s %16s %16s\n", "", kModels[0], kModels[1], kModels[2]);
     for (int r = 0; r < 4; ++r) {
         std::printf("  %-10s", rows[r]);
@@ -81,7 +83,8 @@ void printLocal(const std::vector<ComplexityReport> &reports)
             std::printf("    %-10s", rows[r]);
             for (std::size_t m = 0; m < reports.size(); ++m) {
                 const CountStatistics &s = reports[m].local[n].statistics;
-                const double ours[6] = {double(s.q10), double(s.q50), double(s.q90), double(s.max), s.mean, s.varCoeff};
+                const double ours[6] = {double(s.q10), double(s.q50), double(s.q90),
+                                        double(s.max), s.mean,        s.varCoeff};
                 if (r < 4)
                     std::printf("   %5.0f (%5.0f)", ours[r], kThesis[m].local[n][r]);
                 else
@@ -98,10 +101,13 @@ int runComplexityBench(const std::string &dataDir, int threads)
 {
     std::unique_ptr<tbb::global_control> limit;
     if (threads > 0)
-        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      threads);
     const int used = static_cast<int>(
         tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-    std::printf("complexity (thesis ch. 3), box excluded, seed 1, 30 Lloyd iterations, %d threads\n\n", used);
+    std::printf(
+        "complexity (thesis ch. 3), box excluded, seed 1, 30 Lloyd iterations, %d threads\n\n",
+        used);
     try {
         std::vector<ComplexityReport> reports;
         std::vector<double> seconds;
@@ -122,10 +128,11 @@ int runComplexityBench(const std::string &dataDir, int threads)
             std::printf("\n");
         }
         const LocalComplexity &a5 = reports.back().local.back();
-        std::printf("  modelA5, %d cells: CVT %.2f s (%d Lloyd iterations) + counts %.2f s = %.2f s "
-                    "(target <= 20 s on 2 cores)\n",
-                    static_cast<int>(a5.counts.size()), a5.cvtSeconds, a5.cvt.iterations, a5.countSeconds,
-                    a5.cvtSeconds + a5.countSeconds);
+        std::printf(
+            "  modelA5, %d cells: CVT %.2f s (%d Lloyd iterations) + counts %.2f s = %.2f s "
+            "(target <= 20 s on 2 cores)\n",
+            static_cast<int>(a5.counts.size()), a5.cvtSeconds, a5.cvt.iterations, a5.countSeconds,
+            a5.cvtSeconds + a5.countSeconds);
         std::fflush(stdout);
     } catch (const std::exception &e) {
         std::fprintf(stderr, "stratamesh-bench: complexity: %s\n", e.what());

@@ -46,8 +46,8 @@ struct Row {
     MeshStatistics stats;
     double hausdorffPct = 0.0;
     bool valid = false;
-    std::size_t notSealed = 0;      // contact/border pieces that touch no other surface
-    std::size_t intersections = 0;  // intersecting triangle pairs
+    std::size_t notSealed = 0;     // contact/border pieces that touch no other surface
+    std::size_t intersections = 0; // intersecting triangle pairs
 };
 
 // Each surface remeshed alone by CGAL; line edges (borders, contacts, internal lines) are
@@ -73,11 +73,13 @@ Model cgalRemesh(const Model &input, double edgeLength, bool protect)
             vi.push_back(mesh.add_vertex(K::Point_3(p.x(), p.y(), p.z())));
         for (const Triangle &t : in.triangles)
             mesh.add_face(vi[t[0]], vi[t[1]], vi[t[2]]);
-        auto constrained = mesh.add_property_map<Mesh::Edge_index, bool>("e:constrained", false).first;
+        auto constrained =
+            mesh.add_property_map<Mesh::Edge_index, bool>("e:constrained", false).first;
         for (Mesh::Edge_index e : mesh.edges()) {
             const int a = input.surfaceVertexToGlobal[s][mesh.vertex(e, 0)];
             const int b = input.surfaceVertexToGlobal[s][mesh.vertex(e, 1)];
-            constrained[e] = mesh.is_border(e) || lineEdges.count({std::min(a, b), std::max(a, b)}) > 0;
+            constrained[e] =
+                mesh.is_border(e) || lineEdges.count({std::min(a, b), std::max(a, b)}) > 0;
         }
         PMP::isotropic_remeshing(faces(mesh), edgeLength, mesh,
                                  CGAL::parameters::number_of_iterations(3)
@@ -118,11 +120,12 @@ Row measure(const std::string &name, const Model &input, const Model &output, do
 
 void print(const Row &r)
 {
-    std::printf("  %-34s %7.2f s %7zu V %7zu T  Q %.3f  <30° %5.2f %%  min %5.2f°  H %.3f %%  %s (not sealed %zu, "
+    std::printf("  %-34s %7.2f s %7zu V %7zu T  Q %.3f  <30° %5.2f %%  min %5.2f°  H %.3f %%  %s "
+                "(not sealed %zu, "
                 "intersections %zu)\n",
                 r.name.c_str(), r.seconds, r.stats.vertices, r.stats.triangles, r.stats.meanQuality,
-                r.stats.pctTrianglesAngleBelow30, r.stats.minAngleDeg, r.hausdorffPct, r.valid ? "valid" : "NOT valid",
-                r.notSealed, r.intersections);
+                r.stats.pctTrianglesAngleBelow30, r.stats.minAngleDeg, r.hausdorffPct,
+                r.valid ? "valid" : "NOT valid", r.notSealed, r.intersections);
 }
 
 } // namespace
@@ -132,7 +135,8 @@ int runRemeshBench(const std::string &dataDir, int threads, int iterations, int 
     try {
         std::unique_ptr<tbb::global_control> limit;
         if (threads > 0)
-            limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+            limit = std::make_unique<tbb::global_control>(
+                tbb::global_control::max_allowed_parallelism, threads);
         const Model input = recoverTopology(readModel(dataDir + "/modelA5.ml"));
         std::printf("remesh: modelA5, 5000 sites, %d iterations, %d threads\n", iterations,
                     threads > 0 ? threads : tbb::info::default_concurrency());
@@ -144,15 +148,18 @@ int runRemeshBench(const std::string &dataDir, int threads, int iterations, int 
         const RemeshResult ours = remeshModel(input, params);
         Row row = measure("ours (CVT + dual mesh)", input, ours.model, ours.timings.totalSeconds);
         print(row);
-        std::printf("    sampling %.2f s, mesh building %.2f s, %zu ledger records\n", ours.timings.samplingSeconds,
-                    ours.timings.meshSeconds, ours.ledger.size());
+        std::printf("    sampling %.2f s, mesh building %.2f s, %zu ledger records\n",
+                    ours.timings.samplingSeconds, ours.timings.meshSeconds, ours.ledger.size());
         std::vector<double> totals{ours.timings.totalSeconds};
         for (int r = 1; r < repeat; ++r) {
             const RemeshResult again = remeshModel(input, params);
-            if (computeMeshStatistics(again.model).vertices != row.stats.vertices || again.ledger.size() != ours.ledger.size())
-                throw std::runtime_error("run " + std::to_string(r + 1) + " gave another model than the first");
-            std::printf("    run %d: %.2f s (sampling %.2f s, mesh building %.2f s)\n", r + 1, again.timings.totalSeconds,
-                        again.timings.samplingSeconds, again.timings.meshSeconds);
+            if (computeMeshStatistics(again.model).vertices != row.stats.vertices
+                || again.ledger.size() != ours.ledger.size())
+                throw std::runtime_error("run " + std::to_string(r + 1)
+                                         + " gave another model than the first");
+            std::printf("    run %d: %.2f s (sampling %.2f s, mesh building %.2f s)\n", r + 1,
+                        again.timings.totalSeconds, again.timings.samplingSeconds,
+                        again.timings.meshSeconds);
             totals.push_back(again.timings.totalSeconds);
         }
         printSpread("ours", totals);
@@ -161,14 +168,18 @@ int runRemeshBench(const std::string &dataDir, int threads, int iterations, int 
         double area = 0.0;
         for (const Surface &s : input.surfaces)
             for (const Triangle &t : s.triangles)
-                area += 0.5 * (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]).norm();
+                area += 0.5
+                        * (s.vertices[t[1]] - s.vertices[t[0]])
+                              .cross(s.vertices[t[2]] - s.vertices[t[0]])
+                              .norm();
         const double edge = std::sqrt(area / (params.sites * std::sqrt(3.0) / 2.0));
         std::printf("    target edge length %.1f\n", edge);
         for (bool protect : {true, false}) {
             const auto start = std::chrono::steady_clock::now();
             const Model cgal = cgalRemesh(input, edge, protect);
-            print(measure(protect ? "CGAL isotropic, lines protected" : "CGAL isotropic, lines split",
-                          input, cgal, since(start)));
+            print(
+                measure(protect ? "CGAL isotropic, lines protected" : "CGAL isotropic, lines split",
+                        input, cgal, since(start)));
         }
     } catch (const std::exception &e) {
         std::fprintf(stderr, "stratamesh-bench: remesh: %s\n", e.what());

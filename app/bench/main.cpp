@@ -1,4 +1,5 @@
-// stratamesh-bench [--case a|b|complexity|remesh|all] [--data-dir DIR] [--iterations N] [--threads N] [--alpha A]
+// stratamesh-bench [--case a|b|complexity|remesh|all] [--data-dir DIR] [--iterations N] [--threads
+// N] [--alpha A]
 //                  [--neighbours delaunay|nearest|both] [--repeat N]
 // Prints the Voronoi engine figures of issue 3: (a) modelA5 at 5000 sites, (b) a generated
 // surface of 1,000,000 triangles at 30,000 sites, 100 iterations each by default, with the
@@ -37,15 +38,18 @@ void print(const bench::BenchResult &r)
     std::printf("  optimisation      %.3f s total\n", r.totalSeconds);
     std::printf("  RVD integration   %.3f s, %.2f ms per evaluation\n", r.rvdSeconds,
                 1e3 * r.rvdSeconds / std::max(1, r.evaluations));
-    std::printf("  neighbours        %.3f s, %.2f ms per evaluation, %d searches (other evaluations reused the lists)\n",
-                r.delaunaySeconds, 1e3 * r.delaunaySeconds / std::max(1, r.evaluations), r.neighbourSearches);
+    std::printf("  neighbours        %.3f s, %.2f ms per evaluation, %d searches (other "
+                "evaluations reused the lists)\n",
+                r.delaunaySeconds, 1e3 * r.delaunaySeconds / std::max(1, r.evaluations),
+                r.neighbourSearches);
     std::printf("  final symbolic RVD %.3f s\n", r.finalRvdSeconds);
     std::printf("  peak memory       %.0f MB\n", r.peakRssMb);
     std::printf("  threads           %d\n", r.threads);
     std::fflush(stdout);
 }
 
-template <class Run> void runRepeated(int repeat, Run &&run)
+template <class Run>
+void runRepeated(int repeat, Run &&run)
 {
     std::vector<double> seconds;
     for (int r = 0; r < repeat; ++r) {
@@ -62,7 +66,8 @@ int main(int argc, char **argv)
 {
     // The data folder: --data-dir, else STRATAMESH_DATA_DIR, else the one configured by CMake.
     const char *environment = std::getenv("STRATAMESH_DATA_DIR");
-    std::string which = "all", dataDir = environment ? environment : STRATAMESH_BENCH_DATA_DIR, neighbours = "both";
+    std::string which = "all", dataDir = environment ? environment : STRATAMESH_BENCH_DATA_DIR,
+                neighbours = "both";
     int iterations = 100, threads = 0, repeat = 1;
     double alpha = 0;
     for (int i = 1; i < argc; ++i) {
@@ -89,8 +94,11 @@ int main(int argc, char **argv)
         else if (a == "--repeat")
             repeat = std::max(1, std::atoi(value().c_str()));
         else {
-            std::fprintf(stderr, "usage: stratamesh-bench [--case a|b|complexity|remesh|all] [--data-dir DIR] [--iterations N] "
-                                 "[--threads N] [--alpha A] [--neighbours delaunay|nearest|both] [--repeat N]\n");
+            std::fprintf(
+                stderr,
+                "usage: stratamesh-bench [--case a|b|complexity|remesh|all] [--data-dir DIR] "
+                "[--iterations N] "
+                "[--threads N] [--alpha A] [--neighbours delaunay|nearest|both] [--repeat N]\n");
             return 2;
         }
     }
@@ -109,26 +117,30 @@ int main(int argc, char **argv)
             const std::string path = dataDir + "/modelA5.ml";
             const Model model = recoverTopology(readModel(path));
             const RestrictionDomain domain = makeRestrictionDomain(model);
-            const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            const double setup =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             for (const auto &[search, label] : searches)
                 runRepeated(repeat, [&] {
-                    return bench::runCase("(a) modelA5, 5000 sites, " + label, domain, 5000, iterations, alpha,
-                                          threads, search, setup);
+                    return bench::runCase("(a) modelA5, 5000 sites, " + label, domain, 5000,
+                                          iterations, alpha, threads, search, setup);
                 });
         }
         if (which == "b" || which == "all") {
             const auto start = std::chrono::steady_clock::now();
             const RestrictionDomain domain = bench::generatedSurface(1000000);
-            const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            const double setup =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             for (const auto &[search, label] : searches)
                 runRepeated(repeat, [&] {
-                    return bench::runCase("(b) generated surface, 30000 sites, " + label, domain, 30000, iterations,
-                                          alpha, threads, search, setup);
+                    return bench::runCase("(b) generated surface, 30000 sites, " + label, domain,
+                                          30000, iterations, alpha, threads, search, setup);
                 });
         }
-        if ((which == "complexity" || which == "all") && bench::runComplexityBench(dataDir, threads) != 0)
+        if ((which == "complexity" || which == "all")
+            && bench::runComplexityBench(dataDir, threads) != 0)
             return 1;
-        if ((which == "remesh" || which == "all") && bench::runRemeshBench(dataDir, threads, iterations, repeat) != 0)
+        if ((which == "remesh" || which == "all")
+            && bench::runRemeshBench(dataDir, threads, iterations, repeat) != 0)
             return 1;
     } catch (const std::exception &e) {
         std::fprintf(stderr, "stratamesh-bench: %s\n", e.what());

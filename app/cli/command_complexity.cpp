@@ -28,9 +28,10 @@ std::vector<int> parseCells(const QString &text)
         bool ok = false;
         const int n = part.trimmed().toInt(&ok);
         if (!ok || n < 1 || n > 1000000)
-            throw UsageError(QStringLiteral("--cells takes numbers of cells in [1, 1000000] separated by "
-                                            "commas, not '%1'")
-                                 .arg(text));
+            throw UsageError(
+                QStringLiteral("--cells takes numbers of cells in [1, 1000000] separated by "
+                               "commas, not '%1'")
+                    .arg(text));
         cells.push_back(n);
     }
     return cells;
@@ -42,7 +43,8 @@ QString vtkPath(const QString &base, int cells, bool several)
         return base;
     const QFileInfo info(base);
     const QString suffix = info.suffix().isEmpty() ? QStringLiteral("vtu") : info.suffix();
-    return info.dir().filePath(QStringLiteral("%1_%2.%3").arg(info.completeBaseName()).arg(cells).arg(suffix));
+    return info.dir().filePath(
+        QStringLiteral("%1_%2.%3").arg(info.completeBaseName()).arg(cells).arg(suffix));
 }
 
 QJsonObject measuresJson(const Model &model, const GeometricComplexity &g)
@@ -61,8 +63,10 @@ QJsonObject measuresJson(const Model &model, const GeometricComplexity &g)
     add("region", g.regions, [&](int i) { return model.regions[i].name; });
     add("surface", g.surfaces, [&](int i) { return model.surfaces[i].name; });
     add("line", g.lines, [&](int i) { return model.lines[i].name; });
-    return QJsonObject{{"regions", g.regionsTotal}, {"surfaces", g.surfacesTotal},
-                       {"lines", g.linesTotal},     {"total", g.total()},
+    return QJsonObject{{"regions", g.regionsTotal},
+                       {"surfaces", g.surfacesTotal},
+                       {"lines", g.linesTotal},
+                       {"total", g.total()},
                        {"elements", elements}};
 }
 
@@ -94,17 +98,17 @@ QJsonObject reportJson(const QString &path, const Model &model, const Complexity
                                    {"cells", cells},
                                    {"seed", QString::number(params.seed)},
                                    {"iterations", params.iterations}}},
-        {"global",
-         QJsonObject{{"counts", QJsonObject{{"regions", c.regions},
-                                            {"surfaces", c.surfaces},
-                                            {"lines", c.lines},
-                                            {"corners", c.corners},
-                                            {"total", c.regions + c.surfaces + c.lines + c.corners}}},
-                     {"geometric", measuresJson(model, r.geometric)},
-                     {"variation", QJsonObject{{"regions", r.variation.regions},
-                                               {"surfaces", r.variation.surfaces},
-                                               {"lines", r.variation.lines},
-                                               {"total", r.variation.total}}}}},
+        {"global", QJsonObject{{"counts", QJsonObject{{"regions", c.regions},
+                                                      {"surfaces", c.surfaces},
+                                                      {"lines", c.lines},
+                                                      {"corners", c.corners},
+                                                      {"total", c.regions + c.surfaces + c.lines
+                                                                    + c.corners}}},
+                               {"geometric", measuresJson(model, r.geometric)},
+                               {"variation", QJsonObject{{"regions", r.variation.regions},
+                                                         {"surfaces", r.variation.surfaces},
+                                                         {"lines", r.variation.lines},
+                                                         {"total", r.variation.total}}}}},
         {"local", local},
         {"timings", timings},
     };
@@ -117,13 +121,13 @@ void printText(const QString &path, const ComplexityParams &params, const Comple
     const EntityCounts &c = r.counts;
     o << QFileInfo(path).fileName() << " — complexity (box excluded; thesis ch. 3)\n\n";
     o << "counts (Table 3.1): regions " << c.regions << ", surfaces " << c.surfaces << ", lines "
-      << c.lines << ", corners " << c.corners << ", total " << c.regions + c.surfaces + c.lines + c.corners
-      << "\n";
+      << c.lines << ", corners " << c.corners << ", total "
+      << c.regions + c.surfaces + c.lines + c.corners << "\n";
     auto f2 = [](double v) { return QString::number(v, 'f', 2); };
     o << "geometric C_t+C_f+C_e+C_a (Table 3.2, h " << params.geometric.h << ", alpha "
-      << params.geometric.alphaDegrees << "°): regions " << f2(r.geometric.regionsTotal) << ", surfaces "
-      << f2(r.geometric.surfacesTotal) << ", lines " << f2(r.geometric.linesTotal) << ", total "
-      << f2(r.geometric.total()) << "\n";
+      << params.geometric.alphaDegrees << "°): regions " << f2(r.geometric.regionsTotal)
+      << ", surfaces " << f2(r.geometric.surfacesTotal) << ", lines " << f2(r.geometric.linesTotal)
+      << ", total " << f2(r.geometric.total()) << "\n";
     o << "size variation std/mean (Table 3.3): regions " << f2(r.variation.regions) << ", surfaces "
       << f2(r.variation.surfaces) << ", lines " << f2(r.variation.lines) << ", total "
       << f2(r.variation.total) << "\n\n";
@@ -167,7 +171,8 @@ int runComplexity(CommandArgs &args)
         bool ok = false;
         params.seed = seed->toULongLong(&ok);
         if (!ok)
-            throw UsageError(QStringLiteral("--seed takes a non-negative integer, not '%1'").arg(*seed));
+            throw UsageError(
+                QStringLiteral("--seed takes a non-negative integer, not '%1'").arg(*seed));
     }
     params.iterations = args.intOption(QStringLiteral("--iterations"), params.iterations, 0, 10000);
     const std::optional<QString> vtk = args.option(QStringLiteral("--cells-vtk"));
@@ -191,9 +196,10 @@ int runComplexity(CommandArgs &args)
     timer.restart();
     if (vtk) {
         for (const LocalComplexity &l : report.local)
-            writeLocalComplexityVtu(vtkPath(*vtk, static_cast<int>(l.counts.size()), report.local.size() > 1)
-                                        .toStdString(),
-                                    l);
+            writeLocalComplexityVtu(
+                vtkPath(*vtk, static_cast<int>(l.counts.size()), report.local.size() > 1)
+                    .toStdString(),
+                l);
         lap(QStringLiteral("export_s"));
     }
     if (json)

@@ -20,7 +20,8 @@ namespace {
 bool isModelFormat(const QString &path)
 {
     const QString ext = QFileInfo(path).suffix().toLower();
-    return ext == "ml" || ext == "ts" || ext == "gm" || ext == "obj" || ext == "off" || ext == "stl" || ext == "ply";
+    return ext == "ml" || ext == "ts" || ext == "gm" || ext == "obj" || ext == "off" || ext == "stl"
+           || ext == "ply";
 }
 
 } // namespace
@@ -36,35 +37,45 @@ int runConvert(CommandArgs &args)
         else if (*version == QLatin1String("2.2"))
             options.gmsh.version = GmshWriteOptions::Version::V22;
         else
-            throw UsageError(QStringLiteral("--msh-version must be 4.1 or 2.2, not '%1'").arg(*version));
+            throw UsageError(
+                QStringLiteral("--msh-version must be 4.1 or 2.2, not '%1'").arg(*version));
     }
     options.surface = args.intOption(QStringLiteral("--surface"), -1, -1, 1 << 30);
     const QString in = args.positional(QStringLiteral("input file"));
     const QString output = args.positional(QStringLiteral("output file"));
     args.finish();
     if (!isExportFile(output.toStdString()))
-        throw UsageError(QStringLiteral("cannot tell the output format of '%1' (use .ml, .ts, .gm, .so, .vtu, "
-                                        ".vtk, .vtp, .msh, .obj, .off, .stl or .ply)")
-                             .arg(output));
+        throw UsageError(
+            QStringLiteral("cannot tell the output format of '%1' (use .ml, .ts, .gm, .so, .vtu, "
+                           ".vtk, .vtp, .msh, .obj, .off, .stl or .ply)")
+                .arg(output));
 
     ExportReport report;
     QJsonObject counts;
     // A GeoModel without region meshes is a B-Rep: read it whole (universe, layers, features).
-    const bool brepGeoModel = isRingMeshFile(in.toStdString()) && !hasRingMeshRegionMeshes(in.toStdString());
+    const bool brepGeoModel =
+        isRingMeshFile(in.toStdString()) && !hasRingMeshRegionMeshes(in.toStdString());
     if (isMeshReaderFile(in.toStdString()) && !brepGeoModel) {
         const VolumeMesh mesh = readVolumeMesh(in.toStdString());
-        counts = QJsonObject{{"points", qint64(mesh.points.size())},    {"cells", qint64(mesh.cells.size())},
-                             {"triangles", qint64(mesh.triangles.size())}, {"edges", qint64(mesh.edges.size())},
-                             {"regions", qint64(mesh.regionNames.size())}, {"surfaces", qint64(mesh.surfaces.size())}};
+        counts = QJsonObject{{"points", qint64(mesh.points.size())},
+                             {"cells", qint64(mesh.cells.size())},
+                             {"triangles", qint64(mesh.triangles.size())},
+                             {"edges", qint64(mesh.edges.size())},
+                             {"regions", qint64(mesh.regionNames.size())},
+                             {"surfaces", qint64(mesh.surfaces.size())}};
         if (!mesh.hasCells() && isModelFormat(output))
-            report = exportModel(recoverTopology(modelFromMesh(mesh)), output.toStdString(), options);
+            report =
+                exportModel(recoverTopology(modelFromMesh(mesh)), output.toStdString(), options);
         else
             report = exportVolumeMesh(mesh, output.toStdString(), options);
     } else {
         const Model model = recoverTopology(readModel(in.toStdString()));
-        counts = QJsonObject{{"points", qint64(model.vertices.size())}, {"cells", 0},
-                             {"triangles", qint64(model.triangleCount())}, {"lines", qint64(model.lines.size())},
-                             {"regions", qint64(model.regions.size())},    {"surfaces", qint64(model.surfaces.size())}};
+        counts = QJsonObject{{"points", qint64(model.vertices.size())},
+                             {"cells", 0},
+                             {"triangles", qint64(model.triangleCount())},
+                             {"lines", qint64(model.lines.size())},
+                             {"regions", qint64(model.regions.size())},
+                             {"surfaces", qint64(model.surfaces.size())}};
         report = exportModel(model, output.toStdString(), options);
     }
 
@@ -77,15 +88,17 @@ int runConvert(CommandArgs &args)
                               {"cells_dropped", qint64(report.cellsDropped)}});
     } else {
         QTextStream &s = cli::out();
-        s << "wrote " << output << " (" << QString::fromStdString(report.format) << "): "
-          << counts.value("triangles").toInteger() << " triangles, " << counts.value("cells").toInteger()
-          << " cells, " << counts.value("regions").toInteger() << " regions\n";
+        s << "wrote " << output << " (" << QString::fromStdString(report.format)
+          << "): " << counts.value("triangles").toInteger() << " triangles, "
+          << counts.value("cells").toInteger() << " cells, " << counts.value("regions").toInteger()
+          << " regions\n";
         if (report.untaggedSkipped > 0)
             s << "note: " << report.untaggedSkipped
               << " elements without a region, surface or line were left out (as Gmsh does); "
                  "--save-all keeps them\n";
         if (report.cellsDropped > 0)
-            s << "note: " << report.cellsDropped << " volume cells are not part of this format and were left out\n";
+            s << "note: " << report.cellsDropped
+              << " volume cells are not part of this format and were left out\n";
     }
     return 0;
 }

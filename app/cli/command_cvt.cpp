@@ -58,26 +58,31 @@ int runCvt(CommandArgs &args)
     const bool lloyd = args.flag(QStringLiteral("--lloyd"));
     const int sites = args.intOption(QStringLiteral("--sites"), 0, 1, 10000000);
     const int iterations = args.intOption(QStringLiteral("--iterations"), 100, 0, 1000000);
-    const int seed = args.intOption(QStringLiteral("--seed"), 1, 0, std::numeric_limits<int>::max());
+    const int seed =
+        args.intOption(QStringLiteral("--seed"), 1, 0, std::numeric_limits<int>::max());
     const double alpha = args.doubleOption(QStringLiteral("--alpha"), 0.0, 0.0, 1.0);
     const std::optional<QString> sitesOut = args.option(QStringLiteral("--sites-out"));
-    const QString neighbours = args.option(QStringLiteral("--neighbours")).value_or(QStringLiteral("nearest"));
+    const QString neighbours =
+        args.option(QStringLiteral("--neighbours")).value_or(QStringLiteral("nearest"));
     const QString path = args.positional(QStringLiteral("MODEL"));
     args.finish();
     if (sites < 1)
         throw UsageError(QStringLiteral("--sites N is required (N ≥ 1)"));
     if (neighbours != QLatin1String("delaunay") && neighbours != QLatin1String("nearest"))
         throw UsageError(QStringLiteral("--neighbours takes delaunay or nearest"));
-    const NeighbourSearch search =
-        neighbours == QLatin1String("nearest") ? NeighbourSearch::NearestNeighbours : NeighbourSearch::Delaunay;
+    const NeighbourSearch search = neighbours == QLatin1String("nearest")
+                                       ? NeighbourSearch::NearestNeighbours
+                                       : NeighbourSearch::Delaunay;
     if (lloyd && alpha > 0)
-        throw UsageError(QStringLiteral("--lloyd minimises the CVT energy only: it cannot take --alpha"));
+        throw UsageError(
+            QStringLiteral("--lloyd minimises the CVT energy only: it cannot take --alpha"));
 
     QElapsedTimer timer;
     timer.start();
     const Model model = recoverTopology(readModel(path.toStdString()));
     const RestrictionDomain domain = makeRestrictionDomain(model);
-    const std::vector<Vec3> initial = sampleSurfaces(domain, sites, static_cast<std::uint64_t>(seed));
+    const std::vector<Vec3> initial =
+        sampleSurfaces(domain, sites, static_cast<std::uint64_t>(seed));
 
     CvtParams params;
     params.iterations = iterations;
@@ -86,10 +91,12 @@ int runCvt(CommandArgs &args)
     params.neighbourSearch = search;
     if (!json)
         params.onIteration = [](const CvtIterationReport &r) {
-            std::fprintf(stderr, "iteration %d: F = %.9g, |grad F| = %.4g\n", r.iteration, r.energy, r.gradientNorm);
+            std::fprintf(stderr, "iteration %d: F = %.9g, |grad F| = %.4g\n", r.iteration, r.energy,
+                         r.gradientNorm);
         };
     const CvtResult result = optimizeCvt(domain, initial, params);
-    const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(domain, result.sites, Progress::none(), search);
+    const RestrictedVoronoiDiagram rvd =
+        computeRestrictedVoronoi(domain, result.sites, Progress::none(), search);
     const RestrictedDelaunayQuality q = restrictedDelaunayQuality(restrictedDelaunay(domain, rvd));
     if (sitesOut)
         writeXyz(sitesOut->toStdString(), result.sites);
@@ -130,14 +137,17 @@ int runCvt(CommandArgs &args)
     }
     out() << "model        " << path << '\n'
           << "sites        " << sites << " (" << emptyCells << " empty cells)\n"
-          << "iterations   " << result.iterations << " (" << QString::fromStdString(result.stopReason) << ", "
-          << result.evaluations << " evaluations)\n"
+          << "iterations   " << result.iterations << " ("
+          << QString::fromStdString(result.stopReason) << ", " << result.evaluations
+          << " evaluations)\n"
           << "energy       " << result.initialEnergy << " -> "
           << (result.energy.empty() ? result.initialEnergy : result.energy.back()) << '\n'
-          << "RDT          " << q.triangles << " triangles, mean Q " << q.meanQuality << ", min angle "
-          << q.minAngleDeg << " deg, " << q.percentAngleBelow30 << " % with an angle < 30 deg\n"
-          << "time         " << total << " s (RVD " << result.rvdSeconds << " s, Delaunay " << result.delaunaySeconds
-          << " s, " << result.threads << " threads), peak memory " << peakRssMb() << " MB\n";
+          << "RDT          " << q.triangles << " triangles, mean Q " << q.meanQuality
+          << ", min angle " << q.minAngleDeg << " deg, " << q.percentAngleBelow30
+          << " % with an angle < 30 deg\n"
+          << "time         " << total << " s (RVD " << result.rvdSeconds << " s, Delaunay "
+          << result.delaunaySeconds << " s, " << result.threads << " threads), peak memory "
+          << peakRssMb() << " MB\n";
     return 0;
 }
 

@@ -1,8 +1,8 @@
 #include "complexity_controller.h"
 
-#include "error_message.h"
 #include "common/error.h"
 #include "common/progress.h"
+#include "error_message.h"
 
 #include <QElapsedTimer>
 #include <QPromise>
@@ -29,8 +29,8 @@ int overallPercent(double fraction, const std::string &stage)
 }
 
 // Runs in the worker thread: core work only, plus conversion into messages.
-void runComplexity(QPromise<ComplexityRun> &promise, std::shared_ptr<const Model> model, ComplexityParams params,
-                   std::shared_ptr<Progress> cancel)
+void runComplexity(QPromise<ComplexityRun> &promise, std::shared_ptr<const Model> model,
+                   ComplexityParams params, std::shared_ptr<Progress> cancel)
 {
     QElapsedTimer timer;
     timer.start();
@@ -42,16 +42,20 @@ void runComplexity(QPromise<ComplexityRun> &promise, std::shared_ptr<const Model
         if (cancel->isCancelled() || promise.isCanceled())
             throw Cancelled();
         percent = std::max(percent, overallPercent(fraction, stage));
-        const QString text = stage.empty() ? measuring : measuring + QStringLiteral(": ") + QString::fromStdString(stage);
+        const QString text = stage.empty()
+                                 ? measuring
+                                 : measuring + QStringLiteral(": ") + QString::fromStdString(stage);
         promise.setProgressValueAndText(percent, text);
     });
     try {
         promise.setProgressValueAndText(0, measuring);
-        auto report = std::make_shared<ComplexityReport>(computeComplexity(*model, params, progress));
+        auto report =
+            std::make_shared<ComplexityReport>(computeComplexity(*model, params, progress));
         if (cancel->isCancelled())
             throw Cancelled();
         ComplexityOutcome &o = run.outcome;
-        o.cells = std::make_shared<const std::vector<ConvexPolyhedron>>(report->local.front().cvt.cells);
+        o.cells =
+            std::make_shared<const std::vector<ConvexPolyhedron>>(report->local.front().cvt.cells);
         o.report = std::move(report);
         o.model = std::move(model);
         o.params = params;
@@ -72,10 +76,14 @@ ComplexityController::ComplexityController(QObject *parent) : WorkflowJob(parent
 {
     qRegisterMetaType<stratamesh::ComplexityOutcome>();
     relayProgress(m_watcher);
-    connect(&m_watcher, &QFutureWatcher<ComplexityRun>::finished, this, &ComplexityController::onFinished);
+    connect(&m_watcher, &QFutureWatcher<ComplexityRun>::finished, this,
+            &ComplexityController::onFinished);
 }
 
-ComplexityController::~ComplexityController() { stop(m_watcher); }
+ComplexityController::~ComplexityController()
+{
+    stop(m_watcher);
+}
 
 bool ComplexityController::start(std::shared_ptr<const Model> model, const ComplexityParams &params)
 {
@@ -84,7 +92,8 @@ bool ComplexityController::start(std::shared_ptr<const Model> model, const Compl
     std::shared_ptr<Progress> progress = begin();
     if (!progress)
         return false;
-    m_watcher.setFuture(QtConcurrent::run(&runComplexity, std::move(model), params, std::move(progress)));
+    m_watcher.setFuture(
+        QtConcurrent::run(&runComplexity, std::move(model), params, std::move(progress)));
     return true;
 }
 
@@ -95,7 +104,8 @@ void ComplexityController::onFinished()
     if (future.resultCount() > 0)
         run = future.result();
     else
-        run.error = {Message::Severity::Error, tr("The complexity analysis stopped without a result"), QString(), 0};
+        run.error = {Message::Severity::Error,
+                     tr("The complexity analysis stopped without a result"), QString(), 0};
     end(run.status, run.error, [&] { emit succeeded(run.outcome); });
 }
 

@@ -12,8 +12,8 @@
 namespace stratamesh {
 
 ComplexityDialog::ComplexityDialog(QWidget *parent)
-    : QDialog(parent), m_h(new QDoubleSpinBox(this)), m_alpha(new QDoubleSpinBox(this)), m_cells(new QSpinBox(this)),
-      m_seed(new QSpinBox(this))
+    : QDialog(parent), m_h(new QDoubleSpinBox(this)), m_alpha(new QDoubleSpinBox(this)),
+      m_cells(new QSpinBox(this)), m_seed(new QSpinBox(this))
 {
     setObjectName(QStringLiteral("ComplexityDialog"));
     setWindowTitle(tr("Complexity Analysis"));
@@ -23,20 +23,23 @@ ComplexityDialog::ComplexityDialog(QWidget *parent)
     m_h->setRange(0.001, 1e9);
     m_h->setValue(defaults.geometric.h);
     m_h->setSuffix(tr(" m"));
-    m_h->setToolTip(tr("Characteristic size: elements smaller than h (h² for surfaces, h³ for regions) are "
-                       "complex (thesis Table 3.2)."));
+    m_h->setToolTip(
+        tr("Characteristic size: elements smaller than h (h² for surfaces, h³ for regions) are "
+           "complex (thesis Table 3.2)."));
     m_alpha->setObjectName(QStringLiteral("alpha"));
     m_alpha->setDecimals(1);
     m_alpha->setRange(0.1, 180.0);
     m_alpha->setValue(defaults.geometric.alphaDegrees);
     m_alpha->setSuffix(QStringLiteral("°"));
-    m_alpha->setToolTip(tr("Angles between elements smaller than α are complex (thesis Table 3.2)."));
+    m_alpha->setToolTip(
+        tr("Angles between elements smaller than α are complex (thesis Table 3.2)."));
     m_cells->setObjectName(QStringLiteral("cells"));
     m_cells->setRange(1, kMaxCells);
     m_cells->setGroupSeparatorShown(true);
     m_cells->setValue(kDefaultCells);
-    m_cells->setToolTip(tr("Cells of the volumetric Voronoi diagram in which model elements are counted "
-                           "(thesis Table 3.4: 100, 1000, 10000)."));
+    m_cells->setToolTip(
+        tr("Cells of the volumetric Voronoi diagram in which model elements are counted "
+           "(thesis Table 3.4: 100, 1000, 10000)."));
     m_seed->setObjectName(QStringLiteral("seed"));
     m_seed->setRange(0, 2147483647);
     m_seed->setValue(int(defaults.seed));

@@ -4,8 +4,8 @@
 
 #include "complexity/complexity_report.h"
 #include "message.h"
-#include "workflow_job.h"
 #include "model/model.h"
+#include "workflow_job.h"
 
 #include <QMetaType>
 
@@ -14,8 +14,8 @@
 namespace stratamesh {
 
 struct ComplexityOutcome {
-    std::shared_ptr<const Model> model; // the model that was measured, unchanged
-    ComplexityParams params;            // params.cells holds the one number of cells
+    std::shared_ptr<const Model> model;             // the model that was measured, unchanged
+    ComplexityParams params;                        // params.cells holds the one number of cells
     std::shared_ptr<const ComplexityReport> report; // report->local has one entry
     // The cells of report->local[0].cvt.cells, shared with the heat map.
     std::shared_ptr<const std::vector<ConvexPolyhedron>> cells;

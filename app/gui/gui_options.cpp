@@ -11,7 +11,8 @@ QString languageArgument(const QStringList &arguments)
 {
     for (int i = 1; i < arguments.size(); ++i) {
         const QString &a = arguments[i];
-        if ((a == QLatin1String("--lang") || a == QLatin1String("-lang")) && i + 1 < arguments.size())
+        if ((a == QLatin1String("--lang") || a == QLatin1String("-lang"))
+            && i + 1 < arguments.size())
             return arguments[i + 1].toLower();
         if (a.startsWith(QLatin1String("--lang=")))
             return a.mid(7).toLower();
@@ -22,39 +23,44 @@ QString languageArgument(const QStringList &arguments)
 bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exitCode)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QCoreApplication::translate("GuiOptions", "StrataMesh: remeshing and meshing of 3D structural models."));
+    parser.setApplicationDescription(QCoreApplication::translate(
+        "GuiOptions", "StrataMesh: remeshing and meshing of 3D structural models."));
     parser.addHelpOption();
     parser.addVersionOption();
-    const QCommandLineOption open(QStringLiteral("open"),
-                                  QCoreApplication::translate("GuiOptions", "Open the model in <file>."),
-                                  QStringLiteral("file"));
+    const QCommandLineOption open(
+        QStringLiteral("open"),
+        QCoreApplication::translate("GuiOptions", "Open the model in <file>."),
+        QStringLiteral("file"));
     const QCommandLineOption screenshot(
         QStringLiteral("screenshot"),
-        QCoreApplication::translate("GuiOptions",
-                                    "Load the model, save the window as a PNG image in <png> and exit "
-                                    "(status 0 when saved, 1 when the image could not be written, 2 when the "
-                                    "model could not be opened)."),
+        QCoreApplication::translate(
+            "GuiOptions", "Load the model, save the window as a PNG image in <png> and exit "
+                          "(status 0 when saved, 1 when the image could not be written, 2 when the "
+                          "model could not be opened)."),
         QStringLiteral("png"));
-    const QCommandLineOption lang(QStringLiteral("lang"),
-                                  QCoreApplication::translate("GuiOptions", "User interface language: fr or en."),
-                                  QStringLiteral("language"));
-    const QCommandLineOption showBox(QStringLiteral("show-box"),
-                                     QCoreApplication::translate("GuiOptions", "Start with the box surfaces shown."));
-    const QCommandLineOption showEdges(QStringLiteral("show-edges"),
-                                       QCoreApplication::translate("GuiOptions", "Start with triangle edges shown."));
+    const QCommandLineOption lang(
+        QStringLiteral("lang"),
+        QCoreApplication::translate("GuiOptions", "User interface language: fr or en."),
+        QStringLiteral("language"));
+    const QCommandLineOption showBox(
+        QStringLiteral("show-box"),
+        QCoreApplication::translate("GuiOptions", "Start with the box surfaces shown."));
+    const QCommandLineOption showEdges(
+        QStringLiteral("show-edges"),
+        QCoreApplication::translate("GuiOptions", "Start with triangle edges shown."));
     const QCommandLineOption remeshSites(
         QStringLiteral("remesh-sites"),
-        QCoreApplication::translate("GuiOptions",
-                                    "Remesh the model with <n> sites once it is open (with --screenshot, the "
-                                    "picture shows the result with its first simplification selected)."),
+        QCoreApplication::translate(
+            "GuiOptions", "Remesh the model with <n> sites once it is open (with --screenshot, the "
+                          "picture shows the result with its first simplification selected)."),
         QStringLiteral("n"));
     parser.addOption(remeshSites);
     const QCommandLineOption complexityCells(
         QStringLiteral("complexity-cells"),
-        QCoreApplication::translate("GuiOptions",
-                                    "Measure the complexity of the model with <n> cells once it is open (with "
-                                    "--screenshot, the picture shows the heat map and the Complexity dock)."),
+        QCoreApplication::translate(
+            "GuiOptions",
+            "Measure the complexity of the model with <n> cells once it is open (with "
+            "--screenshot, the picture shows the heat map and the Complexity dock)."),
         QStringLiteral("n"));
     parser.addOption(complexityCells);
     parser.addOption(showBox);
@@ -62,9 +68,10 @@ bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exi
     parser.addOption(open);
     parser.addOption(screenshot);
     parser.addOption(lang);
-    parser.addPositionalArgument(QStringLiteral("file"),
-                                 QCoreApplication::translate("GuiOptions", "Model to open (same as --open)."),
-                                 QStringLiteral("[file]"));
+    parser.addPositionalArgument(
+        QStringLiteral("file"),
+        QCoreApplication::translate("GuiOptions", "Model to open (same as --open)."),
+        QStringLiteral("[file]"));
     if (!parser.parse(arguments)) {
         std::fprintf(stderr, "%s\n", qPrintable(parser.errorText()));
         exitCode = 2;
@@ -93,8 +100,9 @@ bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exi
         options.remeshSites = parser.value(remeshSites).toInt(&ok);
         if (!ok || options.remeshSites < 4) {
             std::fprintf(stderr, "%s\n",
-                         qPrintable(QCoreApplication::translate("GuiOptions", "--remesh-sites needs a number of "
-                                                                              "sites of at least 4, not '%1'.")
+                         qPrintable(QCoreApplication::translate("GuiOptions",
+                                                                "--remesh-sites needs a number of "
+                                                                "sites of at least 4, not '%1'.")
                                         .arg(parser.value(remeshSites))));
             exitCode = 2;
             return false;
@@ -105,17 +113,19 @@ bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exi
         options.complexityCells = parser.value(complexityCells).toInt(&ok);
         if (!ok || options.complexityCells < 1) {
             std::fprintf(stderr, "%s\n",
-                         qPrintable(QCoreApplication::translate("GuiOptions", "--complexity-cells needs a number of "
-                                                                              "cells of at least 1, not '%1'.")
+                         qPrintable(QCoreApplication::translate(
+                                        "GuiOptions", "--complexity-cells needs a number of "
+                                                      "cells of at least 1, not '%1'.")
                                         .arg(parser.value(complexityCells))));
             exitCode = 2;
             return false;
         }
     }
-    if (!options.language.isEmpty() && options.language != QLatin1String("fr") &&
-        options.language != QLatin1String("en")) {
+    if (!options.language.isEmpty() && options.language != QLatin1String("fr")
+        && options.language != QLatin1String("en")) {
         std::fprintf(stderr, "%s\n",
-                     qPrintable(QCoreApplication::translate("GuiOptions", "Unknown language '%1': use fr or en.")
+                     qPrintable(QCoreApplication::translate("GuiOptions",
+                                                            "Unknown language '%1': use fr or en.")
                                     .arg(options.language)));
         exitCode = 2;
         return false;

@@ -13,7 +13,7 @@ struct GuiOptions {
     QString language;       // "fr", "en", or empty for the system locale
     bool showBox = false;
     bool showEdges = false;
-    int remeshSites = 0;    // > 0: remesh with this many sites once the model is open
+    int remeshSites = 0;     // > 0: remesh with this many sites once the model is open
     int complexityCells = 0; // > 0: measure the complexity with this many cells once it is open
 };
 

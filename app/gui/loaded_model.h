@@ -25,8 +25,8 @@ struct LoadedModel {
 
 struct LoadResult {
     bool ok = false;
-    LoadedModel loaded;  // when ok
-    Message error;       // when not ok
+    LoadedModel loaded; // when ok
+    Message error;      // when not ok
 };
 
 } // namespace stratamesh

@@ -37,38 +37,47 @@ int main(int argc, char **argv)
         QTimer::singleShot(300, &window, [&, ok] {
             const bool saved = stratamesh::saveWindowScreenshot(&window, options.screenshotPath);
             if (!saved)
-                std::fprintf(stderr, "stratamesh: cannot write %s\n", qPrintable(options.screenshotPath));
+                std::fprintf(stderr, "stratamesh: cannot write %s\n",
+                             qPrintable(options.screenshotPath));
             QApplication::exit(!saved ? 1 : ok ? 0 : 2);
         });
     };
     if (options.remeshSites > 0) {
-        QObject::connect(&window, &stratamesh::MainWindow::loadFinished, &window, [&](bool ok) {
-            stratamesh::RemeshParams params;
-            params.sites = options.remeshSites;
-            if (!ok || !window.startRemesh(params)) {
-                if (!options.screenshotPath.isEmpty())
-                    screenshot(false);
-            }
-        }, Qt::SingleShotConnection);
-        if (!options.screenshotPath.isEmpty())
-            QObject::connect(&window, &stratamesh::MainWindow::remeshFinished, &window, [&](bool ok) {
-                if (ok) {
-                    window.ledgerPanel()->selectRow(0);
-                    window.resetCamera(); // the whole model, the marked record somewhere in it
+        QObject::connect(
+            &window, &stratamesh::MainWindow::loadFinished, &window,
+            [&](bool ok) {
+                stratamesh::RemeshParams params;
+                params.sites = options.remeshSites;
+                if (!ok || !window.startRemesh(params)) {
+                    if (!options.screenshotPath.isEmpty())
+                        screenshot(false);
                 }
-                screenshot(ok);
-            });
-    } else if (options.complexityCells > 0) {
-        QObject::connect(&window, &stratamesh::MainWindow::loadFinished, &window, [&](bool ok) {
-            stratamesh::ComplexityParams params;
-            params.cells = {options.complexityCells};
-            if (!ok || !window.startComplexity(params)) {
-                if (!options.screenshotPath.isEmpty())
-                    screenshot(false);
-            }
-        }, Qt::SingleShotConnection);
+            },
+            Qt::SingleShotConnection);
         if (!options.screenshotPath.isEmpty())
-            QObject::connect(&window, &stratamesh::MainWindow::complexityFinished, &window, screenshot);
+            QObject::connect(
+                &window, &stratamesh::MainWindow::remeshFinished, &window, [&](bool ok) {
+                    if (ok) {
+                        window.ledgerPanel()->selectRow(0);
+                        window.resetCamera(); // the whole model, the marked record somewhere in it
+                    }
+                    screenshot(ok);
+                });
+    } else if (options.complexityCells > 0) {
+        QObject::connect(
+            &window, &stratamesh::MainWindow::loadFinished, &window,
+            [&](bool ok) {
+                stratamesh::ComplexityParams params;
+                params.cells = {options.complexityCells};
+                if (!ok || !window.startComplexity(params)) {
+                    if (!options.screenshotPath.isEmpty())
+                        screenshot(false);
+                }
+            },
+            Qt::SingleShotConnection);
+        if (!options.screenshotPath.isEmpty())
+            QObject::connect(&window, &stratamesh::MainWindow::complexityFinished, &window,
+                             screenshot);
     } else if (!options.screenshotPath.isEmpty()) {
         QObject::connect(&window, &stratamesh::MainWindow::loadFinished, &window, screenshot);
     }

@@ -1,11 +1,10 @@
 #include "main_window.h"
 
-#include "error_message.h"
-#include "validity_messages.h"
 #include "about_dialog.h"
 #include "cell_heat_map.h"
-#include "complexity_controller.h"
 #include "comparison_table.h"
+#include "complexity_controller.h"
+#include "error_message.h"
 #include "feature_legend.h"
 #include "ledger_panel.h"
 #include "message_panel.h"
@@ -16,6 +15,7 @@
 #include "remesh_dialog.h"
 #include "tet_mesh_pair.h"
 #include "tetmesh_controller.h"
+#include "validity_messages.h"
 #include "vtk_view_widget.h"
 
 #include "common/error.h"
@@ -50,8 +50,9 @@
 namespace stratamesh {
 
 MainWindow::MainWindow(QWidget *parent)
-    : QMainWindow(parent), m_view(new VtkViewWidget(this)), m_controller(new OpenModelController(this)),
-      m_outputView(new VtkViewWidget(this)), m_remeshController(new RemeshController(this)),
+    : QMainWindow(parent), m_view(new VtkViewWidget(this)),
+      m_controller(new OpenModelController(this)), m_outputView(new VtkViewWidget(this)),
+      m_remeshController(new RemeshController(this)),
       m_complexityController(new ComplexityController(this)),
       m_tetmeshController(new TetmeshController(this))
 {
@@ -138,7 +139,8 @@ void MainWindow::createActions()
 {
     m_open = new QAction(this);
     m_open->setShortcut(QKeySequence::Open);
-    m_open->setIcon(QIcon::fromTheme(QStringLiteral("document-open"), style()->standardIcon(QStyle::SP_DialogOpenButton)));
+    m_open->setIcon(QIcon::fromTheme(QStringLiteral("document-open"),
+                                     style()->standardIcon(QStyle::SP_DialogOpenButton)));
     connect(m_open, &QAction::triggered, this, &MainWindow::chooseFile);
 
     m_openSample = new QAction(this);
@@ -168,7 +170,8 @@ void MainWindow::createActions()
     connect(m_about, &QAction::triggered, this, &MainWindow::showAbout);
     m_remesh = new QAction(this);
     m_remesh->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
-    m_remesh->setIcon(QIcon::fromTheme(QStringLiteral("system-run"), style()->standardIcon(QStyle::SP_BrowserReload)));
+    m_remesh->setIcon(QIcon::fromTheme(QStringLiteral("system-run"),
+                                       style()->standardIcon(QStyle::SP_BrowserReload)));
     m_remesh->setEnabled(false);
     connect(m_remesh, &QAction::triggered, this, &MainWindow::remesh);
     m_cancelRemesh = new QAction(this);
@@ -177,7 +180,8 @@ void MainWindow::createActions()
     connect(m_cancelRemesh, &QAction::triggered, this, &MainWindow::cancelRemesh);
     m_saveRemeshed = new QAction(this);
     m_saveRemeshed->setShortcut(QKeySequence::SaveAs);
-    m_saveRemeshed->setIcon(QIcon::fromTheme(QStringLiteral("document-save-as"), style()->standardIcon(QStyle::SP_DialogSaveButton)));
+    m_saveRemeshed->setIcon(QIcon::fromTheme(QStringLiteral("document-save-as"),
+                                             style()->standardIcon(QStyle::SP_DialogSaveButton)));
     m_saveRemeshed->setEnabled(false);
     connect(m_saveRemeshed, &QAction::triggered, this, &MainWindow::chooseRemeshedFile);
 
@@ -293,11 +297,13 @@ void MainWindow::retranslate()
     m_aboutQt->setText(tr("About &Qt"));
     m_meshMenu->setTitle(tr("&Mesh"));
     m_remesh->setText(tr("&Remesh…"));
-    m_remesh->setStatusTip(tr("Remesh all the surfaces at a chosen resolution, keeping the model conformal"));
+    m_remesh->setStatusTip(
+        tr("Remesh all the surfaces at a chosen resolution, keeping the model conformal"));
     m_cancelRemesh->setText(tr("&Cancel Remeshing"));
     m_cancelRemesh->setStatusTip(tr("Stop the remeshing; the input model is left as it is"));
     m_saveRemeshed->setText(tr("Save Remeshed Model &As…"));
-    m_saveRemeshed->setStatusTip(tr("Write the remeshed model as a Gocad Model3d (.ml) or TSurf (.ts) file"));
+    m_saveRemeshed->setStatusTip(
+        tr("Write the remeshed model as a Gocad Model3d (.ml) or TSurf (.ts) file"));
     m_ledgerDock->setWindowTitle(tr("Simplifications"));
     m_ledgerDock->toggleViewAction()->setText(tr("&Simplifications"));
     m_comparisonDock->setWindowTitle(tr("Input vs Output"));
@@ -320,16 +326,22 @@ void MainWindow::changeEvent(QEvent *event)
     QMainWindow::changeEvent(event);
 }
 
-void MainWindow::openFile(const QString &path) { m_controller->openFile(path); }
+void MainWindow::openFile(const QString &path)
+{
+    m_controller->openFile(path);
+}
 
-void MainWindow::openSample() { m_controller->openSample(); }
+void MainWindow::openSample()
+{
+    m_controller->openSample();
+}
 
 void MainWindow::chooseFile()
 {
     QSettings settings;
     const QString dir = settings.value(QStringLiteral("lastDirectory")).toString();
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open Model"), dir, OpenModelController::fileFilter());
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Model"), dir,
+                                                      OpenModelController::fileFilter());
     if (path.isEmpty())
         return;
     settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
@@ -369,12 +381,15 @@ void MainWindow::resetCamera()
     m_outputView->render();
 }
 
-void MainWindow::showAbout() { showAboutDialog(this); }
+void MainWindow::showAbout()
+{
+    showAboutDialog(this);
+}
 
 void MainWindow::dragEnterEvent(QDragEnterEvent *event)
 {
-    if (event->mimeData()->hasUrls() && event->mimeData()->urls().size() == 1 &&
-        event->mimeData()->urls().first().isLocalFile())
+    if (event->mimeData()->hasUrls() && event->mimeData()->urls().size() == 1
+        && event->mimeData()->urls().first().isLocalFile())
         event->acceptProposedAction();
 }
 
@@ -417,7 +432,9 @@ void MainWindow::onLoaded(const LoadedModel &loaded)
     resetCamera();
 
     Message opened;
-    opened.text = tr("%1 opened in %2 s").arg(loaded.displayName, QLocale().toString(loaded.milliseconds / 1000.0, 'f', 2));
+    opened.text =
+        tr("%1 opened in %2 s")
+            .arg(loaded.displayName, QLocale().toString(loaded.milliseconds / 1000.0, 'f', 2));
     opened.file = loaded.path;
     m_messages->addMessage(opened);
     for (const Message &m : loaded.messages)
@@ -430,9 +447,9 @@ void MainWindow::onLoaded(const LoadedModel &loaded)
     } else {
         m_messageDock->show();
     }
-    m_stageLabel->setText(loaded.messages.empty()
-                              ? tr("Ready")
-                              : tr("%n validity problem(s) — see Messages", nullptr, int(loaded.messages.size())));
+    m_stageLabel->setText(loaded.messages.empty() ? tr("Ready")
+                                                  : tr("%n validity problem(s) — see Messages",
+                                                       nullptr, int(loaded.messages.size())));
     retranslate();
 }
 
@@ -445,10 +462,14 @@ void MainWindow::onFailed(const Message &error)
     m_messageDock->show();
     m_messageDock->raise();
     const QString where = formatLocation(error);
-    m_stageLabel->setText(where.isEmpty() ? tr("Could not open the model") : tr("Could not open %1").arg(where));
+    m_stageLabel->setText(where.isEmpty() ? tr("Could not open the model")
+                                          : tr("Could not open %1").arg(where));
 }
 
-QString MainWindow::statusCounts() const { return m_countsLabel ? m_countsLabel->text() : QString(); }
+QString MainWindow::statusCounts() const
+{
+    return m_countsLabel ? m_countsLabel->text() : QString();
+}
 
 void MainWindow::updateCounts()
 {
@@ -460,11 +481,14 @@ void MainWindow::updateCounts()
     // Table 3.1 of the thesis counts entities without the box; the tooltip gives both.
     const auto describe = [](const EntityCounts &c) {
         const QString sep = QStringLiteral("  ·  ");
-        return tr("%n region(s)", nullptr, c.regions) + sep + tr("%n surface(s)", nullptr, c.surfaces) + sep +
-               tr("%n line(s)", nullptr, c.lines) + sep + tr("%n corner(s)", nullptr, c.corners);
+        return tr("%n region(s)", nullptr, c.regions) + sep
+               + tr("%n surface(s)", nullptr, c.surfaces) + sep + tr("%n line(s)", nullptr, c.lines)
+               + sep + tr("%n corner(s)", nullptr, c.corners);
     };
-    const QString triangles = tr("%1 triangles").arg(QLocale().toString(qulonglong(model->triangleCount())));
-    m_countsLabel->setText(tr("%1 (box excluded)  ·  %2").arg(describe(m_counts.withoutBox), triangles));
+    const QString triangles =
+        tr("%1 triangles").arg(QLocale().toString(qulonglong(model->triangleCount())));
+    m_countsLabel->setText(
+        tr("%1 (box excluded)  ·  %2").arg(describe(m_counts.withoutBox), triangles));
     m_countsLabel->setToolTip(tr("With the box: %1").arg(describe(m_counts.all)));
 }
 
@@ -513,9 +537,10 @@ void MainWindow::remesh()
     if (!model || isWorking())
         return;
     double bounds[6];
-    const double diagonal = m_scene->bounds(bounds) ? std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2],
-                                                                  bounds[5] - bounds[4])
-                                                    : 1.0;
+    const double diagonal =
+        m_scene->bounds(bounds)
+            ? std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
+            : 1.0;
     RemeshDialog dialog(diagonal, this);
     if (m_lastParams.sites > 0 || m_lastParams.edgeLength > 0.0)
         dialog.setParams(m_lastParams);
@@ -581,8 +606,8 @@ void MainWindow::onRemeshed(const RemeshOutcome &outcome)
     resetCamera();
 
     Message done;
-    done.text = tr("Remeshed with %1 sites in %2 s: %3 triangles, %n simplification(s) recorded", nullptr,
-                   int(outcome.ledger->size()))
+    done.text = tr("Remeshed with %1 sites in %2 s: %3 triangles, %n simplification(s) recorded",
+                   nullptr, int(outcome.ledger->size()))
                     .arg(QLocale().toString(outcome.siteCount),
                          QLocale().toString(outcome.milliseconds / 1000.0, 'f', 2),
                          QLocale().toString(qulonglong(outcome.output->triangleCount())));
@@ -591,9 +616,10 @@ void MainWindow::onRemeshed(const RemeshOutcome &outcome)
         // Never announced as a plain success: a volume mesher would fail on it.
         Message invalid;
         invalid.severity = Message::Severity::Warning;
-        invalid.text = tr("The remeshed model is NOT valid: %n problem(s) left after local refinement; saving it "
-                          "is at your own risk",
-                          nullptr, int(outcome.validity.problems.size()));
+        invalid.text = tr(
+            "The remeshed model is NOT valid: %n problem(s) left after local refinement; saving it "
+            "is at your own risk",
+            nullptr, int(outcome.validity.problems.size()));
         m_messages->addMessage(invalid);
         for (const Message &m : validityMessages(outcome.validity, QString()))
             m_messages->addMessage(m);
@@ -640,9 +666,10 @@ void MainWindow::updateViewTitles()
         return;
     }
     const QLocale locale;
-    m_outputTitle->setText(tr("Output: %1 sites, %2 triangles")
-                               .arg(locale.toString(m_outcome->siteCount),
-                                    locale.toString(qulonglong(m_outcome->output->triangleCount()))));
+    m_outputTitle->setText(
+        tr("Output: %1 sites, %2 triangles")
+            .arg(locale.toString(m_outcome->siteCount),
+                 locale.toString(qulonglong(m_outcome->output->triangleCount()))));
 }
 
 void MainWindow::showLedgerRecord(int recordIndex)
@@ -657,9 +684,10 @@ void MainWindow::showLedgerRecord(int recordIndex)
         return;
     }
     double bounds[6];
-    const double diagonal = m_outputScene->bounds(bounds) ? std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2],
-                                                                        bounds[5] - bounds[4])
-                                                          : 1.0;
+    const double diagonal =
+        m_outputScene->bounds(bounds)
+            ? std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
+            : 1.0;
     // Big enough to be found at the whole-model zoom, never hiding the change itself entirely.
     m_marker->show(record->position, std::max(0.015 * diagonal, 0.5 * record->size));
     // Keep the view direction and distance, move the camera so the record is in the centre.
@@ -669,7 +697,8 @@ void MainWindow::showLedgerRecord(int recordIndex)
     camera->GetPosition(position);
     const Vec3 &p = record->position;
     camera->SetFocalPoint(p.x(), p.y(), p.z());
-    camera->SetPosition(position[0] + p.x() - focal[0], position[1] + p.y() - focal[1], position[2] + p.z() - focal[2]);
+    camera->SetPosition(position[0] + p.x() - focal[0], position[1] + p.y() - focal[1],
+                        position[2] + p.z() - focal[2]);
     m_view->renderer()->ResetCameraClippingRange();
     m_outputView->renderer()->ResetCameraClippingRange();
     m_view->render();
@@ -683,14 +712,19 @@ void MainWindow::chooseRemeshedFile()
     QSettings settings;
     const QString dir = settings.value(QStringLiteral("lastDirectory")).toString();
     QString selected;
-    const QString ml = tr("Gocad Model3d (*.ml)"), ts = tr("Gocad TSurf (*.ts)"), gm = tr("RINGMesh GeoModel (*.gm)");
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Remeshed Model"), dir,
-                                                ml + QStringLiteral(";;") + ts + QStringLiteral(";;") + gm, &selected);
+    const QString ml = tr("Gocad Model3d (*.ml)"), ts = tr("Gocad TSurf (*.ts)"),
+                  gm = tr("RINGMesh GeoModel (*.gm)");
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Save Remeshed Model"), dir,
+        ml + QStringLiteral(";;") + ts + QStringLiteral(";;") + gm, &selected);
     if (path.isEmpty())
         return;
     const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix != QLatin1String("ml") && suffix != QLatin1String("ts") && suffix != QLatin1String("gm"))
-        path += selected == ts ? QStringLiteral(".ts") : selected == gm ? QStringLiteral(".gm") : QStringLiteral(".ml");
+    if (suffix != QLatin1String("ml") && suffix != QLatin1String("ts")
+        && suffix != QLatin1String("gm"))
+        path += selected == ts   ? QStringLiteral(".ts")
+                : selected == gm ? QStringLiteral(".gm")
+                                 : QStringLiteral(".ml");
     settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
     saveRemeshedModel(path);
 }

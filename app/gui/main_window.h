@@ -74,7 +74,10 @@ public:
     QAction *cancelComplexityAction() const { return m_cancelComplexity; }
     QAction *exportCellsAction() const { return m_exportCells; }
     // The last analysis shown, if any (cleared when another model is opened).
-    const std::optional<ComplexityOutcome> &complexityOutcome() const { return m_complexityOutcome; }
+    const std::optional<ComplexityOutcome> &complexityOutcome() const
+    {
+        return m_complexityOutcome;
+    }
 
     // TetGen comparison meshes (thesis §5.2): tets in both views, the Tetrahedra dock.
     TetmeshController *tetmeshController() const { return m_tetmeshController; }

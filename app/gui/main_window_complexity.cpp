@@ -57,26 +57,36 @@ void MainWindow::createComplexityUi()
     m_complexityDock->hide();
     m_viewMenu->addAction(m_complexityDock->toggleViewAction());
     m_heatMap->setThreshold(m_complexityPanel->threshold());
-    connect(m_complexityPanel, &ComplexityPanel::thresholdChanged, this, &MainWindow::setHeatMapThreshold);
-    connect(m_complexityPanel, &ComplexityPanel::heatMapVisibleChanged, this, &MainWindow::setHeatMapVisible);
+    connect(m_complexityPanel, &ComplexityPanel::thresholdChanged, this,
+            &MainWindow::setHeatMapThreshold);
+    connect(m_complexityPanel, &ComplexityPanel::heatMapVisibleChanged, this,
+            &MainWindow::setHeatMapVisible);
 
-    connect(m_complexityController, &ComplexityController::started, this, &MainWindow::onComplexityStarted);
-    connect(m_complexityController, &ComplexityController::progressChanged, this, &MainWindow::onProgress);
-    connect(m_complexityController, &ComplexityController::succeeded, this, &MainWindow::onComplexityDone);
-    connect(m_complexityController, &ComplexityController::failed, this, &MainWindow::onComplexityFailed);
-    connect(m_complexityController, &ComplexityController::cancelled, this, &MainWindow::onComplexityCancelled);
-    connect(m_complexityController, &ComplexityController::finished, this, &MainWindow::complexityFinished);
+    connect(m_complexityController, &ComplexityController::started, this,
+            &MainWindow::onComplexityStarted);
+    connect(m_complexityController, &ComplexityController::progressChanged, this,
+            &MainWindow::onProgress);
+    connect(m_complexityController, &ComplexityController::succeeded, this,
+            &MainWindow::onComplexityDone);
+    connect(m_complexityController, &ComplexityController::failed, this,
+            &MainWindow::onComplexityFailed);
+    connect(m_complexityController, &ComplexityController::cancelled, this,
+            &MainWindow::onComplexityCancelled);
+    connect(m_complexityController, &ComplexityController::finished, this,
+            &MainWindow::complexityFinished);
 }
 
 void MainWindow::retranslateComplexity()
 {
     m_analyseMenu->setTitle(tr("&Analyse"));
     m_complexity->setText(tr("&Complexity…"));
-    m_complexity->setStatusTip(tr("Measure the complexity of the model and show the elements per cell as a heat map"));
+    m_complexity->setStatusTip(
+        tr("Measure the complexity of the model and show the elements per cell as a heat map"));
     m_cancelComplexity->setText(tr("C&ancel Complexity Analysis"));
     m_cancelComplexity->setStatusTip(tr("Stop the complexity analysis"));
     m_exportCells->setText(tr("&Export Complexity Cells…"));
-    m_exportCells->setStatusTip(tr("Write the cells with their element counts as a VTK unstructured grid (.vtu)"));
+    m_exportCells->setStatusTip(
+        tr("Write the cells with their element counts as a VTK unstructured grid (.vtu)"));
     m_complexityDock->setWindowTitle(tr("Complexity"));
     m_complexityDock->toggleViewAction()->setText(tr("&Complexity"));
     m_heatMap->setTitle(tr("Elements\nper cell").toUtf8().constData());
@@ -84,8 +94,8 @@ void MainWindow::retranslateComplexity()
 
 bool MainWindow::isWorking() const
 {
-    return m_controller->isBusy() || m_remeshController->isBusy() || m_complexityController->isBusy() ||
-           m_tetmeshController->isBusy();
+    return m_controller->isBusy() || m_remeshController->isBusy()
+           || m_complexityController->isBusy() || m_tetmeshController->isBusy();
 }
 
 void MainWindow::clearComplexityOutcome()
@@ -169,10 +179,12 @@ void MainWindow::onComplexityDone(const ComplexityOutcome &outcome)
 
     const QLocale locale;
     Message done;
-    done.text = tr("Complexity measured with %1 cells in %2 s: %3 elements per cell at most, %4 on average")
-                    .arg(locale.toString(int(local.counts.size())),
-                         locale.toString(outcome.milliseconds / 1000.0, 'f', 2),
-                         locale.toString(local.statistics.max), locale.toString(local.statistics.mean, 'f', 2));
+    done.text =
+        tr("Complexity measured with %1 cells in %2 s: %3 elements per cell at most, %4 on average")
+            .arg(locale.toString(int(local.counts.size())),
+                 locale.toString(outcome.milliseconds / 1000.0, 'f', 2),
+                 locale.toString(local.statistics.max),
+                 locale.toString(local.statistics.mean, 'f', 2));
     m_messages->addMessage(done);
     m_stageLabel->setText(tr("Complexity measured — see Complexity"));
 }

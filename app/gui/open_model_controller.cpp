@@ -13,8 +13,8 @@
 #include "model/topology.h"
 #include "model/validity.h"
 
-#include <QEventLoop>
 #include <QElapsedTimer>
+#include <QEventLoop>
 #include <QFileInfo>
 #include <QPromise>
 #include <QtConcurrent>
@@ -36,13 +36,16 @@ void loadModel(QPromise<LoadResult> &promise, const QString &path, const QString
     try {
         Model model;
         if (path.isEmpty()) {
-            promise.setProgressValueAndText(5, OpenModelController::tr("Building the sample model"));
+            promise.setProgressValueAndText(5,
+                                            OpenModelController::tr("Building the sample model"));
             model = sampleModel();
         } else {
-            promise.setProgressValueAndText(5, OpenModelController::tr("Reading %1").arg(displayName));
+            promise.setProgressValueAndText(5,
+                                            OpenModelController::tr("Reading %1").arg(displayName));
             model = readModel(file);
         }
-        promise.setProgressValueAndText(60, OpenModelController::tr("Recovering lines and corners"));
+        promise.setProgressValueAndText(60,
+                                        OpenModelController::tr("Recovering lines and corners"));
         model = recoverTopology(std::move(model));
         const QString checking = OpenModelController::tr("Checking validity");
         promise.setProgressValueAndText(85, checking);
@@ -76,7 +79,8 @@ OpenModelController::OpenModelController(QObject *parent) : QObject(parent)
             [this](int value) { emit progressChanged(value, m_watcher.progressText()); });
     connect(&m_watcher, &QFutureWatcher<LoadResult>::progressTextChanged, this,
             [this](const QString &text) { emit progressChanged(m_watcher.progressValue(), text); });
-    connect(&m_watcher, &QFutureWatcher<LoadResult>::finished, this, &OpenModelController::onFinished);
+    connect(&m_watcher, &QFutureWatcher<LoadResult>::finished, this,
+            &OpenModelController::onFinished);
 }
 
 OpenModelController::~OpenModelController()
@@ -89,8 +93,10 @@ OpenModelController::~OpenModelController()
 
 QString OpenModelController::fileFilter()
 {
-    return tr("Structural models (*.ml *.ts *.gm *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;"
-              "RINGMesh GeoModel (*.gm);;Wavefront OBJ (*.obj);;Object File Format (*.off);;All files (*)");
+    return tr(
+        "Structural models (*.ml *.ts *.gm *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;"
+        "RINGMesh GeoModel (*.gm);;Wavefront OBJ (*.obj);;Object File Format (*.off);;All files "
+        "(*)");
 }
 
 bool OpenModelController::openFile(const QString &path)
@@ -98,9 +104,15 @@ bool OpenModelController::openFile(const QString &path)
     return start(path, QFileInfo(path).fileName());
 }
 
-bool OpenModelController::openSample() { return start(QString(), tr("Sample model")); }
+bool OpenModelController::openSample()
+{
+    return start(QString(), tr("Sample model"));
+}
 
-bool OpenModelController::isBusy() const { return m_pending; }
+bool OpenModelController::isBusy() const
+{
+    return m_pending;
+}
 
 void OpenModelController::waitForFinished()
 {
@@ -131,7 +143,8 @@ void OpenModelController::onFinished()
     if (future.resultCount() > 0)
         result = future.result();
     else
-        result.error = {Message::Severity::Error, tr("Loading stopped without a result"), QString(), 0};
+        result.error = {Message::Severity::Error, tr("Loading stopped without a result"), QString(),
+                        0};
     if (result.ok)
         emit loaded(result.loaded);
     else

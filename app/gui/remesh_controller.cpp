@@ -1,8 +1,8 @@
 #include "remesh_controller.h"
 
-#include "error_message.h"
 #include "common/error.h"
 #include "common/progress.h"
+#include "error_message.h"
 #include "model/model_counts.h"
 
 #include <QElapsedTimer>
@@ -16,8 +16,8 @@ namespace stratamesh {
 namespace {
 
 // Runs in the worker thread: core work only, plus conversion into messages.
-void runRemesh(QPromise<RemeshRun> &promise, std::shared_ptr<const Model> input, RemeshParams params,
-               std::shared_ptr<Progress> cancel)
+void runRemesh(QPromise<RemeshRun> &promise, std::shared_ptr<const Model> input,
+               RemeshParams params, std::shared_ptr<Progress> cancel)
 {
     QElapsedTimer timer;
     timer.start();
@@ -25,12 +25,16 @@ void runRemesh(QPromise<RemeshRun> &promise, std::shared_ptr<const Model> input,
     promise.setProgressRange(0, 100);
     // The engine's stages, then the comparison: 0–85 % and 85–100 %.
     const auto relay = [&](int from, int span, const QString &prefix) {
-        return Progress([&promise, &cancel, from, span, prefix](double fraction, const std::string &stage) {
-            if (cancel->isCancelled() || promise.isCanceled())
-                throw Cancelled();
-            const QString text = stage.empty() ? prefix : prefix + QStringLiteral(": ") + QString::fromStdString(stage);
-            promise.setProgressValueAndText(from + int(span * std::clamp(fraction, 0.0, 1.0)), text);
-        });
+        return Progress(
+            [&promise, &cancel, from, span, prefix](double fraction, const std::string &stage) {
+                if (cancel->isCancelled() || promise.isCanceled())
+                    throw Cancelled();
+                const QString text =
+                    stage.empty() ? prefix
+                                  : prefix + QStringLiteral(": ") + QString::fromStdString(stage);
+                promise.setProgressValueAndText(from + int(span * std::clamp(fraction, 0.0, 1.0)),
+                                                text);
+            });
     };
     try {
         const QString remeshing = RemeshController::tr("Remeshing");
@@ -77,7 +81,10 @@ RemeshController::RemeshController(QObject *parent) : WorkflowJob(parent)
     connect(&m_watcher, &QFutureWatcher<RemeshRun>::finished, this, &RemeshController::onFinished);
 }
 
-RemeshController::~RemeshController() { stop(m_watcher); }
+RemeshController::~RemeshController()
+{
+    stop(m_watcher);
+}
 
 bool RemeshController::start(std::shared_ptr<const Model> input, const RemeshParams &params)
 {
@@ -86,7 +93,8 @@ bool RemeshController::start(std::shared_ptr<const Model> input, const RemeshPar
     std::shared_ptr<Progress> progress = begin();
     if (!progress)
         return false;
-    m_watcher.setFuture(QtConcurrent::run(&runRemesh, std::move(input), params, std::move(progress)));
+    m_watcher.setFuture(
+        QtConcurrent::run(&runRemesh, std::move(input), params, std::move(progress)));
     return true;
 }
 
@@ -97,7 +105,8 @@ void RemeshController::onFinished()
     if (future.resultCount() > 0)
         run = future.result();
     else
-        run.error = {Message::Severity::Error, tr("Remeshing stopped without a result"), QString(), 0};
+        run.error = {Message::Severity::Error, tr("Remeshing stopped without a result"), QString(),
+                     0};
     end(run.status, run.error, [&] { emit succeeded(run.outcome); });
 }
 

@@ -1,13 +1,13 @@
 #include "remesh_dialog.h"
 
 #include <QCheckBox>
-#include <QPushButton>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
+#include <QPushButton>
 #include <QRadioButton>
 #include <QSpinBox>
 #include <QVBoxLayout>
@@ -31,8 +31,8 @@ RemeshDialog::RemeshDialog(double diagonal, QWidget *parent)
     : QDialog(parent), m_bySites(new QRadioButton(tr("Number of &sites:"), this)),
       m_byLength(new QRadioButton(tr("Target &edge length:"), this)), m_sites(new QSpinBox(this)),
       m_edgeLength(new QDoubleSpinBox(this)), m_dResolution(new QDoubleSpinBox(this)),
-      m_stripFactor(new QDoubleSpinBox(this)),
-      m_iterations(new QSpinBox(this)), m_seed(new QSpinBox(this)),
+      m_stripFactor(new QDoubleSpinBox(this)), m_iterations(new QSpinBox(this)),
+      m_seed(new QSpinBox(this)),
       m_adaptive(new QCheckBox(tr("&Adaptive density (more sites near corners)"), this))
 {
     setObjectName(QStringLiteral("RemeshDialog"));
@@ -47,31 +47,37 @@ RemeshDialog::RemeshDialog(double diagonal, QWidget *parent)
     m_edgeLength->setDecimals(decimals);
     m_edgeLength->setRange(std::pow(10.0, -decimals), scale);
     m_edgeLength->setValue(scale / 50.0);
-    m_edgeLength->setToolTip(tr("The number of sites is derived from the total area for this edge length."));
+    m_edgeLength->setToolTip(
+        tr("The number of sites is derived from the total area for this edge length."));
     m_bySites->setChecked(true);
 
     m_dResolution->setDecimals(decimals);
     m_dResolution->setRange(0.0, scale);
     m_dResolution->setValue(0.0);
     m_dResolution->setSpecialValueText(tr("Off"));
-    m_dResolution->setToolTip(tr("Parts of features closer than this distance are merged (thesis Alg. 4.2, "
-                                 "step 4); 0 keeps them apart."));
+    m_dResolution->setToolTip(
+        tr("Parts of features closer than this distance are merged (thesis Alg. 4.2, "
+           "step 4); 0 keeps them apart."));
     m_stripFactor->setDecimals(2);
     m_stripFactor->setRange(0.0, 1.0);
     m_stripFactor->setSingleStep(0.05);
     m_stripFactor->setValue(RemeshParams{}.stripWidthFactor);
     m_stripFactor->setSpecialValueText(tr("Off"));
     m_stripFactor->setSuffix(tr(" × edge length"));
-    m_stripFactor->setToolTip(tr("Surfaces narrower than this between two long lines (a small fault throw) are "
-                                 "removed whole before remeshing, their two lines merged into one; 0 keeps them."));
+    m_stripFactor->setToolTip(
+        tr("Surfaces narrower than this between two long lines (a small fault throw) are "
+           "removed whole before remeshing, their two lines merged into one; 0 keeps them."));
     m_iterations->setRange(0, 100000);
     m_iterations->setValue(100);
-    m_iterations->setToolTip(tr("Iterations of the centroidal Voronoi optimisation of the sites (thesis: 100)."));
+    m_iterations->setToolTip(
+        tr("Iterations of the centroidal Voronoi optimisation of the sites (thesis: 100)."));
     m_seed->setRange(0, 2147483647);
     m_seed->setValue(1);
-    m_seed->setToolTip(tr("Seed of the initial random sampling: the same seed gives the same mesh."));
-    m_adaptive->setToolTip(tr("Site density grows near corners, so small features keep more triangles "
-                              "(thesis Fig. 4.19)."));
+    m_seed->setToolTip(
+        tr("Seed of the initial random sampling: the same seed gives the same mesh."));
+    m_adaptive->setToolTip(
+        tr("Site density grows near corners, so small features keep more triangles "
+           "(thesis Fig. 4.19)."));
 
     auto *resolution = new QGroupBox(tr("Resolution"), this);
     auto *grid = new QGridLayout(resolution);

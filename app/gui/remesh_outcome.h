@@ -3,12 +3,12 @@
 #pragma once
 
 #include "message.h"
-#include "workflow_job.h"
 #include "model/model.h"
 #include "model/model_counts.h"
 #include "quality/model_comparison.h"
 #include "remesh/simplification_ledger.h"
 #include "remesh/surface_remesher.h"
+#include "workflow_job.h"
 
 #include <QMetaType>
 
@@ -24,8 +24,8 @@ struct RemeshOutcome {
     ModelCounts counts; // of the output, with and without the box
     RemeshParams params;
     int siteCount = 0;
-    int initialSiteCount = 0;  // asked for; siteCount includes the local refinement
-    ValidityReport validity;   // of the output: an invalid result is shown as such
+    int initialSiteCount = 0; // asked for; siteCount includes the local refinement
+    ValidityReport validity;  // of the output: an invalid result is shown as such
     qint64 milliseconds = 0;
 };
 

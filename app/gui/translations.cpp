@@ -12,9 +12,11 @@ QString installTranslations(const QString &language)
     QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
     // Embedded by qt_add_translations under :/i18n. English has a file too, for its plural forms.
     auto *ours = new QTranslator(qApp);
-    if (!ours->load(locale, QStringLiteral("stratamesh"), QStringLiteral("_"), QStringLiteral(":/i18n"))) {
+    if (!ours->load(locale, QStringLiteral("stratamesh"), QStringLiteral("_"),
+                    QStringLiteral(":/i18n"))) {
         locale = QLocale(QLocale::English);
-        if (!ours->load(locale, QStringLiteral("stratamesh"), QStringLiteral("_"), QStringLiteral(":/i18n"))) {
+        if (!ours->load(locale, QStringLiteral("stratamesh"), QStringLiteral("_"),
+                        QStringLiteral(":/i18n"))) {
             delete ours;
             return QStringLiteral("en");
         }

@@ -25,9 +25,10 @@ std::vector<Message> validityMessages(const ValidityReport &report, const QStrin
             continue;
         Message m;
         m.severity = Message::Severity::Warning;
-        m.text = QCoreApplication::translate("ValidityMessages", "… and %1 more problems of kind “%2”")
-                     .arg(qulonglong(count - shown))
-                     .arg(QString::fromStdString(check));
+        m.text =
+            QCoreApplication::translate("ValidityMessages", "… and %1 more problems of kind “%2”")
+                .arg(qulonglong(count - shown))
+                .arg(QString::fromStdString(check));
         m.file = file;
         messages.push_back(m);
     }

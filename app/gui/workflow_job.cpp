@@ -23,10 +23,11 @@ void WorkflowJob::relayProgress(QFutureWatcherBase &watcher)
         m_percent = std::max(m_percent, value);
         emit progressChanged(m_percent, watcher.progressText());
     });
-    connect(&watcher, &QFutureWatcherBase::progressTextChanged, this, [this, &watcher](const QString &text) {
-        m_percent = std::max(m_percent, watcher.progressValue());
-        emit progressChanged(m_percent, text);
-    });
+    connect(&watcher, &QFutureWatcherBase::progressTextChanged, this,
+            [this, &watcher](const QString &text) {
+                m_percent = std::max(m_percent, watcher.progressValue());
+                emit progressChanged(m_percent, text);
+            });
 }
 
 std::shared_ptr<Progress> WorkflowJob::begin()
@@ -40,14 +41,21 @@ std::shared_ptr<Progress> WorkflowJob::begin()
     return m_progress;
 }
 
-void WorkflowJob::end(RunStatus status, const Message &error, const std::function<void()> &emitSucceeded)
+void WorkflowJob::end(RunStatus status, const Message &error,
+                      const std::function<void()> &emitSucceeded)
 {
     m_pending = false;
     m_progress.reset();
     switch (status) {
-    case RunStatus::Done: emitSucceeded(); break;
-    case RunStatus::Cancelled: emit cancelled(); break;
-    case RunStatus::Failed: emit failed(error); break;
+    case RunStatus::Done:
+        emitSucceeded();
+        break;
+    case RunStatus::Cancelled:
+        emit cancelled();
+        break;
+    case RunStatus::Failed:
+        emit failed(error);
+        break;
     }
     emit finished(status == RunStatus::Done);
 }

@@ -65,7 +65,8 @@ std::vector<double> regionSharpShares(const Model &model, double alphaDegrees)
                 const Vec3 &a = surface.vertices[t[k]];
                 const Vec3 u = (surface.vertices[t[(k + 1) % 3]] - a).normalized();
                 const Vec3 c = surface.vertices[t[(k + 2) % 3]] - a;
-                around[key].push_back({(c - c.dot(u) * u).normalized(), n.normalized(), static_cast<int>(s)});
+                around[key].push_back(
+                    {(c - c.dot(u) * u).normalized(), n.normalized(), static_cast<int>(s)});
             }
         }
     }

@@ -15,8 +15,8 @@ namespace stratamesh {
 
 struct BoxCvtParams {
     int sites = 1000;
-    int iterations = 30;        // Lloyd steps at most
-    std::uint64_t seed = 1;     // initial sites: uniform in the box from a mt19937_64 stream
+    int iterations = 30;    // Lloyd steps at most
+    std::uint64_t seed = 1; // initial sites: uniform in the box from a mt19937_64 stream
     // Stop early when no site moves more than this fraction of the mean cell size.
     double tolerance = 1e-4;
 };
@@ -35,6 +35,7 @@ std::vector<Vec3> randomSitesInBox(const Box3 &box, int count, std::uint64_t see
 double cvtEnergy(const std::vector<Vec3> &sites, const std::vector<ConvexPolyhedron> &cells);
 
 // Throws InputError when sites < 1 or the box has no volume.
-BoxCvt runBoxCvt(const Box3 &box, const BoxCvtParams &params, Progress &progress = Progress::none());
+BoxCvt runBoxCvt(const Box3 &box, const BoxCvtParams &params,
+                 Progress &progress = Progress::none());
 
 } // namespace stratamesh

@@ -16,14 +16,24 @@ std::vector<int> indicesOf(const std::vector<bool> &isBox)
 }
 } // namespace
 
-std::vector<int> BoxElements::innerSurfaces() const { return indicesOf(surface); }
-std::vector<int> BoxElements::innerLines() const { return indicesOf(line); }
-std::vector<int> BoxElements::innerCorners() const { return indicesOf(corner); }
+std::vector<int> BoxElements::innerSurfaces() const
+{
+    return indicesOf(surface);
+}
+std::vector<int> BoxElements::innerLines() const
+{
+    return indicesOf(line);
+}
+std::vector<int> BoxElements::innerCorners() const
+{
+    return indicesOf(corner);
+}
 
 BoxElements boxElements(const Model &model)
 {
     if (!model.hasTopology())
-        throw InputError("complexity: the model has no topology (lines and corners); recover it first");
+        throw InputError(
+            "complexity: the model has no topology (lines and corners); recover it first");
     BoxElements box;
     box.surface.resize(model.surfaces.size());
     std::vector<bool> boxVertex(model.vertices.size(), false);

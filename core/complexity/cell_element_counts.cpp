@@ -171,7 +171,8 @@ std::vector<int> cornersPerCell(const Model &model, const std::vector<int> &corn
 // Cells meeting no inner surface lie in one region each, and two such cells sharing a face lie
 // in the same one: one ray per group of them (from its first site) instead of one per cell.
 void locateRegions(const RegionLocator &locator, const std::vector<Vec3> &sites,
-                   const std::vector<ConvexPolyhedron> &cells, std::vector<CellElementCounts> &counts)
+                   const std::vector<ConvexPolyhedron> &cells,
+                   std::vector<CellElementCounts> &counts)
 {
     std::vector<int> stack;
     for (std::size_t seed = 0; seed < cells.size(); ++seed) {
@@ -196,7 +197,8 @@ void locateRegions(const RegionLocator &locator, const std::vector<Vec3> &sites,
 
 } // namespace
 
-std::vector<CellElementCounts> countElementsInCells(const Model &model, const std::vector<Vec3> &sites,
+std::vector<CellElementCounts> countElementsInCells(const Model &model,
+                                                    const std::vector<Vec3> &sites,
                                                     const std::vector<ConvexPolyhedron> &cells,
                                                     Progress &progress)
 {

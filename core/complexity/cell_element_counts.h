@@ -3,7 +3,8 @@
 //
 // Exactly what is counted (box elements never are, as in the thesis: when the box is the model's
 // bounding box, cells are clipped to it and box surfaces only touch them):
-// - corners: inner corners whose nearest site is the cell's (a corner on a shared face counts once);
+// - corners: inner corners whose nearest site is the cell's (a corner on a shared face counts
+// once);
 // - lines: per inner line, the pieces of the polyline inside the cell; two consecutive segments
 //   meeting the cell belong to one piece when their common vertex is in the cell;
 // - surfaces: per inner surface, the connected pieces of its triangles inside the cell; two
@@ -35,9 +36,11 @@ struct CellElementCounts {
     int total() const { return corners + lines + surfaces + regions; }
 };
 
-// cells[i] is the Voronoi cell of sites[i]; a face tag j >= 0 names the cell across it. Requires topology (throws InputError otherwise).
-// Parallel over cells; the result does not depend on the number of threads.
-std::vector<CellElementCounts> countElementsInCells(const Model &model, const std::vector<Vec3> &sites,
+// cells[i] is the Voronoi cell of sites[i]; a face tag j >= 0 names the cell across it. Requires
+// topology (throws InputError otherwise). Parallel over cells; the result does not depend on the
+// number of threads.
+std::vector<CellElementCounts> countElementsInCells(const Model &model,
+                                                    const std::vector<Vec3> &sites,
                                                     const std::vector<ConvexPolyhedron> &cells,
                                                     Progress &progress = Progress::none());
 

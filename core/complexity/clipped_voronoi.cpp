@@ -53,7 +53,8 @@ std::vector<std::vector<int>> delaunayNeighbours(const std::vector<Vec3> &sites)
         }
         tbb::parallel_for(std::size_t(0), neighbours.size(), [&](std::size_t i) {
             std::sort(neighbours[i].begin(), neighbours[i].end());
-            neighbours[i].erase(std::unique(neighbours[i].begin(), neighbours[i].end()), neighbours[i].end());
+            neighbours[i].erase(std::unique(neighbours[i].begin(), neighbours[i].end()),
+                                neighbours[i].end());
         });
     } else {
         for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {

@@ -26,7 +26,8 @@ ComplexityReport computeComplexity(const Model &model, const ComplexityParams &p
         local.seed = params.seed;
         local.iterations = params.iterations;
         report.local.push_back(localComplexity(model, local, progress));
-        report.timings.emplace_back("local_" + std::to_string(n) + "_cvt", report.local.back().cvtSeconds);
+        report.timings.emplace_back("local_" + std::to_string(n) + "_cvt",
+                                    report.local.back().cvtSeconds);
         report.timings.emplace_back("local_" + std::to_string(n) + "_count",
                                     report.local.back().countSeconds);
         start = std::chrono::steady_clock::now();

@@ -53,7 +53,8 @@ ConvexPolyhedron ConvexPolyhedron::box(const Box3 &box)
         }
     }
     // Relative tolerance: coordinates of real models are ~1e4 m, doubles carry ~1e-16 relative.
-    p.m_eps = 1e-10 * std::max((hi - lo).norm(), hi.cwiseAbs().maxCoeff() + lo.cwiseAbs().maxCoeff());
+    p.m_eps =
+        1e-10 * std::max((hi - lo).norm(), hi.cwiseAbs().maxCoeff() + lo.cwiseAbs().maxCoeff());
     return p;
 }
 
@@ -255,8 +256,8 @@ double ConvexPolyhedron::secondMoment(const Vec3 &point) const
                            const Vec3 c = c0 - point;
                            const Vec3 sum = r + a + b + c;
                            total += v / 20.0
-                               * (r.squaredNorm() + a.squaredNorm() + b.squaredNorm()
-                                  + c.squaredNorm() + sum.squaredNorm());
+                                    * (r.squaredNorm() + a.squaredNorm() + b.squaredNorm()
+                                       + c.squaredNorm() + sum.squaredNorm());
                        });
     return total;
 }

@@ -26,7 +26,10 @@ struct HalfSpace {
 };
 
 // Tags of the six faces of a box cell: -1 xmin, -2 xmax, -3 ymin, -4 ymax, -5 zmin, -6 zmax.
-inline int boxSideTag(int axis, bool upper) { return -1 - (2 * axis + (upper ? 1 : 0)); }
+inline int boxSideTag(int axis, bool upper)
+{
+    return -1 - (2 * axis + (upper ? 1 : 0));
+}
 
 // Scratch buffers of ConvexPolyhedron::clip(); reusing one per thread avoids allocations.
 struct ClipWorkspace {

@@ -23,7 +23,8 @@ double lineLength(const Model &model, const Line &line)
     for (std::size_t k = 0; k + 1 < n; ++k)
         length += (model.vertices[line.vertices[k + 1]] - model.vertices[line.vertices[k]]).norm();
     if (line.closed && n > 2)
-        length += (model.vertices[line.vertices.front()] - model.vertices[line.vertices.back()]).norm();
+        length +=
+            (model.vertices[line.vertices.front()] - model.vertices[line.vertices.back()]).norm();
     return length;
 }
 

@@ -19,7 +19,8 @@ GeometricComplexity geometricComplexity(const Model &model, const GeometricParam
                                         Progress &progress)
 {
     if (!(params.h > 0.0) || !std::isfinite(params.h))
-        throw InputError("geometric complexity: h must be a positive size, got " + std::to_string(params.h));
+        throw InputError("geometric complexity: h must be a positive size, got "
+                         + std::to_string(params.h));
     if (!(params.alphaDegrees > 0.0 && params.alphaDegrees <= 180.0))
         throw InputError("geometric complexity: alpha must be in (0, 180] degrees, got "
                          + std::to_string(params.alphaDegrees));

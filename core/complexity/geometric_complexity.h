@@ -24,7 +24,7 @@ struct GeometricParams {
 };
 
 struct ElementMeasures {
-    int element = -1; // index in Model::regions / surfaces / lines
+    int element = -1;       // index in Model::regions / surfaces / lines
     double size = 0.0;      // C_t
     double shape = 0.0;     // C_f
     double thickness = 0.0; // C_e

@@ -22,8 +22,8 @@ struct LocalComplexityParams {
 };
 
 struct LocalComplexity {
-    BoxCvt cvt;                             // sites, cells (clipped polyhedra), energies
-    std::vector<CellElementCounts> counts;  // per cell
+    BoxCvt cvt;                            // sites, cells (clipped polyhedra), energies
+    std::vector<CellElementCounts> counts; // per cell
     // Statistics of the totals over the cells inside the model; cells meeting no element at all
     // (outside every region when the box is larger than the model) are left out and counted here.
     CountStatistics statistics;

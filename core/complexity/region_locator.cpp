@@ -18,7 +18,8 @@ RegionLocator::RegionLocator(const Model &model) : m_model(model), m_tree(model,
 {
     for (std::size_t r = 0; r < model.regions.size(); ++r)
         for (const RegionSide &side : model.regions[r].boundaries)
-            m_regionOfSide.emplace(std::make_pair(side.surface, side.positive), static_cast<int>(r));
+            m_regionOfSide.emplace(std::make_pair(side.surface, side.positive),
+                                   static_cast<int>(r));
 }
 
 int RegionLocator::regionAt(const Vec3 &point) const
@@ -30,7 +31,8 @@ int RegionLocator::regionAt(const Vec3 &point) const
         return -1;
     const Surface &s = m_model.surfaces[hit->triangle.surface];
     const Triangle &t = s.triangles[hit->triangle.triangle];
-    const Vec3 normal = (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]);
+    const Vec3 normal =
+        (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]);
     // The ray leaves the point's region through the surface: the point is on the side the normal
     // points to when the ray goes against the normal.
     const bool positive = normal.dot(direction) < 0.0;

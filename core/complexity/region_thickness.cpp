@@ -23,7 +23,9 @@ Areas sideAreas(const Model &model, const TriangleTree &tree, const RegionSide &
 {
     const Surface &s = model.surfaces[side.surface];
     // Another boundary surface of the same region.
-    const auto other = [&](const TriangleRef &ref) { return ref.surface != side.surface && bounds[ref.surface]; };
+    const auto other = [&](const TriangleRef &ref) {
+        return ref.surface != side.surface && bounds[ref.surface];
+    };
     return tbb::parallel_deterministic_reduce(
         tbb::blocked_range<std::size_t>(0, s.triangles.size(), 256), Areas{},
         [&](const tbb::blocked_range<std::size_t> &r, Areas sum) {
@@ -51,7 +53,7 @@ Areas sideAreas(const Model &model, const TriangleTree &tree, const RegionSide &
 } // namespace
 
 std::vector<std::vector<SideThinArea>> regionSideThinAreas(const Model &model, double h,
-                                                            Progress &progress)
+                                                           Progress &progress)
 {
     std::vector<int> all(model.surfaces.size());
     std::iota(all.begin(), all.end(), 0);

@@ -28,9 +28,10 @@ struct SideThinArea {
 
 // Per region (order of Model::regions), per side (order of Region::boundaries).
 std::vector<std::vector<SideThinArea>> regionSideThinAreas(const Model &model, double h,
-                                                            Progress &progress = Progress::none());
+                                                           Progress &progress = Progress::none());
 
 // C_e of each region, in the order of Model::regions.
-std::vector<double> regionThinShares(const Model &model, double h, Progress &progress = Progress::none());
+std::vector<double> regionThinShares(const Model &model, double h,
+                                     Progress &progress = Progress::none());
 
 } // namespace stratamesh

@@ -17,7 +17,10 @@ using Iterator = std::vector<Segment3>::const_iterator;
 using Primitive = CGAL::AABB_segment_primitive<Kernel, Iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
-Kernel::Point_3 point(const Vec3 &p) { return {p.x(), p.y(), p.z()}; }
+Kernel::Point_3 point(const Vec3 &p)
+{
+    return {p.x(), p.y(), p.z()};
+}
 } // namespace
 
 int lineSegmentCount(const Line &line)

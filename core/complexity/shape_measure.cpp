@@ -2,8 +2,8 @@
 
 #include "complexity/element_sizes.h"
 
-#include <Eigen/Geometry>
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <limits>

@@ -11,8 +11,8 @@ namespace stratamesh {
 struct SizeVariation {
     double regions = 0.0;
     double surfaces = 0.0;
-    double lines = 0.0;  // 0 when fewer than two inner lines (Table 3.3 leaves it blank)
-    double total = 0.0;  // the sum of the three, as the thesis's "Total" row
+    double lines = 0.0; // 0 when fewer than two inner lines (Table 3.3 leaves it blank)
+    double total = 0.0; // the sum of the three, as the thesis's "Total" row
 };
 
 // Requires topology; throws InputError otherwise.

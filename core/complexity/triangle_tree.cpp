@@ -18,9 +18,11 @@ using Iterator = std::vector<Triangle3>::const_iterator;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, Iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
-Kernel::Point_3 toPoint(const Vec3 &p) { return {p.x(), p.y(), p.z()}; }
+Kernel::Point_3 toPoint(const Vec3 &p)
+{
+    return {p.x(), p.y(), p.z()};
+}
 } // namespace
-
 
 struct TriangleTree::Impl {
     std::vector<Triangle3> triangles;
@@ -50,7 +52,10 @@ TriangleTree::TriangleTree(const Model &model, const std::vector<int> &surfaces)
 
 TriangleTree::~TriangleTree() = default;
 
-bool TriangleTree::empty() const { return m->triangles.empty(); }
+bool TriangleTree::empty() const
+{
+    return m->triangles.empty();
+}
 
 std::vector<TriangleRef> TriangleTree::trianglesInBox(const Box3 &box) const
 {
@@ -79,17 +84,20 @@ bool TriangleTree::anyWithin(const Vec3 &point, double radius,
     m->tree.all_intersected_primitives(query, std::back_inserter(hits));
     const Kernel::Point_3 p = toPoint(point);
     for (Iterator it : hits)
-        if (accept(m->refs[it - m->triangles.cbegin()]) && CGAL::squared_distance(p, *it) < radius * radius)
+        if (accept(m->refs[it - m->triangles.cbegin()])
+            && CGAL::squared_distance(p, *it) < radius * radius)
             return true;
     return false;
 }
 
-std::optional<RayHit> TriangleTree::firstHit(const Vec3 &origin, const Vec3 &direction,
-                                             const std::function<bool(const TriangleRef &)> &skip) const
+std::optional<RayHit>
+TriangleTree::firstHit(const Vec3 &origin, const Vec3 &direction,
+                       const std::function<bool(const TriangleRef &)> &skip) const
 {
     if (empty())
         return std::nullopt;
-    const Kernel::Ray_3 ray(toPoint(origin), Kernel::Vector_3(direction.x(), direction.y(), direction.z()));
+    const Kernel::Ray_3 ray(toPoint(origin),
+                            Kernel::Vector_3(direction.x(), direction.y(), direction.z()));
     auto skipId = [&](const Iterator &it) {
         return skip && skip(m->refs[it - m->triangles.cbegin()]);
     };

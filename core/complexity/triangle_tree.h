@@ -15,7 +15,10 @@ namespace stratamesh {
 struct TriangleRef {
     int surface = -1;
     int triangle = -1;
-    bool operator==(const TriangleRef &o) const { return surface == o.surface && triangle == o.triangle; }
+    bool operator==(const TriangleRef &o) const
+    {
+        return surface == o.surface && triangle == o.triangle;
+    }
     bool operator<(const TriangleRef &o) const
     {
         return surface < o.surface || (surface == o.surface && triangle < o.triangle);

@@ -24,8 +24,9 @@ double CvtEvaluation::gradientNorm() const
     return std::sqrt(s);
 }
 
-CvtEvaluation evaluateCvtEnergy(const RestrictionDomain &domain, const std::vector<Vec3> &sites, double alpha,
-                                CellIntegralsWorkspace &workspace, NeighbourSearch search)
+CvtEvaluation evaluateCvtEnergy(const RestrictionDomain &domain, const std::vector<Vec3> &sites,
+                                double alpha, CellIntegralsWorkspace &workspace,
+                                NeighbourSearch search)
 {
     if (!(alpha >= 0 && alpha <= 1))
         throw InputError("alpha must be in [0, 1], got " + std::to_string(alpha));

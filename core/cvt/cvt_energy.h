@@ -25,7 +25,8 @@ struct CvtEvaluation {
 };
 
 // Evaluates F and ∇F at the sites. workspace carries the owner hints between calls.
-CvtEvaluation evaluateCvtEnergy(const RestrictionDomain &domain, const std::vector<Vec3> &sites, double alpha,
-                                CellIntegralsWorkspace &workspace, NeighbourSearch search = NeighbourSearch::NearestNeighbours);
+CvtEvaluation evaluateCvtEnergy(const RestrictionDomain &domain, const std::vector<Vec3> &sites,
+                                double alpha, CellIntegralsWorkspace &workspace,
+                                NeighbourSearch search = NeighbourSearch::NearestNeighbours);
 
 } // namespace stratamesh

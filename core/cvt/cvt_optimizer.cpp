@@ -24,8 +24,7 @@ struct StopOptimization {
 };
 
 // Raised from the iteration hook when an accepted iterate has sites without a cell.
-struct LostSites {
-};
+struct LostSites {};
 
 // Carries an error of our own evaluation through LBFGSpp, which reports its own failures with
 // std::logic_error / std::runtime_error: those end the run, ours must reach the caller.
@@ -36,7 +35,8 @@ struct EvaluationFailure {
 std::string iterationStage(int k, int n, double f, double g)
 {
     char buffer[160];
-    std::snprintf(buffer, sizeof buffer, "CVT iteration %d/%d: F = %.6g, |grad F| = %.3g", k, n, f, g);
+    std::snprintf(buffer, sizeof buffer, "CVT iteration %d/%d: F = %.6g, |grad F| = %.3g", k, n, f,
+                  g);
     return buffer;
 }
 
@@ -46,7 +46,8 @@ std::string iterationStage(int k, int n, double f, double g)
 // site; later steps are scale-free.
 class Objective {
 public:
-    Objective(const RestrictionDomain &domain, const CvtParams &params, Progress &progress, CvtResult &result)
+    Objective(const RestrictionDomain &domain, const CvtParams &params, Progress &progress,
+              CvtResult &result)
         : m_domain(domain), m_params(params), m_progress(progress), m_result(result)
     {
         Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -56,7 +57,9 @@ public:
         }
         m_center = domain.points.empty() ? Vec3::Zero() : Vec3(0.5 * (lo + hi));
         const double area = domain.surfaceArea();
-        m_scale = area > 0 ? 0.1 * std::sqrt(area) : domain.points.empty() ? 1.0 : std::max((hi - lo).norm(), 1e-300);
+        m_scale = area > 0                ? 0.1 * std::sqrt(area)
+                  : domain.points.empty() ? 1.0
+                                          : std::max((hi - lo).norm(), 1e-300);
     }
 
     Vector toX(const std::vector<Vec3> &sites) const
@@ -77,7 +80,8 @@ public:
     const CvtEvaluation &evaluate(const std::vector<Vec3> &sites)
     {
         m_progress.tick(m_fraction, m_stage); // a cancel request is honoured between evaluations
-        m_last = evaluateCvtEnergy(m_domain, sites, m_params.alpha, m_workspace, m_params.neighbourSearch);
+        m_last = evaluateCvtEnergy(m_domain, sites, m_params.alpha, m_workspace,
+                                   m_params.neighbourSearch);
         ++m_result.evaluations;
         m_result.rvdSeconds += m_last.rvdSeconds;
         m_result.delaunaySeconds += m_last.delaunaySeconds;
@@ -115,7 +119,8 @@ public:
     {
         record(fx, grad.norm() / m_scale);
         m_best = x;
-        if (m_params.gradientTolerance > 0 && m_result.gradientNorm.back() <= m_params.gradientTolerance)
+        if (m_params.gradientTolerance > 0
+            && m_result.gradientNorm.back() <= m_params.gradientTolerance)
             throw StopOptimization{"gradient"};
         if (emptyCells(m_last) > 0)
             throw LostSites{}; // m_last is the accepted iterate: the line search ends on it
@@ -128,7 +133,8 @@ public:
     {
         std::vector<Vec3> sites = toSites(x);
         evaluate(sites); // the owners and masses of exactly these sites
-        m_result.relocatedSites += relocateLostSites(m_domain, m_last.cells, m_workspace.pointOwners, sites);
+        m_result.relocatedSites +=
+            relocateLostSites(m_domain, m_last.cells, m_workspace.pointOwners, sites);
         return toX(sites);
     }
 
@@ -167,11 +173,13 @@ private:
 // itself is a bisection on the weak Wolfe conditions (Lewis & Overton 2013, "Nonsmooth
 // optimization via quasi-Newton methods"): no interpolation, so kinks of the piecewise-smooth
 // energy do not mislead it, and its curvature condition keeps s·y > 0 for the L-BFGS update.
-template <class Scalar> class HookedLineSearch {
+template <class Scalar>
+class HookedLineSearch {
 public:
     template <class Foo>
-    static void LineSearch(Foo &f, Scalar &fx, Vector &x, Vector &grad, Scalar &step, const Vector &drt,
-                           const Vector &xp, const LBFGSpp::LBFGSParam<Scalar> &param)
+    static void LineSearch(Foo &f, Scalar &fx, Vector &x, Vector &grad, Scalar &step,
+                           const Vector &drt, const Vector &xp,
+                           const LBFGSpp::LBFGSParam<Scalar> &param)
     {
         const Scalar f0 = fx;
         const Scalar dg0 = grad.dot(drt);
@@ -203,7 +211,8 @@ public:
     }
 };
 
-void runLbfgs(Objective &objective, const std::vector<Vec3> &initial, const CvtParams &params, CvtResult &result)
+void runLbfgs(Objective &objective, const std::vector<Vec3> &initial, const CvtParams &params,
+              CvtResult &result)
 {
     LBFGSpp::LBFGSParam<double> p;
     p.m = std::max(1, params.lbfgsMemory);
@@ -261,7 +270,8 @@ void runLbfgs(Objective &objective, const std::vector<Vec3> &initial, const CvtP
     result.sites = objective.toSites(objective.m_best);
 }
 
-void runLloyd(Objective &objective, const std::vector<Vec3> &initial, const CvtParams &params, CvtResult &result)
+void runLloyd(Objective &objective, const std::vector<Vec3> &initial, const CvtParams &params,
+              CvtResult &result)
 {
     std::vector<Vec3> sites = initial;
     CvtEvaluation e = objective.evaluate(sites);
@@ -274,7 +284,8 @@ void runLloyd(Objective &objective, const std::vector<Vec3> &initial, const CvtP
                 sites[i] += e.cells.moment[i] / e.cells.mass[i]; // to the centroid g_i
         e = objective.evaluate(sites);
         if (Objective::emptyCells(e) > 0) {
-            result.relocatedSites += relocateLostSites(objective.domain(), e.cells, objective.workspace().pointOwners, sites);
+            result.relocatedSites += relocateLostSites(objective.domain(), e.cells,
+                                                       objective.workspace().pointOwners, sites);
             e = objective.evaluate(sites);
         }
         objective.record(e.energy, e.gradientNorm());
@@ -288,8 +299,8 @@ void runLloyd(Objective &objective, const std::vector<Vec3> &initial, const CvtP
 
 } // namespace
 
-CvtResult optimizeCvt(const RestrictionDomain &domain, const std::vector<Vec3> &initialSites, const CvtParams &params,
-                      Progress &progress)
+CvtResult optimizeCvt(const RestrictionDomain &domain, const std::vector<Vec3> &initialSites,
+                      const CvtParams &params, Progress &progress)
 {
     if (initialSites.empty())
         throw InputError("CVT: no sites to optimise");
@@ -320,7 +331,8 @@ CvtResult optimizeCvt(const RestrictionDomain &domain, const std::vector<Vec3> &
             runLbfgs(objective, initialSites, params, result);
         }
     });
-    result.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.totalSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }
 

@@ -15,18 +15,18 @@
 namespace stratamesh {
 
 struct CvtIterationReport {
-    int iteration = 0;         // 1-based
-    double energy = 0;         // F after the iteration
-    double gradientNorm = 0;   // ‖∇F‖ after the iteration
+    int iteration = 0;       // 1-based
+    double energy = 0;       // F after the iteration
+    double gradientNorm = 0; // ‖∇F‖ after the iteration
 };
 
 struct CvtParams {
-    int iterations = 100;            // at most this many iterations
-    double gradientTolerance = 0;    // stop once ‖∇F‖ ≤ this (0: never)
-    double alpha = 0;                // weight of the boundary energy, in [0, 1]
-    bool lloyd = false;              // Lloyd iterations instead of L-BFGS (requires alpha = 0)
-    int threads = 0;                 // 0: oneTBB's default (all cores)
-    int lbfgsMemory = 7;             // number of correction pairs kept by L-BFGS
+    int iterations = 100;         // at most this many iterations
+    double gradientTolerance = 0; // stop once ‖∇F‖ ≤ this (0: never)
+    double alpha = 0;             // weight of the boundary energy, in [0, 1]
+    bool lloyd = false;           // Lloyd iterations instead of L-BFGS (requires alpha = 0)
+    int threads = 0;              // 0: oneTBB's default (all cores)
+    int lbfgsMemory = 7;          // number of correction pairs kept by L-BFGS
     // Neighbours of the sites at each evaluation: k nearest sites (default), or the Delaunay
     // triangulation; the diagram is the same, the k nearest are found 4 times faster on
     // modelA5 at 5000 sites (voronoi_neighbours.h).
@@ -40,16 +40,16 @@ struct CvtResult {
     std::vector<Vec3> sites;
     double initialEnergy = 0;
     double initialGradientNorm = 0;
-    std::vector<double> energy;        // per iteration
-    std::vector<double> gradientNorm;  // per iteration
+    std::vector<double> energy;       // per iteration
+    std::vector<double> gradientNorm; // per iteration
     int iterations = 0;
-    int evaluations = 0;               // energy evaluations (line searches may need several)
-    int relocatedSites = 0;            // sites put back after their cell became empty
-    std::string stopReason;            // "iterations", "gradient", "line search", "no descent"
+    int evaluations = 0;    // energy evaluations (line searches may need several)
+    int relocatedSites = 0; // sites put back after their cell became empty
+    std::string stopReason; // "iterations", "gradient", "line search", "no descent"
     double totalSeconds = 0;
-    double rvdSeconds = 0;             // restricted Voronoi integration, summed
-    double delaunaySeconds = 0;        // neighbours of the sites (Delaunay or kd-tree), summed
-    int neighbourSearches = 0;         // k-nearest lists searched afresh
+    double rvdSeconds = 0;      // restricted Voronoi integration, summed
+    double delaunaySeconds = 0; // neighbours of the sites (Delaunay or kd-tree), summed
+    int neighbourSearches = 0;  // k-nearest lists searched afresh
     int threads = 0;
 };
 

@@ -20,7 +20,8 @@ std::vector<Vec3> sampleSurfaces(const RestrictionDomain &domain, int count, std
     double total = 0;
     for (std::size_t t = 0; t < nt; ++t) {
         const Triangle &tri = domain.triangles[t];
-        const Vec3 &a = domain.points[tri[0]], &b = domain.points[tri[1]], &c = domain.points[tri[2]];
+        const Vec3 &a = domain.points[tri[0]], &b = domain.points[tri[1]],
+                   &c = domain.points[tri[2]];
         double w = 0.5 * (b - a).cross(c - a).norm();
         if (!domain.density.empty())
             w *= (domain.density[tri[0]] + domain.density[tri[1]] + domain.density[tri[2]]) / 3.0;
@@ -37,8 +38,9 @@ std::vector<Vec3> sampleSurfaces(const RestrictionDomain &domain, int count, std
     for (int i = 0; i < count; ++i) {
         const double pick = uniform() * total;
         const std::size_t t = std::min<std::size_t>(
-            nt - 1, static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), pick) -
-                                              cumulative.begin()));
+            nt - 1,
+            static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), pick)
+                                     - cumulative.begin()));
         const Triangle &tri = domain.triangles[t];
         // Uniform in the triangle: fold the unit square onto it.
         double u = uniform(), v = uniform();

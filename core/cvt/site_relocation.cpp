@@ -5,8 +5,8 @@
 
 namespace stratamesh {
 
-int relocateLostSites(const RestrictionDomain &domain, const CellIntegrals &cells, const std::vector<int> &pointOwners,
-                      std::vector<Vec3> &sites)
+int relocateLostSites(const RestrictionDomain &domain, const CellIntegrals &cells,
+                      const std::vector<int> &pointOwners, std::vector<Vec3> &sites)
 {
     const int n = static_cast<int>(sites.size());
     std::vector<int> lost;
@@ -30,11 +30,13 @@ int relocateLostSites(const RestrictionDomain &domain, const CellIntegrals &cell
     }
     std::vector<int> donors(n);
     std::iota(donors.begin(), donors.end(), 0);
-    std::stable_sort(donors.begin(), donors.end(), [&](int a, int b) { return cells.mass[a] > cells.mass[b]; });
+    std::stable_sort(donors.begin(), donors.end(),
+                     [&](int a, int b) { return cells.mass[a] > cells.mass[b]; });
     int moved = 0;
     std::size_t next = 0;
     for (int i : lost) {
-        while (next < donors.size() && (farthest[donors[next]] < 0 || !(distance[donors[next]] > 0)))
+        while (next < donors.size()
+               && (farthest[donors[next]] < 0 || !(distance[donors[next]] > 0)))
             ++next;
         if (next == donors.size())
             break;

@@ -15,7 +15,7 @@ namespace stratamesh {
 // donor cell and the donor cell's point farthest from it, donors taken by decreasing mass. That
 // point is then strictly closer to the moved site than to any other, so its cell is not empty.
 // pointOwners are the owners of the domain points for these sites. Returns how many moved.
-int relocateLostSites(const RestrictionDomain &domain, const CellIntegrals &cells, const std::vector<int> &pointOwners,
-                      std::vector<Vec3> &sites);
+int relocateLostSites(const RestrictionDomain &domain, const CellIntegrals &cells,
+                      const std::vector<int> &pointOwners, std::vector<Vec3> &sites);
 
 } // namespace stratamesh

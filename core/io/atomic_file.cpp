@@ -16,7 +16,10 @@ namespace stratamesh {
 
 namespace {
 
-std::string systemError(int error) { return std::strerror(error); }
+std::string systemError(int error)
+{
+    return std::strerror(error);
+}
 
 // The process umask without changing it (reading it with umask() races with other threads).
 mode_t currentUmask()
@@ -34,7 +37,10 @@ mode_t currentUmask()
 // A streambuf over a file descriptor that remembers the first write error instead of throwing.
 class AtomicFile::Buffer : public std::streambuf {
 public:
-    explicit Buffer(int fd) : m_fd(fd), m_data(1 << 16) { setp(m_data.data(), m_data.data() + m_data.size()); }
+    explicit Buffer(int fd) : m_fd(fd), m_data(1 << 16)
+    {
+        setp(m_data.data(), m_data.data() + m_data.size());
+    }
     int error() const { return m_error; }
     bool flushAll() { return drain() && m_error == 0; }
 
@@ -85,21 +91,25 @@ AtomicFile::AtomicFile(std::string path) : m_path(std::move(path))
     if (::stat(m_path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
         throw FileError(m_path, 0, "cannot write: it is a folder");
     const std::size_t slash = m_path.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? std::string(".") : m_path.substr(0, slash + 1);
+    const std::string dir =
+        slash == std::string::npos ? std::string(".") : m_path.substr(0, slash + 1);
     const std::string base = slash == std::string::npos ? m_path : m_path.substr(slash + 1);
     const std::size_t dot = base.find_last_of('.');
     const std::string ext = dot == std::string::npos || dot == 0 ? std::string() : base.substr(dot);
-    std::string pattern = (slash == std::string::npos ? std::string() : dir) + "." + base + ".XXXXXX" + ext;
+    std::string pattern =
+        (slash == std::string::npos ? std::string() : dir) + "." + base + ".XXXXXX" + ext;
     std::vector<char> name(pattern.begin(), pattern.end());
     name.push_back('\0');
     m_fd = ::mkstemps(name.data(), static_cast<int>(ext.size()));
     if (m_fd < 0) {
         const int error = errno;
-        throw FileError(m_path, 0, "cannot create a file in folder " + dir + ": " + systemError(error));
+        throw FileError(m_path, 0,
+                        "cannot create a file in folder " + dir + ": " + systemError(error));
     }
     m_temporary = name.data();
     // mkstemps gives 0600; give the file the mode a plain open() would (or the replaced file's).
-    const mode_t mode = ::stat(m_path.c_str(), &st) == 0 ? (st.st_mode & 07777) : (0666 & ~currentUmask());
+    const mode_t mode =
+        ::stat(m_path.c_str(), &st) == 0 ? (st.st_mode & 07777) : (0666 & ~currentUmask());
     (void)::fchmod(m_fd, mode);
 }
 
@@ -158,7 +168,8 @@ void AtomicFile::commit()
     m_committed = true;
     // Make the rename itself durable; a failure here leaves a complete file, so it is not an error.
     const std::size_t slash = m_path.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? std::string(".") : m_path.substr(0, slash + 1);
+    const std::string dir =
+        slash == std::string::npos ? std::string(".") : m_path.substr(0, slash + 1);
     const int dirFd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
     if (dirFd >= 0) {
         (void)::fsync(dirFd);
@@ -166,14 +177,16 @@ void AtomicFile::commit()
     }
 }
 
-void writeTextFileAtomically(const std::string &path, const std::function<void(std::ostream &)> &write)
+void writeTextFileAtomically(const std::string &path,
+                             const std::function<void(std::ostream &)> &write)
 {
     AtomicFile file(path);
     write(file.stream());
     file.commit();
 }
 
-void writeFileAtomically(const std::string &path, const std::function<void(const std::string &)> &write)
+void writeFileAtomically(const std::string &path,
+                         const std::function<void(const std::string &)> &write)
 {
     AtomicFile file(path);
     write(file.temporaryPath());

@@ -45,8 +45,10 @@ private:
 };
 
 // Writes through a stream: write(out) then commit.
-void writeTextFileAtomically(const std::string &path, const std::function<void(std::ostream &)> &write);
+void writeTextFileAtomically(const std::string &path,
+                             const std::function<void(std::ostream &)> &write);
 // For libraries that write by file name: write(temporaryPath) then commit. write throws on failure.
-void writeFileAtomically(const std::string &path, const std::function<void(const std::string &)> &write);
+void writeFileAtomically(const std::string &path,
+                         const std::function<void(const std::string &)> &write);
 
 } // namespace stratamesh

@@ -68,8 +68,9 @@ void writeCellsVtu(const std::string &path, const std::vector<ConvexPolyhedron> 
 {
     for (const CellIntArray &a : arrays)
         if (a.values.size() != cells.size())
-            throw InputError("cells export: array '" + a.name + "' has " + std::to_string(a.values.size())
-                             + " values for " + std::to_string(cells.size()) + " cells");
+            throw InputError("cells export: array '" + a.name + "' has "
+                             + std::to_string(a.values.size()) + " values for "
+                             + std::to_string(cells.size()) + " cells");
     vtkNew<vtkUnstructuredGrid> grid = makeGrid(cells, arrays);
     writeFileAtomically(path, [&](const std::string &temporary) {
         vtkNew<vtkXMLUnstructuredGridWriter> writer;
@@ -81,9 +82,10 @@ void writeCellsVtu(const std::string &path, const std::vector<ConvexPolyhedron> 
         const int ok = writer->Write();
         const unsigned long code = writer->GetErrorCode();
         if (ok != 1 || code != vtkErrorCode::NoError || errors.failed()) {
-            std::string cause = code == vtkErrorCode::OutOfDiskSpaceError ? std::string("No space left on device")
-                                : code != vtkErrorCode::NoError ? vtkErrorCode::GetStringFromErrorCode(code)
-                                                                : std::string("VTK could not write the file");
+            std::string cause =
+                code == vtkErrorCode::OutOfDiskSpaceError ? std::string("No space left on device")
+                : code != vtkErrorCode::NoError ? vtkErrorCode::GetStringFromErrorCode(code)
+                                                : std::string("VTK could not write the file");
             if (errors.failed())
                 cause += " (" + errors.message() + ")";
             throw FileError(path, 0, "cannot write: " + cause);

@@ -23,28 +23,44 @@ inline int gmshTypeOf(CellType type)
 inline int gmshNodeCount(int type)
 {
     switch (type) {
-    case gmshPoint: return 1;
-    case gmshLine: return 2;
-    case gmshTriangle: return 3;
-    case gmshTet: return 4;
-    case gmshPyramid: return 5;
-    case gmshPrism: return 6;
-    default: return 0;
+    case gmshPoint:
+        return 1;
+    case gmshLine:
+        return 2;
+    case gmshTriangle:
+        return 3;
+    case gmshTet:
+        return 4;
+    case gmshPyramid:
+        return 5;
+    case gmshPrism:
+        return 6;
+    default:
+        return 0;
     }
 }
 
 inline const char *gmshTypeName(int type)
 {
     switch (type) {
-    case gmshPoint: return "point";
-    case gmshLine: return "line";
-    case gmshTriangle: return "triangle";
-    case gmshQuadrangle: return "quadrangle";
-    case gmshTet: return "tetrahedron";
-    case gmshHexahedron: return "hexahedron";
-    case gmshPrism: return "prism";
-    case gmshPyramid: return "pyramid";
-    default: return "higher-order or unknown element";
+    case gmshPoint:
+        return "point";
+    case gmshLine:
+        return "line";
+    case gmshTriangle:
+        return "triangle";
+    case gmshQuadrangle:
+        return "quadrangle";
+    case gmshTet:
+        return "tetrahedron";
+    case gmshHexahedron:
+        return "hexahedron";
+    case gmshPrism:
+        return "prism";
+    case gmshPyramid:
+        return "pyramid";
+    default:
+        return "higher-order or unknown element";
     }
 }
 

@@ -29,10 +29,14 @@ struct RawElement {
 int typeDimension(int type)
 {
     switch (type) {
-    case gmshPoint: return 0;
-    case gmshLine: return 1;
-    case gmshTriangle: return 2;
-    default: return 3;
+    case gmshPoint:
+        return 0;
+    case gmshLine:
+        return 1;
+    case gmshTriangle:
+        return 2;
+    default:
+        return 3;
     }
 }
 
@@ -158,11 +162,13 @@ private:
                 for (int j = 0; j < (dim == 0 ? 3 : 6); ++j)
                     c.toDouble(take("a coordinate"), "a coordinate");
                 EntityInfo &e = entities[{dim, tag}];
-                const int nPhys = c.toInt(take("the number of physical tags"), "a physical tag count");
+                const int nPhys =
+                    c.toInt(take("the number of physical tags"), "a physical tag count");
                 if (nPhys < 0)
                     c.fail("negative number of physical tags");
                 for (int j = 0; j < nPhys; ++j)
-                    e.physicals.push_back(std::abs(c.toInt(take("a physical tag"), "a physical tag")));
+                    e.physicals.push_back(
+                        std::abs(c.toInt(take("a physical tag"), "a physical tag")));
                 if (dim > 0) {
                     const int nBnd = c.toInt(take("the number of bounding entities"), "a count");
                     if (nBnd < 0)
@@ -239,19 +245,22 @@ private:
         expectEnd("$EndNodes");
     }
 
-    void addElement(int dim, int type, int entity, int physical, const std::vector<std::string_view> &t,
-                    std::size_t firstNodeToken)
+    void addElement(int dim, int type, int entity, int physical,
+                    const std::vector<std::string_view> &t, std::size_t firstNodeToken)
     {
         const int k = gmshNodeCount(type);
         if (k == 0)
-            c.fail("element type " + std::to_string(type) + " (" + gmshTypeName(type) +
-                   ") is not supported: StrataMesh exchanges points, lines, triangles, tetrahedra, "
-                   "pyramids and prisms");
+            c.fail(
+                "element type " + std::to_string(type) + " (" + gmshTypeName(type)
+                + ") is not supported: StrataMesh exchanges points, lines, triangles, tetrahedra, "
+                  "pyramids and prisms");
         if (t.size() < firstNodeToken + static_cast<std::size_t>(k))
-            c.fail(std::string("a ") + gmshTypeName(type) + " needs " + std::to_string(k) + " nodes");
+            c.fail(std::string("a ") + gmshTypeName(type) + " needs " + std::to_string(k)
+                   + " nodes");
         RawElement e{dim, type, entity, physical, elementNodes.size()};
         for (int j = 0; j < k; ++j) {
-            const long long tag = c.toInt(t[firstNodeToken + static_cast<std::size_t>(j)], "a node tag");
+            const long long tag =
+                c.toInt(t[firstNodeToken + static_cast<std::size_t>(j)], "a node tag");
             auto it = nodeIndex.find(tag);
             if (it == nodeIndex.end())
                 c.fail("element uses node " + std::to_string(tag) + ", which is not in $Nodes");
@@ -279,7 +288,8 @@ private:
                 c.fail("element line too short for its tags");
             const int physical = ntags > 0 ? c.toInt(t[3], "a physical tag") : 0;
             const int entity = ntags > 1 ? c.toInt(t[4], "an elementary tag") : 0;
-            addElement(typeDimension(type), type, entity, physical, t, 3 + static_cast<std::size_t>(ntags));
+            addElement(typeDimension(type), type, entity, physical, t,
+                       3 + static_cast<std::size_t>(ntags));
         }
         expectEnd("$EndElements");
     }
@@ -320,7 +330,8 @@ private:
         if (major != 4)
             return e.physical;
         auto it = entities.find({e.dim, e.entity});
-        return it == entities.end() || it->second.physicals.empty() ? 0 : it->second.physicals.front();
+        return it == entities.end() || it->second.physicals.empty() ? 0
+                                                                    : it->second.physicals.front();
     }
 
     // Group keys of one dimension: physical tags when the file has some, entity tags otherwise.
@@ -369,8 +380,9 @@ private:
         std::vector<std::string> out;
         for (int key : g.keys) {
             auto it = physicalNames.find({dim, key});
-            out.push_back(g.byPhysical && it != physicalNames.end() ? it->second
-                                                                  : std::string(kind) + "_" + std::to_string(key));
+            out.push_back(g.byPhysical && it != physicalNames.end()
+                              ? it->second
+                              : std::string(kind) + "_" + std::to_string(key));
         }
         return out;
     }
@@ -389,7 +401,9 @@ private:
             const int *n = elementNodes.data() + e.firstNode;
             const int physical = physicalOf(e);
             switch (e.type) {
-            case gmshPoint: mesh.corners.push_back(n[0]); break;
+            case gmshPoint:
+                mesh.corners.push_back(n[0]);
+                break;
             case gmshLine:
                 mesh.edges.push_back({n[0], n[1]});
                 mesh.edgeLine.push_back(groupOf(lines, 1, e.entity, physical));
@@ -400,7 +414,9 @@ private:
                 break;
             default: {
                 Cell cell;
-                cell.type = e.type == gmshTet ? CellType::Tet : e.type == gmshPyramid ? CellType::Pyramid : CellType::Prism;
+                cell.type = e.type == gmshTet       ? CellType::Tet
+                            : e.type == gmshPyramid ? CellType::Pyramid
+                                                    : CellType::Prism;
                 std::copy(n, n + cell.size(), cell.nodes.begin());
                 mesh.cells.push_back(cell);
                 mesh.cellRegion.push_back(groupOf(regions, 3, e.entity, physical));
@@ -413,12 +429,15 @@ private:
         for (const auto &[key, info] : entities) {
             if (key.first != 3)
                 continue;
-            const int r = groupOf(regions, 3, key.second, info.physicals.empty() ? 0 : info.physicals.front());
+            const int r = groupOf(regions, 3, key.second,
+                                  info.physicals.empty() ? 0 : info.physicals.front());
             if (r < 0)
                 continue;
             for (int b : info.bounding) {
                 auto it = entities.find({2, std::abs(b)});
-                const int phys = it == entities.end() || it->second.physicals.empty() ? 0 : it->second.physicals.front();
+                const int phys = it == entities.end() || it->second.physicals.empty()
+                                     ? 0
+                                     : it->second.physicals.front();
                 const int s = groupOf(surfaces, 2, std::abs(b), phys);
                 if (s >= 0) {
                     sides[r].insert({s, b < 0});
@@ -452,6 +471,9 @@ private:
 
 } // namespace
 
-VolumeMesh readGmsh(const std::string &path) { return GmshParser(path).run(); }
+VolumeMesh readGmsh(const std::string &path)
+{
+    return GmshParser(path).run();
+}
 
 } // namespace stratamesh

@@ -16,11 +16,11 @@ namespace {
 struct Entity {
     int dim = 0;
     int tag = 0;
-    int physical = 0; // 0 = none
+    int physical = 0;                            // 0 = none
     std::map<int, std::vector<int>> nodesByType; // Gmsh element type -> flattened nodes
     std::vector<int> bounding;                   // signed tags of lower-dimension entities
     std::array<double, 6> box{0, 0, 0, 0, 0, 0};
-    std::vector<int> nodes;                      // nodes classified on this entity
+    std::vector<int> nodes; // nodes classified on this entity
     std::size_t elementCount() const
     {
         std::size_t n = 0;
@@ -71,8 +71,8 @@ Layout buildLayout(const VolumeMesh &mesh, bool saveAll)
         layout.physicalNames[{0, 1}] = "corners";
 
     // One entity per group; the untagged one last, with no physical group.
-    auto makeGroups = [&](int dim, const std::vector<std::string> &names, const std::vector<int> &groupOf,
-                          auto &&elementOf) {
+    auto makeGroups = [&](int dim, const std::vector<std::string> &names,
+                          const std::vector<int> &groupOf, auto &&elementOf) {
         std::vector<Entity> &out = layout.entities[dim];
         const std::size_t base = out.size();
         for (std::size_t g = 0; g < names.size(); ++g) {
@@ -88,7 +88,8 @@ Layout buildLayout(const VolumeMesh &mesh, bool saveAll)
         untagged.tag = static_cast<int>(names.size()) + 1;
         for (std::size_t i = 0; i < groupOf.size(); ++i) {
             const auto [type, nodes] = elementOf(i);
-            Entity *target = groupOf[i] >= 0 ? &out[base + static_cast<std::size_t>(groupOf[i])] : &untagged;
+            Entity *target =
+                groupOf[i] >= 0 ? &out[base + static_cast<std::size_t>(groupOf[i])] : &untagged;
             if (groupOf[i] < 0 && !saveAll) {
                 ++layout.skipped;
                 continue;
@@ -103,24 +104,30 @@ Layout buildLayout(const VolumeMesh &mesh, bool saveAll)
     makeGroups(1, mesh.lineNames, mesh.edgeLine, [&](std::size_t i) {
         return std::pair<int, Nodes>{gmshLine, Nodes{mesh.edges[i][0], mesh.edges[i][1]}};
     });
-    makeGroups(2, [&] {
-        std::vector<std::string> names;
-        for (const MeshSurface &s : mesh.surfaces)
-            names.push_back(s.name);
-        return names;
-    }(), mesh.triangleSurface, [&](std::size_t i) {
-        const Triangle &t = mesh.triangles[i];
-        return std::pair<int, Nodes>{gmshTriangle, Nodes{t[0], t[1], t[2]}};
-    });
+    makeGroups(
+        2,
+        [&] {
+            std::vector<std::string> names;
+            for (const MeshSurface &s : mesh.surfaces)
+                names.push_back(s.name);
+            return names;
+        }(),
+        mesh.triangleSurface,
+        [&](std::size_t i) {
+            const Triangle &t = mesh.triangles[i];
+            return std::pair<int, Nodes>{gmshTriangle, Nodes{t[0], t[1], t[2]}};
+        });
     makeGroups(3, mesh.regionNames, mesh.cellRegion, [&](std::size_t i) {
         const Cell &c = mesh.cells[i];
-        return std::pair<int, Nodes>{gmshTypeOf(c.type), Nodes(c.nodes.begin(), c.nodes.begin() + c.size())};
+        return std::pair<int, Nodes>{gmshTypeOf(c.type),
+                                     Nodes(c.nodes.begin(), c.nodes.begin() + c.size())};
     });
     // Regions of a surface model are empty volumes bounded by their surfaces; the boundary sign
     // is + when the surface normal points out of the region.
     for (std::size_t r = 0; r < mesh.regionBoundaries.size(); ++r)
         for (const RegionSide &side : mesh.regionBoundaries[r])
-            layout.entities[3][r].bounding.push_back(side.positive ? -(side.surface + 1) : side.surface + 1);
+            layout.entities[3][r].bounding.push_back(side.positive ? -(side.surface + 1)
+                                                                   : side.surface + 1);
     return layout;
 }
 
@@ -179,8 +186,8 @@ void computeBoxes(const VolumeMesh &mesh, Layout &layout)
             if (dim == 3)
                 for (int b : e.bounding) {
                     const int s = std::abs(b) - 1;
-                    if (s >= 0 && s < static_cast<int>(layout.entities[2].size()) &&
-                        !layout.entities[2][s].nodesByType.empty())
+                    if (s >= 0 && s < static_cast<int>(layout.entities[2].size())
+                        && !layout.entities[2][s].nodesByType.empty())
                         grow(e.box, empty, layout.entities[2][s].box);
                 }
         }
@@ -211,8 +218,8 @@ std::size_t write41(std::ostream &out, const VolumeMesh &mesh, const Layout &lay
     out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
     writePhysicalNames(out, layout);
     out << "$Entities\n";
-    out << layout.entities[0].size() << ' ' << layout.entities[1].size() << ' ' << layout.entities[2].size() << ' '
-        << layout.entities[3].size() << '\n';
+    out << layout.entities[0].size() << ' ' << layout.entities[1].size() << ' '
+        << layout.entities[2].size() << ' ' << layout.entities[3].size() << '\n';
     for (int dim = 0; dim < 4; ++dim)
         for (const Entity &e : layout.entities[dim]) {
             out << e.tag << ' ';
@@ -260,7 +267,8 @@ std::size_t write41(std::ostream &out, const VolumeMesh &mesh, const Layout &lay
             elementBlocks += e.nodesByType.size();
             elements += e.elementCount();
         }
-    out << "$Elements\n" << elementBlocks << ' ' << elements << ' ' << (elements ? 1 : 0) << ' ' << elements << '\n';
+    out << "$Elements\n"
+        << elementBlocks << ' ' << elements << ' ' << (elements ? 1 : 0) << ' ' << elements << '\n';
     std::size_t tag = 1;
     for (int dim = 0; dim < 4; ++dim)
         for (const Entity &e : layout.entities[dim])
@@ -311,7 +319,8 @@ std::size_t write22(std::ostream &out, const VolumeMesh &mesh, const Layout &lay
 
 } // namespace
 
-GmshWriteResult writeGmsh(const VolumeMesh &mesh, const std::string &path, const GmshWriteOptions &options)
+GmshWriteResult writeGmsh(const VolumeMesh &mesh, const std::string &path,
+                          const GmshWriteOptions &options)
 {
     validateMesh(mesh);
     Layout layout = buildLayout(mesh, options.saveAll);
@@ -320,8 +329,9 @@ GmshWriteResult writeGmsh(const VolumeMesh &mesh, const std::string &path, const
     GmshWriteResult result;
     result.untaggedSkipped = layout.skipped;
     writeTextFileAtomically(path, [&](std::ostream &out) {
-        result.elementsWritten = options.version == GmshWriteOptions::Version::V41 ? write41(out, mesh, layout)
-                                                                                   : write22(out, mesh, layout);
+        result.elementsWritten = options.version == GmshWriteOptions::Version::V41
+                                     ? write41(out, mesh, layout)
+                                     : write22(out, mesh, layout);
     });
     return result;
 }

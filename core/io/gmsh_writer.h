@@ -25,7 +25,9 @@ struct GmshWriteResult {
     std::size_t untaggedSkipped = 0; // elements left out because they have no group and !saveAll
 };
 
-// Writes atomically; throws InputError for an invalid mesh, FileError when the file cannot be written.
-GmshWriteResult writeGmsh(const VolumeMesh &mesh, const std::string &path, const GmshWriteOptions &options = {});
+// Writes atomically; throws InputError for an invalid mesh, FileError when the file cannot be
+// written.
+GmshWriteResult writeGmsh(const VolumeMesh &mesh, const std::string &path,
+                          const GmshWriteOptions &options = {});
 
 } // namespace stratamesh

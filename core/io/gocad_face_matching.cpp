@@ -36,8 +36,8 @@ std::string faceLabel(const GocadHeaderFace &f)
 
 // For every key, the body faces having a triangle with the key's vertex cycle, in one pass over
 // the triangles (keys are indexed by their first point).
-std::vector<std::vector<Candidate>> findKeyCandidates(
-    const std::vector<const GocadHeaderFace *> &headerFaces, const GocadTSurf &body)
+std::vector<std::vector<Candidate>>
+findKeyCandidates(const std::vector<const GocadHeaderFace *> &headerFaces, const GocadTSurf &body)
 {
     std::unordered_multimap<Vec3, int, PointHash> byFirstPoint;
     for (std::size_t k = 0; k < headerFaces.size(); ++k)
@@ -82,9 +82,9 @@ std::vector<GocadFaceMatch> matchGocadFaces(const std::vector<const GocadHeaderF
     const std::size_t n = headerFaces.size();
     if (body.faces.size() != n)
         throw FileError(fileName, body.info.firstLine,
-                        describeGocadObject(body.info) + " has " + std::to_string(body.faces.size()) +
-                            " TFACEs but the Model3d header declares " + std::to_string(n) +
-                            " for it");
+                        describeGocadObject(body.info) + " has " + std::to_string(body.faces.size())
+                            + " TFACEs but the Model3d header declares " + std::to_string(n)
+                            + " for it");
 
     const auto candidates = findKeyCandidates(headerFaces, body);
     std::vector<GocadFaceMatch> matches(n);
@@ -109,8 +109,9 @@ std::vector<GocadFaceMatch> matchGocadFaces(const std::vector<const GocadHeaderF
                 free.push_back(c);
         if (free.size() > 1)
             throw FileError(fileName, headerFaces[h]->line,
-                            "the key triangle of " + faceLabel(*headerFaces[h]) +
-                                " is a triangle of several TFACEs of " + describeGocadObject(body.info));
+                            "the key triangle of " + faceLabel(*headerFaces[h])
+                                + " is a triangle of several TFACEs of "
+                                + describeGocadObject(body.info));
         if (free.size() == 1)
             assign(h, free.front());
     }
@@ -119,11 +120,12 @@ std::vector<GocadFaceMatch> matchGocadFaces(const std::vector<const GocadHeaderF
         if (matches[h].bodyFace >= 0)
             continue;
         if (taken[h])
-            throw FileError(fileName, headerFaces[h]->line,
-                            "cannot match " + faceLabel(*headerFaces[h]) + " to a TFACE of " +
-                                describeGocadObject(body.info) +
-                                ": its key triangle is in no remaining TFACE and the TFACE at its "
-                                "position matches another one");
+            throw FileError(
+                fileName, headerFaces[h]->line,
+                "cannot match " + faceLabel(*headerFaces[h]) + " to a TFACE of "
+                    + describeGocadObject(body.info)
+                    + ": its key triangle is in no remaining TFACE and the TFACE at its "
+                      "position matches another one");
         matches[h] = {int(h), false, false};
         taken[h] = 1;
     }

@@ -16,8 +16,8 @@ std::vector<GocadListedId> readZeroTerminatedList(GocadLineTokenizer &tok, const
             if (!parseGocadInteger(tok.token(i), v)) {
                 if (i == 0)
                     tok.fail("list of ids of " + where + " is not ended by 0");
-                tok.fail("'" + std::string(tok.token(i)) + "' in the list of " + where +
-                         " is not an integer id");
+                tok.fail("'" + std::string(tok.token(i)) + "' in the list of " + where
+                         + " is not an integer id");
             }
             if (v == 0)
                 return ids;
@@ -41,8 +41,8 @@ void readKeyTriangle(GocadLineTokenizer &tok, GocadHeaderFace &face)
     }
     for (int k = 0; k < 3; ++k) {
         if (k > 0 && !tok.next())
-            tok.failAt(tok.lastLineNumber(), "file ends inside the key triangle of TFACE " +
-                                                 std::to_string(face.id) + " (truncated file?)");
+            tok.failAt(tok.lastLineNumber(), "file ends inside the key triangle of TFACE "
+                                                 + std::to_string(face.id) + " (truncated file?)");
         tok.requireTokens(3, "x y z of a key triangle point of TFACE " + std::to_string(face.id));
         face.key[k] = Vec3(tok.coordinate(0, "x coordinate"), tok.coordinate(1, "y coordinate"),
                            tok.coordinate(2, "z coordinate"));

@@ -64,20 +64,22 @@ private:
         for (std::size_t t = 0; t < m_h.tsurfs.size(); ++t) {
             const auto [it, inserted] = m_tsurfIndex.emplace(m_h.tsurfs[t].name, int(t));
             if (!inserted)
-                fail(m_h.tsurfs[t].line, "TSURF '" + m_h.tsurfs[t].name + "' is declared twice (first at line " +
-                                             std::to_string(m_h.tsurfs[it->second].line) + ")");
+                fail(m_h.tsurfs[t].line, "TSURF '" + m_h.tsurfs[t].name
+                                             + "' is declared twice (first at line "
+                                             + std::to_string(m_h.tsurfs[it->second].line) + ")");
         }
         m_facesOfTsurf.resize(m_h.tsurfs.size());
         for (std::size_t f = 0; f < m_h.faces.size(); ++f) {
             const GocadHeaderFace &face = m_h.faces[f];
             const auto [it, inserted] = m_faceIndex.emplace(face.id, int(f));
             if (!inserted)
-                fail(face.line, "TFACE " + std::to_string(face.id) + " is declared twice (first at line " +
-                                    std::to_string(m_h.faces[it->second].line) + ")");
+                fail(face.line, "TFACE " + std::to_string(face.id)
+                                    + " is declared twice (first at line "
+                                    + std::to_string(m_h.faces[it->second].line) + ")");
             const auto t = m_tsurfIndex.find(face.tsurf);
             if (t == m_tsurfIndex.end())
-                fail(face.line, "TFACE " + std::to_string(face.id) + " names TSURF '" + face.tsurf +
-                                    "', which the header does not declare");
+                fail(face.line, "TFACE " + std::to_string(face.id) + " names TSURF '" + face.tsurf
+                                    + "', which the header does not declare");
             m_facesOfTsurf[t->second].push_back(int(f));
         }
     }
@@ -92,22 +94,25 @@ private:
             if (!info.name.empty()) {
                 const auto it = m_tsurfIndex.find(info.name);
                 if (it == m_tsurfIndex.end())
-                    fail(info.firstLine, "TSurf '" + info.name +
-                                             "' is not declared by a TSURF line of the Model3d header");
+                    fail(info.firstLine,
+                         "TSurf '" + info.name
+                             + "' is not declared by a TSURF line of the Model3d header");
                 t = it->second;
             } else if (t >= int(m_h.tsurfs.size())) {
-                fail(info.firstLine, "unnamed TSurf beyond the TSURFs declared by the Model3d header");
+                fail(info.firstLine,
+                     "unnamed TSurf beyond the TSURFs declared by the Model3d header");
             }
             if (m_bodyOfTsurf[t] >= 0)
-                fail(info.firstLine, "second TSurf object for TSURF '" + m_h.tsurfs[t].name +
-                                         "' (first at line " +
-                                         std::to_string(m_bodies[m_bodyOfTsurf[t]].info.firstLine) + ")");
+                fail(info.firstLine,
+                     "second TSurf object for TSURF '" + m_h.tsurfs[t].name + "' (first at line "
+                         + std::to_string(m_bodies[m_bodyOfTsurf[t]].info.firstLine) + ")");
             m_bodyOfTsurf[t] = int(b);
         }
         for (std::size_t t = 0; t < m_h.tsurfs.size(); ++t)
             if (m_bodyOfTsurf[t] < 0)
-                fail(m_h.tsurfs[t].line, "TSURF '" + m_h.tsurfs[t].name +
-                                             "' has no TSurf object in the file (truncated file?)");
+                fail(m_h.tsurfs[t].line,
+                     "TSURF '" + m_h.tsurfs[t].name
+                         + "' has no TSurf object in the file (truncated file?)");
     }
 
     // SURFACE groups name the geological feature of faces; the first group naming a face wins.
@@ -141,8 +146,8 @@ private:
                 Surface &s = m_model.surfaces[f];
                 s.name = patchName(tsurfName, faceIds.size(), k);
                 s.featureName = !body.geologicalFeature.empty() ? body.geologicalFeature
-                                : !groups[f].empty()          ? groups[f]
-                                                              : tsurfName;
+                                : !groups[f].empty()            ? groups[f]
+                                                                : tsurfName;
                 s.type = featureTypeFromGocad(m_h.faces[f].type);
                 if (s.type == FeatureType::Unknown && !body.geologicalType.empty())
                     s.type = featureTypeFromGocad(body.geologicalType);
@@ -163,8 +168,9 @@ private:
         for (const GocadListedId &id : region.ids) {
             const auto it = m_faceIndex.find(std::llabs(id.id));
             if (it == m_faceIndex.end())
-                fail(id.line, "REGION '" + region.name + "' names TFACE " + std::to_string(std::llabs(id.id)) +
-                                  ", which the header does not declare");
+                fail(id.line, "REGION '" + region.name + "' names TFACE "
+                                  + std::to_string(std::llabs(id.id))
+                                  + ", which the header does not declare");
             // A key triangle written with the opposite cycle means the file's signs refer to
             // the other side of the triangles as stored.
             const bool positive = (id.id > 0) != bool(m_reversed[it->second]);
@@ -208,7 +214,8 @@ private:
     Model m_model;
     std::unordered_map<std::string, int> m_tsurfIndex;
     std::unordered_map<long long, int> m_faceIndex;
-    std::unordered_map<long long, int> m_regionIndex; // REGION id -> index in Model::regions, -1 Universe
+    std::unordered_map<long long, int>
+        m_regionIndex; // REGION id -> index in Model::regions, -1 Universe
     std::vector<std::vector<int>> m_facesOfTsurf;
     std::vector<int> m_bodyOfTsurf;
     std::vector<char> m_reversed;
@@ -242,13 +249,14 @@ Model buildGocadSurfaces(std::vector<GocadTSurf> tsurfs, const std::string &file
     for (std::size_t i = 0; i < tsurfs.size(); ++i) {
         GocadTSurf &ts = tsurfs[i];
         const std::string object = !ts.info.name.empty() ? ts.info.name
-                                   : tsurfs.size() == 1   ? model.name
-                                                          : model.name + "_" + std::to_string(i + 1);
+                                   : tsurfs.size() == 1  ? model.name
+                                                         : model.name + "_" + std::to_string(i + 1);
         for (std::size_t k = 0; k < ts.faces.size(); ++k) {
             Surface s;
             s.name = patchName(object, ts.faces.size(), k);
             s.featureName = ts.geologicalFeature.empty() ? object : ts.geologicalFeature;
-            s.type = ts.geologicalType.empty() ? FeatureType::Unknown : featureTypeFromGocad(ts.geologicalType);
+            s.type = ts.geologicalType.empty() ? FeatureType::Unknown
+                                               : featureTypeFromGocad(ts.geologicalType);
             s.sourceObject = object;
             s.vertices = std::move(ts.faces[k].vertices);
             s.triangles = std::move(ts.faces[k].triangles);

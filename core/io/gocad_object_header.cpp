@@ -59,8 +59,8 @@ void readHeaderBlock(GocadLineTokenizer &tok, GocadObjectInfo &info)
     std::size_t open = text.find('{');
     while (open == std::string_view::npos) {
         if (!tok.next())
-            tok.failAt(tok.lastLineNumber(), "file ends inside the HEADER block started at line " +
-                                                 std::to_string(start));
+            tok.failAt(tok.lastLineNumber(), "file ends inside the HEADER block started at line "
+                                                 + std::to_string(start));
         refuseEndInBlock(tok, "the HEADER block", start);
         text = tok.line();
         open = text.find('{');
@@ -72,8 +72,8 @@ void readHeaderBlock(GocadLineTokenizer &tok, GocadObjectInfo &info)
         if (close != std::string_view::npos)
             return;
         if (!tok.next())
-            tok.failAt(tok.lastLineNumber(), "file ends inside the HEADER block started at line " +
-                                                 std::to_string(start));
+            tok.failAt(tok.lastLineNumber(), "file ends inside the HEADER block started at line "
+                                                 + std::to_string(start));
         refuseEndInBlock(tok, "the HEADER block", start);
         text = tok.line();
     }
@@ -98,11 +98,11 @@ void readCoordinateSystem(GocadLineTokenizer &tok, GocadObjectInfo &info)
         if (tok.is(0, "ZPOSITIVE"))
             readZPositive(tok, info);
         else if (tok.is(0, "END") || tok.is(0, "GOCAD"))
-            tok.fail("coordinate system block started at line " + std::to_string(start) +
-                     " has no END_ORIGINAL_COORDINATE_SYSTEM");
+            tok.fail("coordinate system block started at line " + std::to_string(start)
+                     + " has no END_ORIGINAL_COORDINATE_SYSTEM");
     }
-    tok.failAt(tok.lastLineNumber(),
-               "file ends inside the coordinate system block started at line " + std::to_string(start));
+    tok.failAt(tok.lastLineNumber(), "file ends inside the coordinate system block started at line "
+                                         + std::to_string(start));
 }
 
 // PROPERTY_CLASS_HEADER X { … } and similar display blocks: skipped up to the closing brace.
@@ -126,8 +126,9 @@ void skipUntil(GocadLineTokenizer &tok, std::string_view endKeyword)
     while (tok.next())
         if (tok.is(0, endKeyword))
             return;
-    tok.failAt(tok.lastLineNumber(), "file ends before " + std::string(endKeyword) +
-                                         " closing the block started at line " + std::to_string(start));
+    tok.failAt(tok.lastLineNumber(), "file ends before " + std::string(endKeyword)
+                                         + " closing the block started at line "
+                                         + std::to_string(start));
 }
 
 } // namespace
@@ -187,10 +188,11 @@ void skipGocadObject(GocadLineTokenizer &tok, const GocadObjectInfo &info)
 
 void failMissingGocadEnd(const GocadLineTokenizer &tok, const GocadObjectInfo &info, bool atEnd)
 {
-    const std::string what = describeGocadObject(info) + " started at line " +
-                             std::to_string(info.firstLine);
+    const std::string what =
+        describeGocadObject(info) + " started at line " + std::to_string(info.firstLine);
     if (atEnd)
-        tok.failAt(tok.lastLineNumber(), "file ends before the END of " + what + " (truncated file?)");
+        tok.failAt(tok.lastLineNumber(),
+                   "file ends before the END of " + what + " (truncated file?)");
     tok.fail("missing END of " + what + " before the next GOCAD object");
 }
 

@@ -52,7 +52,8 @@ private:
             m_stones.push_back({t.integer(1, "BSTONE vertex id"), t.lineNumber()});
         } else if (t.is(0, "BORDER")) {
             t.requireTokens(4, "BORDER id corner_vertex_id next_vertex_id");
-            m_result.borders.push_back({t.integer(1, "BORDER id"), t.integer(2, "BORDER corner vertex id"),
+            m_result.borders.push_back({t.integer(1, "BORDER id"),
+                                        t.integer(2, "BORDER corner vertex id"),
                                         t.integer(3, "BORDER next vertex id"), t.lineNumber()});
         } else if (t.is(0, "GEOLOGICAL_FEATURE")) {
             m_result.geologicalFeature = t.joined(1);
@@ -86,8 +87,8 @@ private:
         const auto [it, inserted] =
             m_ids.try_emplace(id, VertexRef{face, int(f.vertices.size()), m_tok.lineNumber()});
         if (!inserted)
-            m_tok.fail("vertex id " + std::to_string(id) + " is already defined at line " +
-                       std::to_string(it->second.line));
+            m_tok.fail("vertex id " + std::to_string(id) + " is already defined at line "
+                       + std::to_string(it->second.line));
         f.vertices.push_back(p);
     }
 
@@ -109,8 +110,8 @@ private:
         const long long ref = m_tok.integer(2, "referenced vertex id");
         const auto it = m_ids.find(ref);
         if (it == m_ids.end())
-            m_tok.fail("ATOM " + std::to_string(id) + " refers to vertex " + std::to_string(ref) +
-                       ", which is not defined before it");
+            m_tok.fail("ATOM " + std::to_string(id) + " refers to vertex " + std::to_string(ref)
+                       + ", which is not defined before it");
         const Vec3 p = m_result.faces[it->second.face].vertices[it->second.local];
         defineVertex(id, p);
     }
@@ -119,8 +120,8 @@ private:
     {
         const auto it = m_ids.find(id);
         if (it == m_ids.end())
-            m_tok.fail("TRGL refers to vertex " + std::to_string(id) + ", which is not defined in " +
-                       describeGocadObject(m_result.info));
+            m_tok.fail("TRGL refers to vertex " + std::to_string(id) + ", which is not defined in "
+                       + describeGocadObject(m_result.info));
         if (it->second.face == face)
             return it->second.local;
         // A vertex of an earlier TFACE used directly: treated like an ATOM of it, once per face.
@@ -147,8 +148,9 @@ private:
     void requireVertex(long long id, int line, const char *what)
     {
         if (m_ids.find(id) == m_ids.end())
-            m_tok.failAt(line, std::string(what) + " refers to vertex " + std::to_string(id) +
-                                   ", which is not defined in " + describeGocadObject(m_result.info));
+            m_tok.failAt(line, std::string(what) + " refers to vertex " + std::to_string(id)
+                                   + ", which is not defined in "
+                                   + describeGocadObject(m_result.info));
     }
 
     void finish()

@@ -39,8 +39,8 @@ std::vector<TSurfGroup> groupSurfaces(const Model &model, const std::vector<int>
         const Surface &first = model.surfaces[members.front()];
         for (std::size_t k = 0; k < members.size(); ++k) {
             const Surface &s = model.surfaces[members[k]];
-            if (s.name != patchName(object, members.size(), k) || s.featureName != first.featureName ||
-                s.type != first.type)
+            if (s.name != patchName(object, members.size(), k) || s.featureName != first.featureName
+                || s.type != first.type)
                 return false;
         }
         return true;
@@ -131,7 +131,8 @@ void writeTSurfObject(std::ostream &out, const Model &model, const TSurfGroup &g
             out << '\n';
         }
         for (const Triangle &t : surface.triangles)
-            out << "TRGL " << offset + t[0] + 1 << ' ' << offset + t[1] + 1 << ' ' << offset + t[2] + 1 << '\n';
+            out << "TRGL " << offset + t[0] + 1 << ' ' << offset + t[1] + 1 << ' '
+                << offset + t[2] + 1 << '\n';
         for (const FaceBorder &b : faceBorders(model, s))
             borderPairs.push_back({offset + b.stone + 1, offset + b.next + 1});
         offset += static_cast<int>(surface.vertices.size());
@@ -151,13 +152,15 @@ void requireWritable(const Model &model, const std::vector<int> &selection)
         throw InputError("the model '" + model.name + "' has no surface to write");
     for (int s : selection)
         if (model.surfaces[s].triangles.empty())
-            throw InputError("surface '" + model.surfaces[s].name + "' has no triangle: Gocad cannot hold it");
+            throw InputError("surface '" + model.surfaces[s].name
+                             + "' has no triangle: Gocad cannot hold it");
     for (int s : selection)
         for (const Triangle &t : model.surfaces[s].triangles)
             for (int v : t)
                 if (v < 0 || v >= static_cast<int>(model.surfaces[s].vertices.size()))
-                    throw InputError("surface '" + model.surfaces[s].name + "' has a triangle using vertex " +
-                                     std::to_string(v) + " of " + std::to_string(model.surfaces[s].vertices.size()));
+                    throw InputError("surface '" + model.surfaces[s].name
+                                     + "' has a triangle using vertex " + std::to_string(v) + " of "
+                                     + std::to_string(model.surfaces[s].vertices.size()));
 }
 
 // Signed ids, five per line, closed by 0 (as Gocad writes them).
@@ -166,10 +169,14 @@ void writeIdList(std::ostream &out, const std::vector<std::string> &ids)
     std::vector<std::string> all = ids;
     all.push_back("0");
     for (std::size_t i = 0; i < all.size(); ++i)
-        out << (i % 5 == 0 ? "  " : " ") << all[i] << ((i % 5 == 4 || i + 1 == all.size()) ? "\n" : "");
+        out << (i % 5 == 0 ? "  " : " ") << all[i]
+            << ((i % 5 == 4 || i + 1 == all.size()) ? "\n" : "");
 }
 
-std::string signedId(int id, bool positive) { return (positive ? "+" : "-") + std::to_string(id); }
+std::string signedId(int id, bool positive)
+{
+    return (positive ? "+" : "-") + std::to_string(id);
+}
 
 } // namespace
 
@@ -182,8 +189,9 @@ void writeGocadModel3d(const Model &model, const std::string &path)
     for (const Region &r : model.regions)
         for (const RegionSide &side : r.boundaries)
             if (side.surface < 0 || side.surface >= static_cast<int>(model.surfaces.size()))
-                throw InputError("region '" + r.name + "' is bounded by surface " + std::to_string(side.surface) +
-                                 " of " + std::to_string(model.surfaces.size()));
+                throw InputError("region '" + r.name + "' is bounded by surface "
+                                 + std::to_string(side.surface) + " of "
+                                 + std::to_string(model.surfaces.size()));
     const std::vector<TSurfGroup> groups = groupSurfaces(model, all);
     std::vector<int> faceId(model.surfaces.size());
     int nextFace = 1;
@@ -201,7 +209,8 @@ void writeGocadModel3d(const Model &model, const std::string &path)
         for (const TSurfGroup &g : groups)
             for (int s : g.surfaces) {
                 const Surface &surface = model.surfaces[s];
-                out << "TFACE " << faceId[s] << ' ' << typeWord(surface.type) << ' ' << gocadToken(g.name) << '\n';
+                out << "TFACE " << faceId[s] << ' ' << typeWord(surface.type) << ' '
+                    << gocadToken(g.name) << '\n';
                 for (int v : surface.triangles.front()) {
                     out << "  ";
                     writeGocadPoint(out, surface.vertices[v], model.zPositiveDepth);
@@ -229,7 +238,8 @@ void writeGocadModel3d(const Model &model, const std::string &path)
         writeIdList(out, universeIds);
         for (std::size_t r = 0; r < model.regions.size(); ++r) {
             const Region &region = model.regions[r];
-            out << "REGION " << faceCount + 2 + static_cast<int>(r) << ' ' << gocadToken(region.name) << '\n';
+            out << "REGION " << faceCount + 2 + static_cast<int>(r) << ' '
+                << gocadToken(region.name) << '\n';
             std::vector<std::string> ids;
             for (const RegionSide &side : region.boundaries)
                 ids.push_back(signedId(faceId[side.surface], side.positive));
@@ -254,8 +264,9 @@ void writeGocadTSurf(const Model &model, const std::string &path, int surface)
     std::vector<int> selection;
     if (surface >= 0) {
         if (surface >= static_cast<int>(model.surfaces.size()))
-            throw InputError("surface " + std::to_string(surface) + " does not exist (the model has " +
-                             std::to_string(model.surfaces.size()) + ")");
+            throw InputError("surface " + std::to_string(surface)
+                             + " does not exist (the model has "
+                             + std::to_string(model.surfaces.size()) + ")");
         selection.push_back(surface);
     } else {
         for (std::size_t s = 0; s < model.surfaces.size(); ++s)

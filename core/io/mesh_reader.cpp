@@ -22,7 +22,8 @@ std::string lowerExtension(const std::string &path)
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
         return {};
     std::string ext = path.substr(dot);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
 
@@ -54,9 +55,13 @@ VolumeMesh readVolumeMesh(const std::string &path)
     if (ext == ".gm")
         return readRingMeshVolume(path);
     throw FileError(path, 0,
-                    "unknown mesh file extension '" + ext + "' (use .so, .msh, .vtu, .vtk, .vtp, .stl, .ply or .gm)");
+                    "unknown mesh file extension '" + ext
+                        + "' (use .so, .msh, .vtu, .vtk, .vtp, .stl, .ply or .gm)");
 }
 
-Model readMeshAsModel(const std::string &path) { return modelFromMesh(readVolumeMesh(path)); }
+Model readMeshAsModel(const std::string &path)
+{
+    return modelFromMesh(readVolumeMesh(path));
+}
 
 } // namespace stratamesh

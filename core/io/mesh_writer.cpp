@@ -22,14 +22,17 @@ std::string lowerExtension(const std::string &path)
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
         return {};
     std::string ext = path.substr(dot);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
 
 [[noreturn]] void unknownExtension(const std::string &path)
 {
-    throw FileError(path, 0, "unknown output extension '" + lowerExtension(path) +
-                                 "' (use .ml, .ts, .gm, .so, .vtu, .vtk, .vtp, .msh, .obj, .off, .stl or .ply)");
+    throw FileError(
+        path, 0,
+        "unknown output extension '" + lowerExtension(path)
+            + "' (use .ml, .ts, .gm, .so, .vtu, .vtk, .vtp, .msh, .obj, .off, .stl or .ply)");
 }
 
 std::string gmshName(const GmshWriteOptions &o)
@@ -38,7 +41,8 @@ std::string gmshName(const GmshWriteOptions &o)
 }
 
 // Formats that store meshes, shared by both entry points.
-bool writeAsMesh(const VolumeMesh &mesh, const std::string &path, const ExportOptions &options, ExportReport &report)
+bool writeAsMesh(const VolumeMesh &mesh, const std::string &path, const ExportOptions &options,
+                 ExportReport &report)
 {
     const std::string ext = lowerExtension(path);
     if (ext == ".msh") {
@@ -65,7 +69,8 @@ bool writeAsMesh(const VolumeMesh &mesh, const std::string &path, const ExportOp
     return true;
 }
 
-bool writeAsModel(const Model &model, const std::string &path, const ExportOptions &options, ExportReport &report)
+bool writeAsModel(const Model &model, const std::string &path, const ExportOptions &options,
+                  ExportReport &report)
 {
     const std::string ext = lowerExtension(path);
     if (ext == ".ml") {
@@ -91,8 +96,8 @@ bool writeAsModel(const Model &model, const std::string &path, const ExportOptio
 bool isExportFile(const std::string &path)
 {
     const std::string ext = lowerExtension(path);
-    return ext == ".ml" || ext == ".ts" || ext == ".gm" || ext == ".so" || ext == ".vtu" || ext == ".vtk" ||
-           ext == ".vtp" || ext == ".msh" || isSurfaceMeshFile(path);
+    return ext == ".ml" || ext == ".ts" || ext == ".gm" || ext == ".so" || ext == ".vtu"
+           || ext == ".vtk" || ext == ".vtp" || ext == ".msh" || isSurfaceMeshFile(path);
 }
 
 ExportReport exportModel(const Model &model, const std::string &path, const ExportOptions &options)
@@ -101,14 +106,15 @@ ExportReport exportModel(const Model &model, const std::string &path, const Expo
     if (writeAsModel(model, path, options, report))
         return report;
     if (lowerExtension(path) == ".so")
-        throw InputError("a TSolid holds tetrahedra: the surface model '" + model.name +
-                         "' has none (build a volume mesh first)");
+        throw InputError("a TSolid holds tetrahedra: the surface model '" + model.name
+                         + "' has none (build a volume mesh first)");
     if (isExportFile(path) && writeAsMesh(meshFromModel(model), path, options, report))
         return report;
     unknownExtension(path);
 }
 
-ExportReport exportVolumeMesh(const VolumeMesh &mesh, const std::string &path, const ExportOptions &options)
+ExportReport exportVolumeMesh(const VolumeMesh &mesh, const std::string &path,
+                              const ExportOptions &options)
 {
     ExportReport report;
     if (writeAsMesh(mesh, path, options, report))

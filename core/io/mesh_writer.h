@@ -32,7 +32,9 @@ bool isExportFile(const std::string &path);
 
 // Both throw FileError for an unknown extension or a failed write, InputError when the data does
 // not fit the format (cells in .vtp, no tets for .so, several surfaces for .obj...).
-ExportReport exportModel(const Model &model, const std::string &path, const ExportOptions &options = {});
-ExportReport exportVolumeMesh(const VolumeMesh &mesh, const std::string &path, const ExportOptions &options = {});
+ExportReport exportModel(const Model &model, const std::string &path,
+                         const ExportOptions &options = {});
+ExportReport exportVolumeMesh(const VolumeMesh &mesh, const std::string &path,
+                              const ExportOptions &options = {});
 
 } // namespace stratamesh

@@ -17,7 +17,8 @@ namespace {
 std::string lowerExtension(const std::string &path)
 {
     std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
 
@@ -26,16 +27,18 @@ std::string lowerExtension(const std::string &path)
 bool isReadableModelFile(const std::string &path)
 {
     const std::string ext = lowerExtension(path);
-    return ext == ".ml" || ext == ".ts" || ext == ".obj" || ext == ".off" || ext == ".gm" ||
-           isVolumeMeshFile(path);
+    return ext == ".ml" || ext == ".ts" || ext == ".obj" || ext == ".off" || ext == ".gm"
+           || isVolumeMeshFile(path);
 }
 
 Model readModel(const std::string &path)
 {
     const std::string ext = lowerExtension(path);
     if (!isReadableModelFile(path))
-        throw FileError(path, 0, "unknown model file extension '" + ext +
-                                     "' (expected .ml, .ts, .gm, .obj, .off, .so, .msh, .vtu, .vtk or .vtp)");
+        throw FileError(
+            path, 0,
+            "unknown model file extension '" + ext
+                + "' (expected .ml, .ts, .gm, .obj, .off, .so, .msh, .vtu, .vtk or .vtp)");
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw FileError(path, 0, "cannot open the file (missing or not a regular file)");

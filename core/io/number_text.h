@@ -1,5 +1,5 @@
-// Doubles as text that reads back bit-exactly (shortest round-trip form), shared by the ASCII writers,
-// and the matching strict parse for the readers.
+// Doubles as text that reads back bit-exactly (shortest round-trip form), shared by the ASCII
+// writers, and the matching strict parse for the readers.
 #pragma once
 
 #include <charconv>

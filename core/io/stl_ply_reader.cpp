@@ -193,9 +193,11 @@ VolumeMesh readAsciiPly(const std::string &path)
                     }
                 } else {
                     const std::string_view token = t[k++];
-                    if (static_cast<int>(p) == x || static_cast<int>(p) == y || static_cast<int>(p) == z)
-                        point[static_cast<int>(p) == x ? 0 : static_cast<int>(p) == y ? 1 : 2] =
-                            c.toDouble(token, "a coordinate");
+                    if (static_cast<int>(p) == x || static_cast<int>(p) == y
+                        || static_cast<int>(p) == z)
+                        point[static_cast<int>(p) == x   ? 0
+                              : static_cast<int>(p) == y ? 1
+                                                         : 2] = c.toDouble(token, "a coordinate");
                 }
             }
             if (e.name == "vertex") {
@@ -257,7 +259,8 @@ VolumeMesh readStlOrPly(const std::string &path)
     if (!std::ifstream(path).good())
         throw FileError(path, 0, "cannot open the file");
     std::string ext = path.substr(std::min(path.size(), path.find_last_of('.')));
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char ch) { return char(std::tolower(ch)); });
     VolumeMesh m = ext == ".stl"                ? readStl(path)
                    : plyFormat(path) == "ascii" ? readAsciiPly(path)
                                                 : readWithOpenMesh(path);

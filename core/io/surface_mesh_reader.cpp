@@ -63,7 +63,8 @@ std::string_view content(const std::string &line)
     return s;
 }
 
-Vec3 readPoint(const std::vector<std::string_view> &w, std::size_t first, const std::string &path, int line)
+Vec3 readPoint(const std::vector<std::string_view> &w, std::size_t first, const std::string &path,
+               int line)
 {
     if (w.size() < first + 3)
         throw FileError(path, line, "a vertex needs three coordinates");
@@ -142,7 +143,8 @@ FileScan scanOff(std::istream &in, const std::string &path)
     if (!nextWords())
         throw FileError(path, 0, "empty file");
     std::string header(w[0]);
-    std::transform(header.begin(), header.end(), header.begin(), [](unsigned char c) { return char(std::toupper(c)); });
+    std::transform(header.begin(), header.end(), header.begin(),
+                   [](unsigned char c) { return char(std::toupper(c)); });
     if (header.size() < 3 || header.compare(header.size() - 3, 3, "OFF") != 0)
         throw FileError(path, line, "not an OFF file: the first word is not OFF");
     if (header.find('4') != std::string::npos)
@@ -162,12 +164,16 @@ FileScan scanOff(std::istream &in, const std::string &path)
         throw FileError(path, line, "invalid vertex and face counts");
     for (long long i = 0; i < nv; ++i) {
         if (!nextWords())
-            throw FileError(path, line, "file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
+            throw FileError(path, line,
+                            "file ends after " + std::to_string(i) + " of " + std::to_string(nv)
+                                + " vertices");
         scan.points.push_back(readPoint(w, 0, path, line));
     }
     for (long long i = 0; i < nf; ++i) {
         if (!nextWords())
-            throw FileError(path, line, "file ends after " + std::to_string(i) + " of " + std::to_string(nf) + " faces");
+            throw FileError(path, line,
+                            "file ends after " + std::to_string(i) + " of " + std::to_string(nf)
+                                + " faces");
         long long k = 0;
         if (!parseInt(w[0], k) || k < 3)
             throw FileError(path, line, "a face needs at least three vertices");
@@ -190,7 +196,8 @@ FileScan scanOff(std::istream &in, const std::string &path)
 std::string lowerExtension(const std::string &path)
 {
     std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
 
@@ -219,12 +226,15 @@ Model readSurfaceMesh(const std::string &path)
     // OpenMesh drops degenerate faces and duplicates vertices around non-manifold ones: either
     // would change the surface silently.
     if (mesh.n_vertices() != scan.points.size())
-        throw FileError(path, 0, "non-manifold faces: " + std::to_string(scan.points.size()) +
-                                     " vertices in the file, " + std::to_string(mesh.n_vertices()) +
-                                     " after reading");
+        throw FileError(path, 0,
+                        "non-manifold faces: " + std::to_string(scan.points.size())
+                            + " vertices in the file, " + std::to_string(mesh.n_vertices())
+                            + " after reading");
     if (mesh.n_faces() != scan.triangles)
-        throw FileError(path, 0, std::to_string(scan.triangles - std::min<std::size_t>(scan.triangles, mesh.n_faces())) +
-                                     " triangle(s) could not be added (degenerate or non-manifold faces)");
+        throw FileError(
+            path, 0,
+            std::to_string(scan.triangles - std::min<std::size_t>(scan.triangles, mesh.n_faces()))
+                + " triangle(s) could not be added (degenerate or non-manifold faces)");
 
     Surface s;
     s.name = gocadFileStem(path);
@@ -242,9 +252,11 @@ Model readSurfaceMesh(const std::string &path)
         const Vec3 &p = scan.points[v.idx()];
         const auto &q = mesh.point(v);
         const double tolerance = 1e-6 * (1.0 + p.cwiseAbs().maxCoeff());
-        if (std::abs(q[0] - p.x()) > tolerance || std::abs(q[1] - p.y()) > tolerance ||
-            std::abs(q[2] - p.z()) > tolerance)
-            throw FileError(path, 0, "vertex " + std::to_string(v.idx() + 1) + " was read differently by OpenMesh");
+        if (std::abs(q[0] - p.x()) > tolerance || std::abs(q[1] - p.y()) > tolerance
+            || std::abs(q[2] - p.z()) > tolerance)
+            throw FileError(path, 0,
+                            "vertex " + std::to_string(v.idx() + 1)
+                                + " was read differently by OpenMesh");
         index[v.idx()] = int(s.vertices.size());
         s.vertices.emplace_back(p.x() + 0.0, p.y() + 0.0, p.z() + 0.0);
     }

@@ -31,10 +31,10 @@ std::string lowerExtension(const std::string &path)
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
         return {};
     std::string ext = path.substr(dot);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
-
 
 // Binary STL through OpenMesh (32-bit floats by the format's definition). OpenMesh stores
 // manifold meshes only: a non-manifold surface is refused rather than silently trimmed.
@@ -48,8 +48,8 @@ void writeStl(const Surface &s, const std::string &path)
     for (std::size_t t = 0; t < s.triangles.size(); ++t) {
         const Triangle &tri = s.triangles[t];
         if (!mesh.add_face(handles[tri[0]], handles[tri[1]], handles[tri[2]]).is_valid())
-            throw InputError("surface '" + s.name + "' is not manifold at triangle " + std::to_string(t) +
-                             ": OpenMesh cannot store it as STL");
+            throw InputError("surface '" + s.name + "' is not manifold at triangle "
+                             + std::to_string(t) + ": OpenMesh cannot store it as STL");
     }
     writeFileAtomically(path, [&](const std::string &temporary) {
         if (!OpenMesh::IO::write_mesh(mesh, temporary, OpenMesh::IO::Options::Binary))
@@ -68,17 +68,19 @@ bool isSurfaceMeshFile(const std::string &path)
 void writeSurfaceMesh(const Model &model, const std::string &path, int surface)
 {
     if (!isSurfaceMeshFile(path))
-        throw FileError(path, 0, "unknown surface mesh extension '" + lowerExtension(path) +
-                                     "' (use .obj, .off, .stl or .ply)");
+        throw FileError(path, 0,
+                        "unknown surface mesh extension '" + lowerExtension(path)
+                            + "' (use .obj, .off, .stl or .ply)");
     if (surface < 0) {
         if (model.surfaces.size() != 1)
-            throw InputError("an " + lowerExtension(path) + " file holds one surface and the model '" + model.name +
-                             "' has " + std::to_string(model.surfaces.size()) + ": choose one");
+            throw InputError("an " + lowerExtension(path)
+                             + " file holds one surface and the model '" + model.name + "' has "
+                             + std::to_string(model.surfaces.size()) + ": choose one");
         surface = 0;
     }
     if (surface >= static_cast<int>(model.surfaces.size()))
-        throw InputError("surface " + std::to_string(surface) + " does not exist (the model has " +
-                         std::to_string(model.surfaces.size()) + ")");
+        throw InputError("surface " + std::to_string(surface) + " does not exist (the model has "
+                         + std::to_string(model.surfaces.size()) + ")");
     const Surface &s = model.surfaces[surface];
     if (s.triangles.empty())
         throw InputError("surface '" + s.name + "' has no triangle");
@@ -88,8 +90,9 @@ void writeSurfaceMesh(const Model &model, const std::string &path, int surface)
     for (std::size_t t = 0; t < s.triangles.size(); ++t)
         for (int v : s.triangles[t])
             if (v < 0 || v >= static_cast<int>(s.vertices.size()))
-                throw InputError("surface '" + s.name + "': triangle " + std::to_string(t) + " uses vertex " +
-                                 std::to_string(v) + " of " + std::to_string(s.vertices.size()));
+                throw InputError("surface '" + s.name + "': triangle " + std::to_string(t)
+                                 + " uses vertex " + std::to_string(v) + " of "
+                                 + std::to_string(s.vertices.size()));
     const std::string ext = lowerExtension(path);
     if (ext == ".stl") {
         writeStl(s, path);
@@ -125,10 +128,10 @@ void writeSurfaceMesh(const Model &model, const std::string &path, int surface)
             for (const Triangle &t : s.triangles)
                 out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
         } else {
-            out << "ply\nformat ascii 1.0\ncomment StrataMesh surface " << name << "\nelement vertex "
-                << s.vertices.size()
-                << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << s.triangles.size()
-                << "\nproperty list uchar int vertex_indices\nend_header\n";
+            out << "ply\nformat ascii 1.0\ncomment StrataMesh surface " << name
+                << "\nelement vertex " << s.vertices.size()
+                << "\nproperty double x\nproperty double y\nproperty double z\nelement face "
+                << s.triangles.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
             for (const Vec3 &p : s.vertices)
                 point(p);
             for (const Triangle &t : s.triangles)

@@ -68,7 +68,8 @@ std::vector<std::string_view> TextCursor::tokens() const
 int TextCursor::toInt(std::string_view token, const char *what) const
 {
     long long v = 0;
-    if (!parseInt(token, v) || v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+    if (!parseInt(token, v) || v < std::numeric_limits<int>::min()
+        || v > std::numeric_limits<int>::max())
         fail(std::string("expected ") + what + ", found \"" + std::string(token) + "\"");
     return static_cast<int>(v);
 }

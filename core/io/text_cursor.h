@@ -25,7 +25,10 @@ public:
     // Whitespace-separated tokens of the current line.
     std::vector<std::string_view> tokens() const;
 
-    [[noreturn]] void fail(const std::string &cause) const { throw FileError(m_path, m_lineNumber, cause); }
+    [[noreturn]] void fail(const std::string &cause) const
+    {
+        throw FileError(m_path, m_lineNumber, cause);
+    }
     int toInt(std::string_view token, const char *what) const;
     double toDouble(std::string_view token, const char *what) const;
     // A count the file declares for what follows (nodes, elements): refused when negative or

@@ -40,7 +40,8 @@ std::vector<std::string> splitQuoted(std::string_view line)
 
 std::string upper(std::string s)
 {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::toupper(c)); });
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return char(std::toupper(c)); });
     return s;
 }
 
@@ -221,8 +222,8 @@ private:
         const long long vid = id(t[1], "a vertex id"), ref = id(t[2], "a vertex id");
         auto it = vertices.find(ref);
         if (it == vertices.end())
-            c.fail(t[0] + " " + std::to_string(vid) + " refers to vertex " + std::to_string(ref) +
-                   ", which is not defined before");
+            c.fail(t[0] + " " + std::to_string(vid) + " refers to vertex " + std::to_string(ref)
+                   + ", which is not defined before");
         Vertex v = it->second;
         // Same TVOLUME: a crack, i.e. a distinct point at the same place.
         if (!light && v.volume == volume) {
@@ -261,7 +262,8 @@ private:
     // "# CTETRA <region> f0 f1 f2 f3" follows its TETRA; it names the region in a LightTSolid.
     void readComment(const std::vector<std::string> &t)
     {
-        if (t.size() < 3 || upper(t[1]) != "CTETRA" || mesh.cells.empty() || lastTetraLine != c.lineNumber() - 1)
+        if (t.size() < 3 || upper(t[1]) != "CTETRA" || mesh.cells.empty()
+            || lastTetraLine != c.lineNumber() - 1)
             return;
         if (mesh.cellRegion.back() < 0)
             mesh.cellRegion.back() = regionIndex(t[2]);
@@ -269,7 +271,8 @@ private:
 
     void startFace(const std::vector<std::string> &t)
     {
-        const long long k = t.size() > 1 ? id(t[1], "a TFACE id") : static_cast<long long>(mesh.surfaces.size()) + 1;
+        const long long k = t.size() > 1 ? id(t[1], "a TFACE id")
+                                         : static_cast<long long>(mesh.surfaces.size()) + 1;
         faceIds.push_back(k);
         faceFeatures.push_back(feature.empty() ? "surface" : feature);
         mesh.surfaces.push_back({});
@@ -347,6 +350,9 @@ private:
 
 } // namespace
 
-VolumeMesh readGocadTSolid(const std::string &path) { return TSolidParser(path).run(); }
+VolumeMesh readGocadTSolid(const std::string &path)
+{
+    return TSolidParser(path).run();
+}
 
 } // namespace stratamesh

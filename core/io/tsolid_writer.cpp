@@ -32,9 +32,10 @@ void writeGocadTSolid(const VolumeMesh &mesh, const std::string &path)
         throw InputError("a TSolid needs tetrahedra: the mesh '" + mesh.name + "' has no cell");
     const std::size_t others = mesh.cells.size() - mesh.countCells(CellType::Tet);
     if (others > 0)
-        throw InputError("a TSolid holds tetrahedra only: the mesh '" + mesh.name + "' has " +
-                         std::to_string(mesh.countCells(CellType::Prism)) + " prisms and " +
-                         std::to_string(mesh.countCells(CellType::Pyramid)) + " pyramids (use .vtu or .msh)");
+        throw InputError("a TSolid holds tetrahedra only: the mesh '" + mesh.name + "' has "
+                         + std::to_string(mesh.countCells(CellType::Prism)) + " prisms and "
+                         + std::to_string(mesh.countCells(CellType::Pyramid))
+                         + " pyramids (use .vtu or .msh)");
 
     // Regions in order, untagged cells last in a volume of their own.
     std::vector<std::string> volumeNames = mesh.regionNames;
@@ -56,7 +57,8 @@ void writeGocadTSolid(const VolumeMesh &mesh, const std::string &path)
     std::map<std::string, std::vector<int>> byFeature;
     for (std::size_t s = 0; s < mesh.surfaces.size(); ++s) {
         const MeshSurface &surface = mesh.surfaces[s];
-        const std::string feature = surface.featureName.empty() ? surface.name : surface.featureName;
+        const std::string feature =
+            surface.featureName.empty() ? surface.name : surface.featureName;
         if (!byFeature.count(feature))
             featureOrder.push_back(feature);
         byFeature[feature].push_back(static_cast<int>(s));
@@ -74,9 +76,11 @@ void writeGocadTSolid(const VolumeMesh &mesh, const std::string &path)
         mesh.regionBoundaries.empty() ? regionSidesFromCells(mesh) : mesh.regionBoundaries;
 
     writeTextFileAtomically(path, [&](std::ostream &out) {
-        out << "GOCAD TSolid 1\nHEADER {\nname: " << headerValue(mesh.name.empty() ? "mesh" : mesh.name) << '\n';
+        out << "GOCAD TSolid 1\nHEADER {\nname: "
+            << headerValue(mesh.name.empty() ? "mesh" : mesh.name) << '\n';
         for (std::size_t s = 0; s < mesh.surfaces.size(); ++s) {
-            out << "*tface*" << faceId[s] << "*name: " << headerValue(mesh.surfaces[s].name) << '\n';
+            out << "*tface*" << faceId[s] << "*name: " << headerValue(mesh.surfaces[s].name)
+                << '\n';
             out << "*tface*" << faceId[s] << "*type: " << typeWord(mesh.surfaces[s].type) << '\n';
         }
         out << "}\n";
@@ -121,18 +125,21 @@ void writeGocadTSolid(const VolumeMesh &mesh, const std::string &path)
                 out << "TFACE " << faceId[s] << '\n';
                 if (!trianglesOf[s].empty()) {
                     const Triangle &k = mesh.triangles[trianglesOf[s].front()];
-                    out << "KEYVERTICES " << firstId[k[0]] << ' ' << firstId[k[1]] << ' ' << firstId[k[2]] << '\n';
+                    out << "KEYVERTICES " << firstId[k[0]] << ' ' << firstId[k[1]] << ' '
+                        << firstId[k[2]] << '\n';
                 }
                 for (int t : trianglesOf[s]) {
                     const Triangle &tri = mesh.triangles[t];
-                    out << "TRGL " << firstId[tri[0]] << ' ' << firstId[tri[1]] << ' ' << firstId[tri[2]] << '\n';
+                    out << "TRGL " << firstId[tri[0]] << ' ' << firstId[tri[1]] << ' '
+                        << firstId[tri[2]] << '\n';
                 }
             }
         }
         for (std::size_t r = 0; r < mesh.regionNames.size() && r < sides.size(); ++r)
             if (!sides[r].empty())
                 out << "MODEL_REGION " << gocadToken(mesh.regionNames[r]) << ' '
-                    << (sides[r].front().positive ? "+" : "-") << faceId[sides[r].front().surface] << '\n';
+                    << (sides[r].front().positive ? "+" : "-") << faceId[sides[r].front().surface]
+                    << '\n';
         out << "END\n";
     });
 }

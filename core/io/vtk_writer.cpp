@@ -34,7 +34,8 @@ int vtkTypeOf(CellType type)
 
 // Names as UTF-8 bytes, each ended by '\n', in an unsigned char array: VTK string arrays would
 // be more natural but common readers (meshio) reject them.
-vtkSmartPointer<vtkUnsignedCharArray> strings(const char *name, const std::vector<std::string> &values)
+vtkSmartPointer<vtkUnsignedCharArray> strings(const char *name,
+                                              const std::vector<std::string> &values)
 {
     auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
     a->SetName(name);
@@ -122,7 +123,8 @@ struct CellArrays {
 vtkSmartPointer<vtkPoints> makePoints(const VolumeMesh &mesh)
 {
     auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetDataTypeToDouble(); // float would lose digits of real coordinates (formats.md fact 9)
+    points
+        ->SetDataTypeToDouble(); // float would lose digits of real coordinates (formats.md fact 9)
     points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
     for (std::size_t i = 0; i < mesh.points.size(); ++i)
         points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].data());
@@ -133,8 +135,8 @@ vtkSmartPointer<vtkUnstructuredGrid> makeGrid(const VolumeMesh &mesh)
 {
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     grid->SetPoints(makePoints(mesh));
-    grid->Allocate(static_cast<vtkIdType>(mesh.cells.size() + mesh.triangles.size() + mesh.edges.size() +
-                                          mesh.corners.size()));
+    grid->Allocate(static_cast<vtkIdType>(mesh.cells.size() + mesh.triangles.size()
+                                          + mesh.edges.size() + mesh.corners.size()));
     CellArrays arrays(mesh);
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
@@ -144,7 +146,8 @@ vtkSmartPointer<vtkUnstructuredGrid> makeGrid(const VolumeMesh &mesh)
             ids[k] = cell.nodes[cell.type == CellType::Prism ? vtkWedgeMap[k] : k];
         const int type = vtkTypeOf(cell.type);
         grid->InsertNextCell(type, cell.size(), ids);
-        arrays.add(type, mesh.cellRegion[c], -1, -1, arrays.withQuality ? mesh.cellQuality[c] : nan);
+        arrays.add(type, mesh.cellRegion[c], -1, -1,
+                   arrays.withQuality ? mesh.cellQuality[c] : nan);
     }
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const vtkIdType ids[3] = {mesh.triangles[t][0], mesh.triangles[t][1], mesh.triangles[t][2]};
@@ -205,9 +208,10 @@ void runWriter(Writer *writer, const std::string &target, const std::string &tem
     const int ok = writer->Write();
     const unsigned long code = writer->GetErrorCode();
     if (ok != 1 || code != vtkErrorCode::NoError || errors.failed()) {
-        std::string cause = code == vtkErrorCode::OutOfDiskSpaceError ? std::string("No space left on device")
-                            : code != vtkErrorCode::NoError            ? vtkErrorCode::GetStringFromErrorCode(code)
-                                                                       : std::string("VTK could not write the file");
+        std::string cause =
+            code == vtkErrorCode::OutOfDiskSpaceError ? std::string("No space left on device")
+            : code != vtkErrorCode::NoError           ? vtkErrorCode::GetStringFromErrorCode(code)
+                                                      : std::string("VTK could not write the file");
         if (errors.failed())
             cause += " (" + errors.message() + ")";
         throw FileError(target, 0, "cannot write: " + cause);
@@ -220,8 +224,8 @@ void writeVtk(const VolumeMesh &mesh, const std::string &path, VtkFileKind kind)
 {
     validateMesh(mesh);
     if (kind == VtkFileKind::Vtp && mesh.hasCells())
-        throw InputError("a .vtp file holds surfaces only: the mesh '" + mesh.name + "' has " +
-                         std::to_string(mesh.cells.size()) + " volume cells (use .vtu or .vtk)");
+        throw InputError("a .vtp file holds surfaces only: the mesh '" + mesh.name + "' has "
+                         + std::to_string(mesh.cells.size()) + " volume cells (use .vtu or .vtk)");
     writeFileAtomically(path, [&](const std::string &temporary) {
         if (kind == VtkFileKind::Vtp) {
             vtkNew<vtkXMLPolyDataWriter> writer;
@@ -238,7 +242,8 @@ void writeVtk(const VolumeMesh &mesh, const std::string &path, VtkFileKind kind)
         } else {
             vtkNew<vtkUnstructuredGridWriter> writer;
             writer->SetInputData(makeGrid(mesh));
-            writer->SetFileVersion(42); // classic CELLS layout that older readers know (formats.md fact 9)
+            writer->SetFileVersion(
+                42); // classic CELLS layout that older readers know (formats.md fact 9)
             writer->SetFileTypeToBinary(); // ASCII legacy output rounds doubles
             runWriter(writer.GetPointer(), path, temporary);
         }

@@ -20,7 +20,10 @@ struct PositionHash {
         return h(k.x) ^ (h(k.y) * 0x9e3779b97f4a7c15ULL) ^ (h(k.z) * 0xc2b2ae3d27d4eb4fULL);
     }
 };
-PositionKey keyOf(const Vec3 &p) { return {p.x(), p.y(), p.z()}; }
+PositionKey keyOf(const Vec3 &p)
+{
+    return {p.x(), p.y(), p.z()};
+}
 
 } // namespace
 
@@ -96,12 +99,13 @@ Model modelFromMesh(const VolumeMesh &mesh)
     Model model;
     model.name = mesh.name;
     model.zPositiveDepth = mesh.zPositiveDepth;
-    const bool hasUntagged =
-        std::find(mesh.triangleSurface.begin(), mesh.triangleSurface.end(), -1) != mesh.triangleSurface.end();
+    const bool hasUntagged = std::find(mesh.triangleSurface.begin(), mesh.triangleSurface.end(), -1)
+                             != mesh.triangleSurface.end();
     std::vector<std::vector<int>> trianglesOf(mesh.surfaces.size() + (hasUntagged ? 1 : 0));
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const int s = mesh.triangleSurface[t];
-        trianglesOf[s < 0 ? mesh.surfaces.size() : static_cast<std::size_t>(s)].push_back(static_cast<int>(t));
+        trianglesOf[s < 0 ? mesh.surfaces.size() : static_cast<std::size_t>(s)].push_back(
+            static_cast<int>(t));
     }
     for (std::size_t s = 0; s < trianglesOf.size(); ++s) {
         Surface surface;

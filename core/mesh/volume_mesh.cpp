@@ -14,17 +14,20 @@ namespace stratamesh {
 const char *cellTypeName(CellType type)
 {
     switch (type) {
-    case CellType::Tet: return "tet";
-    case CellType::Pyramid: return "pyramid";
-    case CellType::Prism: return "prism";
+    case CellType::Tet:
+        return "tet";
+    case CellType::Pyramid:
+        return "pyramid";
+    case CellType::Prism:
+        return "prism";
     }
     return "cell";
 }
 
 std::size_t VolumeMesh::countCells(CellType type) const
 {
-    return static_cast<std::size_t>(
-        std::count_if(cells.begin(), cells.end(), [type](const Cell &c) { return c.type == type; }));
+    return static_cast<std::size_t>(std::count_if(
+        cells.begin(), cells.end(), [type](const Cell &c) { return c.type == type; }));
 }
 
 namespace {
@@ -35,12 +38,13 @@ void require(bool ok, const std::string &what)
         throw InputError("invalid mesh: " + what);
 }
 
-void checkGroupIds(const std::vector<int> &ids, std::size_t count, const char *element, const char *group)
+void checkGroupIds(const std::vector<int> &ids, std::size_t count, const char *element,
+                   const char *group)
 {
     for (std::size_t i = 0; i < ids.size(); ++i)
         require(ids[i] >= -1 && ids[i] < static_cast<int>(count),
-                std::string(element) + " " + std::to_string(i) + " has " + group + " " +
-                    std::to_string(ids[i]) + " (there are " + std::to_string(count) + ")");
+                std::string(element) + " " + std::to_string(i) + " has " + group + " "
+                    + std::to_string(ids[i]) + " (there are " + std::to_string(count) + ")");
 }
 
 double tetVolume(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d)
@@ -54,55 +58,61 @@ void validateMesh(const VolumeMesh &m)
 {
     const int n = static_cast<int>(m.points.size());
     for (std::size_t i = 0; i < m.points.size(); ++i)
-        require(m.points[i].allFinite(), "point " + std::to_string(i) + " has a non-finite coordinate");
+        require(m.points[i].allFinite(),
+                "point " + std::to_string(i) + " has a non-finite coordinate");
     require(m.cellRegion.size() == m.cells.size(), "cellRegion size differs from the cell count");
     require(m.cellQuality.empty() || m.cellQuality.size() == m.cells.size(),
             "cellQuality size differs from the cell count");
     require(m.regionBoundaries.empty() || m.regionBoundaries.size() == m.regionNames.size(),
             "regionBoundaries size differs from the region count");
-    require(m.triangleSurface.size() == m.triangles.size(), "triangleSurface size differs from the triangle count");
+    require(m.triangleSurface.size() == m.triangles.size(),
+            "triangleSurface size differs from the triangle count");
     require(m.edgeLine.size() == m.edges.size(), "edgeLine size differs from the edge count");
     for (std::size_t c = 0; c < m.cells.size(); ++c) {
         const Cell &cell = m.cells[c];
         for (int k = 0; k < cell.size(); ++k) {
             require(cell.nodes[k] >= 0 && cell.nodes[k] < n,
-                    std::string(cellTypeName(cell.type)) + " " + std::to_string(c) + " uses point " +
-                        std::to_string(cell.nodes[k]) + " of " + std::to_string(n));
+                    std::string(cellTypeName(cell.type)) + " " + std::to_string(c) + " uses point "
+                        + std::to_string(cell.nodes[k]) + " of " + std::to_string(n));
             for (int j = 0; j < k; ++j)
-                require(cell.nodes[j] != cell.nodes[k], std::string(cellTypeName(cell.type)) + " " +
-                                                            std::to_string(c) + " repeats point " +
-                                                            std::to_string(cell.nodes[k]));
+                require(cell.nodes[j] != cell.nodes[k], std::string(cellTypeName(cell.type)) + " "
+                                                            + std::to_string(c) + " repeats point "
+                                                            + std::to_string(cell.nodes[k]));
         }
     }
     for (std::size_t t = 0; t < m.triangles.size(); ++t)
         for (int v : m.triangles[t])
-            require(v >= 0 && v < n, "triangle " + std::to_string(t) + " uses point " + std::to_string(v) +
-                                         " of " + std::to_string(n));
+            require(v >= 0 && v < n, "triangle " + std::to_string(t) + " uses point "
+                                         + std::to_string(v) + " of " + std::to_string(n));
     for (std::size_t e = 0; e < m.edges.size(); ++e)
         for (int v : m.edges[e])
-            require(v >= 0 && v < n,
-                    "edge " + std::to_string(e) + " uses point " + std::to_string(v) + " of " + std::to_string(n));
+            require(v >= 0 && v < n, "edge " + std::to_string(e) + " uses point "
+                                         + std::to_string(v) + " of " + std::to_string(n));
     for (int v : m.corners)
-        require(v >= 0 && v < n, "corner uses point " + std::to_string(v) + " of " + std::to_string(n));
+        require(v >= 0 && v < n,
+                "corner uses point " + std::to_string(v) + " of " + std::to_string(n));
     checkGroupIds(m.cellRegion, m.regionNames.size(), "cell", "region");
     checkGroupIds(m.triangleSurface, m.surfaces.size(), "triangle", "surface");
     checkGroupIds(m.edgeLine, m.lineNames.size(), "edge", "line");
     for (std::size_t r = 0; r < m.regionBoundaries.size(); ++r)
         for (const RegionSide &s : m.regionBoundaries[r])
             require(s.surface >= 0 && s.surface < static_cast<int>(m.surfaces.size()),
-                    "region " + std::to_string(r) + " is bounded by surface " + std::to_string(s.surface) +
-                        " (there are " + std::to_string(m.surfaces.size()) + ")");
+                    "region " + std::to_string(r) + " is bounded by surface "
+                        + std::to_string(s.surface) + " (there are "
+                        + std::to_string(m.surfaces.size()) + ")");
 }
 
 double signedVolume(const VolumeMesh &mesh, const Cell &cell)
 {
     auto p = [&](int k) -> const Vec3 & { return mesh.points[cell.nodes[k]]; };
     switch (cell.type) {
-    case CellType::Tet: return tetVolume(p(0), p(1), p(2), p(3));
-    case CellType::Pyramid: return tetVolume(p(0), p(1), p(2), p(4)) + tetVolume(p(0), p(2), p(3), p(4));
+    case CellType::Tet:
+        return tetVolume(p(0), p(1), p(2), p(3));
+    case CellType::Pyramid:
+        return tetVolume(p(0), p(1), p(2), p(4)) + tetVolume(p(0), p(2), p(3), p(4));
     case CellType::Prism:
-        return tetVolume(p(0), p(1), p(2), p(3)) + tetVolume(p(1), p(2), p(3), p(4)) +
-               tetVolume(p(2), p(3), p(4), p(5));
+        return tetVolume(p(0), p(1), p(2), p(3)) + tetVolume(p(1), p(2), p(3), p(4))
+               + tetVolume(p(2), p(3), p(4), p(5));
     }
     return 0.0;
 }
@@ -111,10 +121,12 @@ std::vector<Triangle> outwardTriangleFaces(const Cell &c)
 {
     const auto &n = c.nodes;
     switch (c.type) {
-    case CellType::Tet: return {{n[0], n[2], n[1]}, {n[0], n[1], n[3]}, {n[0], n[3], n[2]}, {n[1], n[2], n[3]}};
+    case CellType::Tet:
+        return {{n[0], n[2], n[1]}, {n[0], n[1], n[3]}, {n[0], n[3], n[2]}, {n[1], n[2], n[3]}};
     case CellType::Pyramid:
         return {{n[0], n[1], n[4]}, {n[1], n[2], n[4]}, {n[2], n[3], n[4]}, {n[3], n[0], n[4]}};
-    case CellType::Prism: return {{n[0], n[2], n[1]}, {n[3], n[4], n[5]}};
+    case CellType::Prism:
+        return {{n[0], n[2], n[1]}, {n[3], n[4], n[5]}};
     }
     return {};
 }

@@ -7,7 +7,8 @@
 // signedVolume():
 //   tet     0 1 2 3        right-handed: (1-0, 2-0, 3-0) has a positive determinant;
 //   pyramid 0 1 2 3 | 4    base quad 0-1-2-3, its right-hand normal points towards apex 4;
-//   prism   0 1 2 | 3 4 5  node i+3 above node i, the normal of triangle 0-1-2 points towards 3-4-5.
+//   prism   0 1 2 | 3 4 5  node i+3 above node i, the normal of triangle 0-1-2 points towards
+//   3-4-5.
 // VTK_WEDGE wants the opposite bottom orientation: the VTK writer remaps prisms with [0,2,1,3,5,4].
 #pragma once
 
@@ -40,7 +41,10 @@ struct Cell {
     {
         return {CellType::Pyramid, {a, b, c, d, apex, -1}};
     }
-    static Cell prism(int a, int b, int c, int d, int e, int f) { return {CellType::Prism, {a, b, c, d, e, f}}; }
+    static Cell prism(int a, int b, int c, int d, int e, int f)
+    {
+        return {CellType::Prism, {a, b, c, d, e, f}};
+    }
     bool operator==(const Cell &o) const { return type == o.type && nodes == o.nodes; }
 };
 

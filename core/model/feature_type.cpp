@@ -23,11 +23,16 @@ FeatureType featureTypeFromGocad(std::string_view gocadType)
 std::string gocadTypeName(FeatureType type)
 {
     switch (type) {
-    case FeatureType::Horizon: return "top";
-    case FeatureType::Fault: return "fault";
-    case FeatureType::Unconformity: return "unconformity";
-    case FeatureType::Boundary: return "boundary";
-    case FeatureType::Unknown: break;
+    case FeatureType::Horizon:
+        return "top";
+    case FeatureType::Fault:
+        return "fault";
+    case FeatureType::Unconformity:
+        return "unconformity";
+    case FeatureType::Boundary:
+        return "boundary";
+    case FeatureType::Unknown:
+        break;
     }
     return "none";
 }
@@ -35,11 +40,16 @@ std::string gocadTypeName(FeatureType type)
 std::string featureTypeName(FeatureType type)
 {
     switch (type) {
-    case FeatureType::Horizon: return "horizon";
-    case FeatureType::Fault: return "fault";
-    case FeatureType::Unconformity: return "unconformity";
-    case FeatureType::Boundary: return "boundary";
-    case FeatureType::Unknown: break;
+    case FeatureType::Horizon:
+        return "horizon";
+    case FeatureType::Fault:
+        return "fault";
+    case FeatureType::Unconformity:
+        return "unconformity";
+    case FeatureType::Boundary:
+        return "boundary";
+    case FeatureType::Unknown:
+        break;
     }
     return "unknown";
 }

@@ -13,7 +13,8 @@ struct EntityCounts {
     int corners = 0;
     bool operator==(const EntityCounts &o) const
     {
-        return regions == o.regions && surfaces == o.surfaces && lines == o.lines && corners == o.corners;
+        return regions == o.regions && surfaces == o.surfaces && lines == o.lines
+               && corners == o.corners;
     }
 };
 
@@ -29,6 +30,9 @@ struct ModelCounts {
 ModelCounts countEntities(const Model &model);
 
 // True for the surfaces making the box (volume of interest boundary).
-inline bool isBoxSurface(const Surface &s) { return s.type == FeatureType::Boundary; }
+inline bool isBoxSurface(const Surface &s)
+{
+    return s.type == FeatureType::Boundary;
+}
 
 } // namespace stratamesh

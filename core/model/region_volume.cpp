@@ -13,7 +13,10 @@ namespace stratamesh {
 
 namespace {
 
-double coneVolume(const Vec3 &a, const Vec3 &b, const Vec3 &c) { return a.dot(b.cross(c)) / 6.0; }
+double coneVolume(const Vec3 &a, const Vec3 &b, const Vec3 &c)
+{
+    return a.dot(b.cross(c)) / 6.0;
+}
 
 } // namespace
 
@@ -111,8 +114,9 @@ double enclosedVolume(const Model &model, const std::vector<int> &surfaces)
             || (i + 2 < halfEdges.size() && halfEdges[i + 2].key == halfEdges[i].key)) {
             const long long key = halfEdges[i].key;
             const Vec3 &p = model.vertices[static_cast<std::size_t>(key >> 32)];
-            throw InputError("the surfaces do not enclose a volume: an edge at (" + std::to_string(p.x()) + ", "
-                             + std::to_string(p.y()) + ", " + std::to_string(p.z())
+            throw InputError("the surfaces do not enclose a volume: an edge at ("
+                             + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", "
+                             + std::to_string(p.z())
                              + ") is not shared by exactly two of their triangles");
         }
         const HalfEdge &x = halfEdges[i], &y = halfEdges[i + 1];
@@ -134,8 +138,9 @@ double enclosedVolume(const Model &model, const std::vector<int> &surfaces)
         while (!stack.empty()) {
             const int t = stack.back();
             stack.pop_back();
-            const double v = coneVolume(model.vertices[tris[t][0]] - ref, model.vertices[tris[t][1]] - ref,
-                                        model.vertices[tris[t][2]] - ref);
+            const double v =
+                coneVolume(model.vertices[tris[t][0]] - ref, model.vertices[tris[t][1]] - ref,
+                           model.vertices[tris[t][2]] - ref);
             shell += flip[t] ? -v : v;
             for (auto [n, same] : neighbours[t]) {
                 const int want = flip[t] ^ (same ? 1 : 0);
@@ -143,7 +148,8 @@ double enclosedVolume(const Model &model, const std::vector<int> &surfaces)
                     flip[n] = want;
                     stack.push_back(n);
                 } else if (flip[n] != want) {
-                    throw InputError("the surfaces do not enclose a volume: their union is not orientable");
+                    throw InputError(
+                        "the surfaces do not enclose a volume: their union is not orientable");
                 }
             }
         }

@@ -11,7 +11,10 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 
-Point toPoint(const Vec3 &p) { return {p.x(), p.y(), p.z()}; }
+Point toPoint(const Vec3 &p)
+{
+    return {p.x(), p.y(), p.z()};
+}
 
 // Overlap needs normals e×(a−u) and e×(b−u) pointing the same way. Clearly opposite normals of
 // two clearly non-degenerate triangles settle it in doubles: the rounding of the dot product is
@@ -25,8 +28,8 @@ bool clearlyUnfolded(const Vec3 &u, const Vec3 &v, const Vec3 &a, const Vec3 &b)
     const double scaleA = e.norm() * da.norm(), scaleB = e.norm() * db.norm();
     const double lengthA = na.norm(), lengthB = nb.norm();
     constexpr double kNonDegenerate = 1e-6;
-    return lengthA > kNonDegenerate * scaleA && lengthB > kNonDegenerate * scaleB &&
-           na.dot(nb) < -0.5 * lengthA * lengthB;
+    return lengthA > kNonDegenerate * scaleA && lengthB > kNonDegenerate * scaleB
+           && na.dot(nb) < -0.5 * lengthA * lengthB;
 }
 
 } // namespace

@@ -37,8 +37,9 @@ std::vector<SurfaceEdge> surfaceEdges(const Model &model)
 std::pair<std::vector<SurfaceEdge>::const_iterator, std::vector<SurfaceEdge>::const_iterator>
 edgesWithKey(const std::vector<SurfaceEdge> &edges, long long key)
 {
-    return std::equal_range(edges.begin(), edges.end(), SurfaceEdge{key, 0, 0},
-                            [](const SurfaceEdge &x, const SurfaceEdge &y) { return x.key < y.key; });
+    return std::equal_range(
+        edges.begin(), edges.end(), SurfaceEdge{key, 0, 0},
+        [](const SurfaceEdge &x, const SurfaceEdge &y) { return x.key < y.key; });
 }
 
 } // namespace stratamesh

@@ -14,14 +14,20 @@ inline long long edgeKey(int a, int b)
     return a < b ? (static_cast<long long>(a) << 32) | static_cast<unsigned>(b)
                  : (static_cast<long long>(b) << 32) | static_cast<unsigned>(a);
 }
-inline int edgeKeyFirst(long long key) { return static_cast<int>(key >> 32); }
-inline int edgeKeySecond(long long key) { return static_cast<int>(key & 0xffffffffLL); }
+inline int edgeKeyFirst(long long key)
+{
+    return static_cast<int>(key >> 32);
+}
+inline int edgeKeySecond(long long key)
+{
+    return static_cast<int>(key & 0xffffffffLL);
+}
 
 // One distinct local edge of one surface (local vertex ids), mapped to its global vertices.
 struct SurfaceEdge {
-    long long key;   // edgeKey of the two global vertices
+    long long key; // edgeKey of the two global vertices
     int surface;
-    int triangles;   // triangles of this surface around the local edge: 1 on its border
+    int triangles; // triangles of this surface around the local edge: 1 on its border
 };
 
 // All distinct local edges of all surfaces, sorted by key then surface. Local edges whose two

@@ -15,14 +15,14 @@ namespace stratamesh {
 // wall (the +x block) is lowered by faultThrow (a normal fault).
 struct LayeredBoxParams {
     Vec3 size{1000.0, 600.0, 400.0};
-    int horizons = 2;              // evenly spaced in the room left by the fold and the throw
-    double foldAmplitude = 0.0;    // ≥ 0
+    int horizons = 2;           // evenly spaced in the room left by the fold and the throw
+    double foldAmplitude = 0.0; // ≥ 0
     bool fault = false;
-    double faultDipDegrees = 90.0; // (0, 90]; 90 is vertical
-    double faultPosition = 0.5;    // where the fault crosses mid-height, as a fraction of size.x
-    double faultThrow = 0.0;       // ≥ 0, vertical offset of the +x block
+    double faultDipDegrees = 90.0;   // (0, 90]; 90 is vertical
+    double faultPosition = 0.5;      // where the fault crosses mid-height, as a fraction of size.x
+    double faultThrow = 0.0;         // ≥ 0, vertical offset of the +x block
     double thinLayerThickness = 0.0; // > 0 adds a horizon this far above the lowest one
-    double edgeLength = 100.0;     // target triangle edge length
+    double edgeLength = 100.0;       // target triangle edge length
     // A fault network: when not empty, these parallel faults (same dip, towards +x) replace the
     // single fault above. Positions are where each crosses mid-height (fractions of size.x,
     // increasing); each lowers everything east of it by its throw. Faults F1..Fn, fault blocks
@@ -43,13 +43,14 @@ Model layeredBox(const LayeredBoxParams &params);
 // 0.3, 1.5, 0.6, 2.5 × throwUnit (choose throwUnit near the remesh edge length, so that some fault
 // strips are narrower than it and some wider); horizons are cut into faults + 1 pieces. The input
 // mesh has edges of about edgeLength.
-Model faultNetworkBox(int faults, double dipDegrees, int horizons, double throwUnit, double edgeLength);
+Model faultNetworkBox(int faults, double dipDegrees, int horizons, double throwUnit,
+                      double edgeLength);
 
 struct NestedSpheresParams {
     Vec3 centre = Vec3::Zero();
     double innerRadius = 1.0;
     double outerRadius = 2.0;
-    int subdivisions = 3;   // icosahedron subdivisions: 20 · 4^n triangles per sphere
+    int subdivisions = 3;    // icosahedron subdivisions: 20 · 4^n triangles per sphere
     bool withRegions = true; // "inner" and "shell" regions plus the Universe sides
 };
 

@@ -14,13 +14,14 @@ namespace {
 void icosphere(int subdivisions, std::vector<Vec3> &vertices, std::vector<Triangle> &triangles)
 {
     const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-    vertices = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    vertices = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
     for (Vec3 &v : vertices)
         v.normalize();
-    triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                 {11, 10, 2}, {10, 7, 6}, {7, 1, 8},   {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                 {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
     for (int level = 0; level < subdivisions; ++level) {
         std::map<std::pair<int, int>, int> midpoints;
         auto midpoint = [&](int a, int b) {
@@ -36,7 +37,8 @@ void icosphere(int subdivisions, std::vector<Vec3> &vertices, std::vector<Triang
         std::vector<Triangle> finer;
         finer.reserve(triangles.size() * 4);
         for (const Triangle &f : triangles) {
-            const int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
+            const int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]),
+                      ca = midpoint(f[2], f[0]);
             finer.push_back({f[0], ab, ca});
             finer.push_back({f[1], bc, ab});
             finer.push_back({f[2], ca, bc});
@@ -46,7 +48,8 @@ void icosphere(int subdivisions, std::vector<Vec3> &vertices, std::vector<Triang
     }
 }
 
-Surface sphere(const std::string &name, FeatureType type, const Vec3 &centre, double radius, int subdivisions)
+Surface sphere(const std::string &name, FeatureType type, const Vec3 &centre, double radius,
+               int subdivisions)
 {
     Surface s;
     s.name = name;
@@ -69,8 +72,10 @@ Model nestedSpheres(const NestedSpheresParams &p)
         throw InputError("nested spheres: subdivisions must be in [0, 8]");
     Model model;
     model.name = "nested_spheres";
-    model.surfaces.push_back(sphere("inner", FeatureType::Horizon, p.centre, p.innerRadius, p.subdivisions));
-    model.surfaces.push_back(sphere("outer", FeatureType::Boundary, p.centre, p.outerRadius, p.subdivisions));
+    model.surfaces.push_back(
+        sphere("inner", FeatureType::Horizon, p.centre, p.innerRadius, p.subdivisions));
+    model.surfaces.push_back(
+        sphere("outer", FeatureType::Boundary, p.centre, p.outerRadius, p.subdivisions));
     if (p.withRegions) {
         // Normals point outwards: a region inside a sphere is on its negative side.
         model.regions.push_back({"inner", {{0, false}}});

@@ -27,7 +27,10 @@ struct PositionHash {
 };
 
 struct PositionEqual {
-    bool operator()(const Vec3 &a, const Vec3 &b) const { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+    bool operator()(const Vec3 &a, const Vec3 &b) const
+    {
+        return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+    }
 };
 
 void buildGlobalVertices(Model &model)
@@ -87,10 +90,12 @@ LineEdgeGraph buildLineEdges(const Model &model)
                 surfaces.push_back(records[j].surface);
         }
         if (border || surfaces.size() >= 2) {
-            auto [it, inserted] = incidenceId.emplace(surfaces, static_cast<int>(g.incidences.size()));
+            auto [it, inserted] =
+                incidenceId.emplace(surfaces, static_cast<int>(g.incidences.size()));
             if (inserted)
                 g.incidences.push_back(surfaces);
-            g.edges.push_back({edgeKeyFirst(records[i].key), edgeKeySecond(records[i].key), it->second});
+            g.edges.push_back(
+                {edgeKeyFirst(records[i].key), edgeKeySecond(records[i].key), it->second});
         }
         i = j;
     }
@@ -120,7 +125,10 @@ bool isCornerVertex(const LineEdgeGraph &g, int v)
     return g.edges[g.around[g.offset[v]]].incidence != g.edges[g.around[g.offset[v] + 1]].incidence;
 }
 
-int otherEnd(const LineEdge &e, int v) { return e.a == v ? e.b : e.a; }
+int otherEnd(const LineEdge &e, int v)
+{
+    return e.a == v ? e.b : e.a;
+}
 
 void buildLinesAndCorners(Model &model)
 {
@@ -208,8 +216,8 @@ void linkRegions(Model &model)
     const int n = static_cast<int>(model.surfaces.size());
     auto checkSide = [&](const std::string &owner, const RegionSide &side) {
         if (side.surface < 0 || side.surface >= n)
-            throw InputError(owner + " lists surface " + std::to_string(side.surface) + " but the model has "
-                             + std::to_string(n) + " surfaces");
+            throw InputError(owner + " lists surface " + std::to_string(side.surface)
+                             + " but the model has " + std::to_string(n) + " surfaces");
     };
     for (const RegionSide &side : model.universe)
         checkSide("the Universe", side);

@@ -5,7 +5,8 @@
 // Definitions (they do not depend on any particular model):
 // - Global vertices: surface vertices merged by EXACT position across surfaces. Inside one surface,
 //   connectivity comes from local vertex ids only (files cut surfaces along internal lines with
-//   duplicated vertices), so two local vertices at one position share a global id but never an edge.
+//   duplicated vertices), so two local vertices at one position share a global id but never an
+//   edge.
 // - An edge is a pair of global vertices; its incident surfaces are the surfaces having it as an
 //   edge. It is a line edge when it is on the border of some surface (one triangle around a local
 //   edge) or when it belongs to two or more surfaces.

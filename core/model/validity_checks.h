@@ -9,7 +9,8 @@ namespace stratamesh::validity_detail {
 // Collects problems, listing at most ValidityReport::kMaxListedPerCheck per check.
 class ProblemSink {
 public:
-    void add(const char *check, std::vector<std::string> entities, const Vec3 &position, std::string message)
+    void add(const char *check, std::vector<std::string> entities, const Vec3 &position,
+             std::string message)
     {
         std::size_t &n = m_report.counts[check];
         ++n;
@@ -18,7 +19,10 @@ public:
             m_report.problems.push_back({check, std::move(entities), position, std::move(message)});
     }
     // True when one more problem of this check would not be listed (callers may skip details).
-    bool full(const char *check) const { return m_report.count(check) >= ValidityReport::kMaxListedPerCheck; }
+    bool full(const char *check) const
+    {
+        return m_report.count(check) >= ValidityReport::kMaxListedPerCheck;
+    }
     ValidityReport take() { return std::move(m_report); }
 
 private:

@@ -32,7 +32,10 @@ struct Face {
     int triangle;
 };
 
-Point toPoint(const Vec3 &p) { return {p.x(), p.y(), p.z()}; }
+Point toPoint(const Vec3 &p)
+{
+    return {p.x(), p.y(), p.z()};
+}
 
 // Where segment [a, b] meets triangle t, in doubles, for the report only (no decision rests
 // on it). CGAL 5.5's triangle–triangle intersection construction can raise SIGFPE (GMP given a
@@ -90,8 +93,9 @@ public:
             const Segment sf(point(f.v[(sharedF[0] + 1) % 3]), point(f.v[(sharedF[0] + 2) % 3]));
             const Segment sg(point(g.v[(sharedG[0] + 1) % 3]), point(g.v[(sharedG[0] + 2) % 3]));
             if (CGAL::do_intersect(sf, tg) || CGAL::do_intersect(sg, tf))
-                return wantPosition ? meetingPoint(f, g, {(sharedF[0] + 1) % 3}, {(sharedG[0] + 1) % 3})
-                                    : Vec3::Zero();
+                return wantPosition
+                           ? meetingPoint(f, g, {(sharedF[0] + 1) % 3}, {(sharedG[0] + 1) % 3})
+                           : Vec3::Zero();
             return std::nullopt;
         }
         // Sharing edge uv: if the opposite corners a, b are off each other's plane the triangles
@@ -114,7 +118,8 @@ private:
                       std::initializer_list<int> edgesG) const
     {
         const auto &x = m_model.vertices;
-        const std::array<Vec3, 3> pf{x[f.v[0]], x[f.v[1]], x[f.v[2]]}, pg{x[g.v[0]], x[g.v[1]], x[g.v[2]]};
+        const std::array<Vec3, 3> pf{x[f.v[0]], x[f.v[1]], x[f.v[2]]},
+            pg{x[g.v[0]], x[g.v[1]], x[g.v[2]]};
         for (int k : edgesF)
             if (const auto p = segmentCrossing(pf[k], pf[(k + 1) % 3], pg))
                 return *p;
@@ -145,7 +150,9 @@ void checkIntersections(const CheckInput &in, ProblemSink &sink, Progress &progr
         const std::vector<int> &g = model.surfaceVertexToGlobal[si];
         const auto &tris = model.surfaces[si].triangles;
         for (std::size_t ti = 0; ti < tris.size(); ++ti) {
-            const Face f{{g[tris[ti][0]], g[tris[ti][1]], g[tris[ti][2]]}, static_cast<int>(si), static_cast<int>(ti)};
+            const Face f{{g[tris[ti][0]], g[tris[ti][1]], g[tris[ti][2]]},
+                         static_cast<int>(si),
+                         static_cast<int>(ti)};
             if (f.v[0] == f.v[1] || f.v[1] == f.v[2] || f.v[0] == f.v[2])
                 continue; // degenerate: reported by degenerate_triangle, meaningless here
             if (CGAL::collinear(toPoint(model.vertices[f.v[0]]), toPoint(model.vertices[f.v[1]]),
@@ -168,12 +175,13 @@ void checkIntersections(const CheckInput &in, ProblemSink &sink, Progress &progr
     std::size_t pairs = 0;
     const auto decide = [&] {
         meets.assign(chunk.size(), 0);
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk.size(), 1024),
-                          [&](const tbb::blocked_range<std::size_t> &r) {
-                              for (std::size_t c = r.begin(); c < r.end(); ++c)
-                                  meets[c] = tester.test(faces[chunk[c].first], faces[chunk[c].second], false)
-                                                 .has_value();
-                          });
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, chunk.size(), 1024),
+            [&](const tbb::blocked_range<std::size_t> &r) {
+                for (std::size_t c = r.begin(); c < r.end(); ++c)
+                    meets[c] = tester.test(faces[chunk[c].first], faces[chunk[c].second], false)
+                                   .has_value();
+            });
         for (std::size_t c = 0; c < chunk.size(); ++c) {
             if (!meets[c])
                 continue;
@@ -186,15 +194,17 @@ void checkIntersections(const CheckInput &in, ProblemSink &sink, Progress &progr
                 names.push_back(sg.name);
             sink.add(validity_check::surfaceIntersection, names, where,
                      "triangle " + std::to_string(f.triangle) + " of " + sf.name + " and triangle "
-                         + std::to_string(g.triangle) + " of " + sg.name + " intersect near " + pointText(where));
+                         + std::to_string(g.triangle) + " of " + sg.name + " intersect near "
+                         + pointText(where));
         }
         chunk.clear();
     };
     constexpr std::size_t kChunk = 1 << 18; // bounds the memory on models of millions of triangles
     auto callback = [&](const Box &x, const Box &y) {
         if (++pairs % 65536 == 0)
-            progress.tick(0.2 + 0.7 * std::min(1.0, static_cast<double>(pairs) / (20.0 * faces.size() + 1)),
-                          "validity: intersections");
+            progress.tick(
+                0.2 + 0.7 * std::min(1.0, static_cast<double>(pairs) / (20.0 * faces.size() + 1)),
+                "validity: intersections");
         chunk.emplace_back(x.info(), y.info());
         if (chunk.size() == kChunk)
             decide();

@@ -59,11 +59,14 @@ void checkShell(const Model &model, const SideOwner &owner, ProblemSink &sink)
     for (std::size_t i = 0; i < sides.size(); ++i) {
         const int s = sides[i].surface;
         if (i > 0 && sides[i] == sides[i - 1]) {
-            sink.add(validity_check::regionBoundary, {owner.name, model.surfaces[s].name}, surfaceCentre(model, s),
-                     owner.name + " lists the same side of surface " + model.surfaces[s].name + " twice");
+            sink.add(validity_check::regionBoundary, {owner.name, model.surfaces[s].name},
+                     surfaceCentre(model, s),
+                     owner.name + " lists the same side of surface " + model.surfaces[s].name
+                         + " twice");
             continue;
         }
-        const bool both = (i > 0 && sides[i - 1].surface == s) || (i + 1 < sides.size() && sides[i + 1].surface == s);
+        const bool both = (i > 0 && sides[i - 1].surface == s)
+                          || (i + 1 < sides.size() && sides[i + 1].surface == s);
         if (both)
             continue;
         anyOneSided = true;
@@ -96,21 +99,25 @@ void checkShell(const Model &model, const SideOwner &owner, ProblemSink &sink)
     }
     const std::string what = owner.universe ? std::string("the Universe") : "region " + owner.name;
     if (open > 0)
-        sink.add(validity_check::regionBoundary, {owner.name, model.surfaces[firstOpen->surface].name},
+        sink.add(validity_check::regionBoundary,
+                 {owner.name, model.surfaces[firstOpen->surface].name},
                  edgeMidpoint(model, firstOpen->key),
                  "the boundary of " + what + " is not closed: " + std::to_string(open)
                      + " edges are used an odd number of times");
     if (unbalanced > 0)
-        sink.add(validity_check::regionBoundary, {owner.name, model.surfaces[firstUnbalanced->surface].name},
+        sink.add(validity_check::regionBoundary,
+                 {owner.name, model.surfaces[firstUnbalanced->surface].name},
                  edgeMidpoint(model, firstUnbalanced->key),
                  "the sides of " + what + " are inconsistent: " + std::to_string(unbalanced)
                      + " edges are not run as often one way as the other");
     if (open == 0 && unbalanced == 0 && anyOneSided) {
         const double volume = sidesVolume(model, *owner.sides);
         if (owner.universe ? volume >= 0.0 : volume <= 0.0)
-            sink.add(validity_check::regionBoundary, {owner.name}, surfaceCentre(model, owner.sides->front().surface),
+            sink.add(validity_check::regionBoundary, {owner.name},
+                     surfaceCentre(model, owner.sides->front().surface),
                      "the sides of " + what + " disagree with the surface normals: its volume is "
-                         + numberText(volume) + " (expected " + (owner.universe ? "negative" : "positive")
+                         + numberText(volume) + " (expected "
+                         + (owner.universe ? "negative" : "positive")
                          + "; region on the side the normal points to is '+')");
     }
 }
@@ -130,8 +137,9 @@ void checkSideOwnership(const Model &model, const std::vector<SideOwner> &owners
             for (std::size_t o : owning)
                 names.push_back(owners[o].name);
             sink.add(validity_check::regionBoundary, names, surfaceCentre(model, side.first),
-                     std::string("side ") + (side.second ? "+" : "-") + " of surface " + model.surfaces[side.first].name
-                         + " is claimed by " + std::to_string(owning.size()) + " regions");
+                     std::string("side ") + (side.second ? "+" : "-") + " of surface "
+                         + model.surfaces[side.first].name + " is claimed by "
+                         + std::to_string(owning.size()) + " regions");
         }
     // With the Universe given, every side of every surface belongs to exactly one region.
     const bool universeGiven = owners.size() > model.regions.size();
@@ -140,8 +148,10 @@ void checkSideOwnership(const Model &model, const std::vector<SideOwner> &owners
     for (std::size_t s = 0; s < model.surfaces.size(); ++s)
         for (bool positive : {true, false})
             if (!claims.count({static_cast<int>(s), positive}))
-                sink.add(validity_check::regionBoundary, {model.surfaces[s].name}, surfaceCentre(model, static_cast<int>(s)),
-                         std::string("side ") + (positive ? "+" : "-") + " of surface " + model.surfaces[s].name
+                sink.add(validity_check::regionBoundary, {model.surfaces[s].name},
+                         surfaceCentre(model, static_cast<int>(s)),
+                         std::string("side ") + (positive ? "+" : "-") + " of surface "
+                             + model.surfaces[s].name
                              + " belongs to no region nor to the Universe");
 }
 

@@ -36,8 +36,8 @@ void checkSealed(const CheckInput &in, ProblemSink &sink)
             continue;
         const std::string &surface = model.surfaces[line.surfaces[0]].name;
         sink.add(validity_check::notSealed, {surface, line.name}, edgeMidpoint(model, firstFree),
-                 std::to_string(free) + " of the " + std::to_string(edgeCount) + " edges of " + line.name
-                     + " are on the border of surface " + surface
+                 std::to_string(free) + " of the " + std::to_string(edgeCount) + " edges of "
+                     + line.name + " are on the border of surface " + surface
                      + " only: the model is not sealed there (it touches no other surface)");
     }
 }

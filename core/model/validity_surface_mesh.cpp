@@ -12,14 +12,20 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-Kernel::Point_3 toPoint(const Vec3 &p) { return {p.x(), p.y(), p.z()}; }
+Kernel::Point_3 toPoint(const Vec3 &p)
+{
+    return {p.x(), p.y(), p.z()};
+}
 
 Vec3 centroid(const Surface &s, const Triangle &t)
 {
     return (s.vertices[t[0]] + s.vertices[t[1]] + s.vertices[t[2]]) / 3.0;
 }
 
-std::string triangleText(const Surface &s, std::size_t t) { return "triangle " + std::to_string(t) + " of " + s.name; }
+std::string triangleText(const Surface &s, std::size_t t)
+{
+    return "triangle " + std::to_string(t) + " of " + s.name;
+}
 
 void checkNonManifold(const CheckInput &in, ProblemSink &sink)
 {
@@ -27,7 +33,8 @@ void checkNonManifold(const CheckInput &in, ProblemSink &sink)
         if (e.triangles > 2) {
             const Surface &s = in.model.surfaces[e.surface];
             sink.add(validity_check::nonManifoldEdge, {s.name}, edgeMidpoint(in.model, e.key),
-                     "an edge of surface " + s.name + " has " + std::to_string(e.triangles) + " triangles around it");
+                     "an edge of surface " + s.name + " has " + std::to_string(e.triangles)
+                         + " triangles around it");
         }
 }
 
@@ -44,10 +51,12 @@ void checkDegenerate(const CheckInput &in, ProblemSink &sink)
                 why = "uses one vertex twice";
             else if (g[t[0]] == g[t[1]] || g[t[1]] == g[t[2]] || g[t[0]] == g[t[2]])
                 why = "has two corners at the same position";
-            else if (CGAL::collinear(toPoint(s.vertices[t[0]]), toPoint(s.vertices[t[1]]), toPoint(s.vertices[t[2]])))
+            else if (CGAL::collinear(toPoint(s.vertices[t[0]]), toPoint(s.vertices[t[1]]),
+                                     toPoint(s.vertices[t[2]])))
                 why = "has zero area (collinear corners)";
             if (!why.empty())
-                sink.add(validity_check::degenerateTriangle, {s.name}, centroid(s, t), triangleText(s, ti) + " " + why);
+                sink.add(validity_check::degenerateTriangle, {s.name}, centroid(s, t),
+                         triangleText(s, ti) + " " + why);
         }
     }
 }
@@ -73,7 +82,9 @@ void checkDuplicates(const CheckInput &in, ProblemSink &sink)
         }
     }
     std::sort(entries.begin(), entries.end(), [](const Entry &a, const Entry &b) {
-        return a.key != b.key ? a.key < b.key : std::make_pair(a.surface, a.triangle) < std::make_pair(b.surface, b.triangle);
+        return a.key != b.key
+                   ? a.key < b.key
+                   : std::make_pair(a.surface, a.triangle) < std::make_pair(b.surface, b.triangle);
     });
     for (std::size_t i = 1; i < entries.size(); ++i) {
         if (entries[i].key != entries[i - 1].key)
@@ -84,7 +95,8 @@ void checkDuplicates(const CheckInput &in, ProblemSink &sink)
         const Surface &a = model.surfaces[entries[first].surface];
         const Surface &b = model.surfaces[entries[i].surface];
         const Vec3 c = (model.vertices[entries[i].key[0]] + model.vertices[entries[i].key[1]]
-                        + model.vertices[entries[i].key[2]]) / 3.0;
+                        + model.vertices[entries[i].key[2]])
+                       / 3.0;
         std::vector<std::string> names{a.name};
         if (&a != &b)
             names.push_back(b.name);
@@ -114,8 +126,9 @@ void checkOrientation(const CheckInput &in, ProblemSink &sink)
             while (j < halfEdges.size() && halfEdges[j].key == halfEdges[i].key)
                 ++j;
             if (j - i == 2 && halfEdges[i].forward == halfEdges[i + 1].forward) {
-                const Vec3 mid = 0.5 * (s.vertices[edgeKeyFirst(halfEdges[i].key)]
-                                        + s.vertices[edgeKeySecond(halfEdges[i].key)]);
+                const Vec3 mid = 0.5
+                                 * (s.vertices[edgeKeyFirst(halfEdges[i].key)]
+                                    + s.vertices[edgeKeySecond(halfEdges[i].key)]);
                 sink.add(validity_check::inconsistentOrientation, {s.name}, mid,
                          "two triangles of surface " + s.name
                              + " run their common edge the same way (flipped normals)");

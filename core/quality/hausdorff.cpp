@@ -25,7 +25,10 @@ using TriangleList = std::vector<CgalTriangle>;
 using Primitive = CGAL::AABB_triangle_primitive<K, TriangleList::const_iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
-K::Point_3 toCgal(const Vec3 &v) { return K::Point_3(v.x(), v.y(), v.z()); }
+K::Point_3 toCgal(const Vec3 &v)
+{
+    return K::Point_3(v.x(), v.y(), v.z());
+}
 
 // Non-degenerate triangles only: CGAL's closest-point query has no meaning on a segment-like
 // triangle, and a degenerate triangle adds nothing to a surface's point set that its
@@ -38,7 +41,8 @@ struct ModelTree {
     {
         for (const Surface &s : model.surfaces)
             for (const Triangle &t : s.triangles) {
-                CgalTriangle ct(toCgal(s.vertices[t[0]]), toCgal(s.vertices[t[1]]), toCgal(s.vertices[t[2]]));
+                CgalTriangle ct(toCgal(s.vertices[t[0]]), toCgal(s.vertices[t[1]]),
+                                toCgal(s.vertices[t[2]]));
                 if (!ct.is_degenerate())
                     triangles.push_back(ct);
             }
@@ -56,7 +60,10 @@ double totalArea(const Model &m)
     double area = 0.0;
     for (const Surface &s : m.surfaces)
         for (const Triangle &t : s.triangles)
-            area += 0.5 * (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]).norm();
+            area += 0.5
+                    * (s.vertices[t[1]] - s.vertices[t[0]])
+                          .cross(s.vertices[t[2]] - s.vertices[t[0]])
+                          .norm();
     return area;
 }
 
@@ -78,7 +85,8 @@ std::vector<Vec3> samplePoints(const Model &m, int samples)
                 continue; // the corners are already in as vertices
             for (int i = 0; i <= level; ++i)
                 for (int j = 0; i + j <= level; ++j)
-                    pts.push_back(a + (b - a) * (double(i) / level) + (c - a) * (double(j) / level));
+                    pts.push_back(a + (b - a) * (double(i) / level)
+                                  + (c - a) * (double(j) / level));
         }
     }
     return pts;
@@ -135,9 +143,11 @@ HausdorffResult hausdorffDistance(const Model &a, const Model &b, const Hausdorf
     const ModelTree treeA(a);
     const ModelTree treeB(b);
     progress.tick(0.1, "Hausdorff distance: input to output");
-    maxAndMean(parallelDistances(treeB, samplePoints(a, params.samplesPerSide)), r.aToB, r.meanAToB);
+    maxAndMean(parallelDistances(treeB, samplePoints(a, params.samplesPerSide)), r.aToB,
+               r.meanAToB);
     progress.tick(0.5, "Hausdorff distance: output to input");
-    maxAndMean(parallelDistances(treeA, samplePoints(b, params.samplesPerSide)), r.bToA, r.meanBToA);
+    maxAndMean(parallelDistances(treeA, samplePoints(b, params.samplesPerSide)), r.bToA,
+               r.meanBToA);
     r.symmetric = std::max(r.aToB, r.bToA);
     r.bboxDiagonal = bboxDiagonal(a);
     r.symmetricPctBbox = r.bboxDiagonal > 0.0 ? 100.0 * r.symmetric / r.bboxDiagonal : 0.0;

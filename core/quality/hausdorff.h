@@ -14,13 +14,14 @@
 namespace stratamesh {
 
 struct HausdorffParams {
-    int samplesPerSide = 200000; // grid samples spread over each side by area (vertices come on top)
+    int samplesPerSide =
+        200000; // grid samples spread over each side by area (vertices come on top)
 };
 
 struct HausdorffResult {
-    double aToB = 0.0;       // max over samples of A of the distance to B
+    double aToB = 0.0; // max over samples of A of the distance to B
     double bToA = 0.0;
-    double symmetric = 0.0;  // max(aToB, bToA)
+    double symmetric = 0.0; // max(aToB, bToA)
     double meanAToB = 0.0;
     double meanBToA = 0.0;
     double bboxDiagonal = 0.0; // of A (the input model in a remeshing comparison)
@@ -31,7 +32,8 @@ struct HausdorffResult {
 };
 
 // A and B need no topology. Throws InputError when either has no triangle.
-HausdorffResult hausdorffDistance(const Model &a, const Model &b, const HausdorffParams &params = {},
+HausdorffResult hausdorffDistance(const Model &a, const Model &b,
+                                  const HausdorffParams &params = {},
                                   Progress &progress = Progress::none());
 
 // Distance from each point to the nearest triangle of the model (exact, AABB tree).

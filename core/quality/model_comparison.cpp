@@ -15,8 +15,8 @@ std::string fixed(double value, int decimals)
 
 } // namespace
 
-ModelComparison compareModels(const Model &input, const Model &output, const HausdorffParams &params,
-                              Progress &progress)
+ModelComparison compareModels(const Model &input, const Model &output,
+                              const HausdorffParams &params, Progress &progress)
 {
     ModelComparison c;
     c.input.label = c.output.label = input.name;
@@ -36,19 +36,22 @@ ModelComparison compareModels(const Model &input, const Model &output, const Hau
 
 std::string formatTable42(const std::vector<ComparisonRow> &rows)
 {
-    std::string out = "| Dataset | #Sites | #V | #T | #Surf. | #Lines | #Corners | Min angle | < 30° (%) | Avg Q "
-                      "| Area | Sampling (s) | Mesh (s) | Haus. (% bbox diag.) | Bbox diag. |\n"
-                      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    std::string out =
+        "| Dataset | #Sites | #V | #T | #Surf. | #Lines | #Corners | Min angle | < 30° (%) | Avg Q "
+        "| Area | Sampling (s) | Mesh (s) | Haus. (% bbox diag.) | Bbox diag. |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     char buffer[512];
     for (const ComparisonRow &r : rows) {
         const bool input = r.hausdorffPctBbox < 0.0;
         std::snprintf(buffer, sizeof buffer,
-                      "| %s | %s | %zu | %zu | %d | %d | %d | %.2f | %.2f | %.3f | %.4g | %s | %s | %s | %.6g |\n",
-                      r.label.c_str(), r.resolution.c_str(), r.mesh.vertices, r.mesh.triangles, r.counts.surfaces,
-                      r.counts.lines, r.counts.corners, r.mesh.minAngleDeg, r.mesh.pctTrianglesAngleBelow30,
-                      r.mesh.meanQuality, r.mesh.area, input ? "" : fixed(r.samplingSeconds, 2).c_str(),
-                      input ? "" : fixed(r.meshSeconds, 2).c_str(), input ? "" : fixed(r.hausdorffPctBbox, 3).c_str(),
-                      r.mesh.bboxDiagonal);
+                      "| %s | %s | %zu | %zu | %d | %d | %d | %.2f | %.2f | %.3f | %.4g | %s | %s "
+                      "| %s | %.6g |\n",
+                      r.label.c_str(), r.resolution.c_str(), r.mesh.vertices, r.mesh.triangles,
+                      r.counts.surfaces, r.counts.lines, r.counts.corners, r.mesh.minAngleDeg,
+                      r.mesh.pctTrianglesAngleBelow30, r.mesh.meanQuality, r.mesh.area,
+                      input ? "" : fixed(r.samplingSeconds, 2).c_str(),
+                      input ? "" : fixed(r.meshSeconds, 2).c_str(),
+                      input ? "" : fixed(r.hausdorffPctBbox, 3).c_str(), r.mesh.bboxDiagonal);
         out += buffer;
     }
     return out;

@@ -17,10 +17,10 @@
 namespace stratamesh {
 
 struct ComparisonRow {
-    std::string label;       // model name
-    std::string resolution;  // "Input" or the number of sites
+    std::string label;      // model name
+    std::string resolution; // "Input" or the number of sites
     MeshStatistics mesh;
-    EntityCounts counts;     // box excluded, as Table 3.1 (thesis Table 4.2 counts components)
+    EntityCounts counts; // box excluded, as Table 3.1 (thesis Table 4.2 counts components)
     double samplingSeconds = 0.0;
     double meshSeconds = 0.0;
     double hausdorffPctBbox = -1.0; // -1 for the input row
@@ -37,7 +37,8 @@ struct ModelComparison {
 };
 
 // Both models need topology (for the counts). Throws InputError otherwise.
-ModelComparison compareModels(const Model &input, const Model &output, const HausdorffParams &hausdorff = {},
+ModelComparison compareModels(const Model &input, const Model &output,
+                              const HausdorffParams &hausdorff = {},
                               Progress &progress = Progress::none());
 
 // A plain-text table in the layout of Table 4.2, one line per row (Markdown pipes).

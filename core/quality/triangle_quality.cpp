@@ -54,7 +54,8 @@ double triangleQuality(const Vec3 &a, const Vec3 &b, const Vec3 &c)
     const double ab = (b - a).norm();
     const double bc = (c - b).norm();
     const double ca = (a - c).norm();
-    return qualityOf(0.5 * (b - a).cross(c - a).norm(), std::max({ab, bc, ca}), 0.5 * (ab + bc + ca));
+    return qualityOf(0.5 * (b - a).cross(c - a).norm(), std::max({ab, bc, ca}),
+                     0.5 * (ab + bc + ca));
 }
 
 double triangleMinAngleDeg(const Vec3 &a, const Vec3 &b, const Vec3 &c)

@@ -45,7 +45,8 @@ private:
 
 std::uint64_t pairKey(int a, int b)
 {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32)
+           | static_cast<std::uint32_t>(b);
 }
 
 void sortUnique(std::vector<int> &v)
@@ -83,7 +84,8 @@ int CellComponents::linePieceOf(int segment, int site) const
     return -1;
 }
 
-CellComponents computeCellComponents(const RestrictionDomain &domain, const RestrictedVoronoiDiagram &cells)
+CellComponents computeCellComponents(const RestrictionDomain &domain,
+                                     const RestrictedVoronoiDiagram &cells)
 {
     CellComponents cc;
     const SegmentIndex segments(domain);

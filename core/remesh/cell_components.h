@@ -17,18 +17,18 @@ namespace stratamesh {
 
 struct CellComponents {
     // Surface pieces.
-    std::vector<int> facetPiece;             // facet → piece
+    std::vector<int> facetPiece; // facet → piece
     std::vector<int> pieceSite;
     std::vector<int> pieceSurface;
     std::vector<std::vector<int>> pieceLineComponents; // line components each piece runs along
     // Line components.
-    std::vector<int> linePieceComponent;     // line piece → line component
+    std::vector<int> linePieceComponent; // line piece → line component
     std::vector<int> lineComponentSite;
     std::vector<std::vector<int>> lineComponentCorners; // domain corners inside each
     std::vector<std::vector<int>> lineComponentPieces;  // its line pieces
     // Cell components over both.
-    std::vector<int> pieceCell;              // piece → cell component
-    std::vector<int> lineComponentCell;      // line component → cell component
+    std::vector<int> pieceCell;         // piece → cell component
+    std::vector<int> lineComponentCell; // line component → cell component
     std::vector<int> cellSite;
     std::vector<std::vector<int>> cellPieces;
     std::vector<std::vector<int>> cellLineComponents;
@@ -38,7 +38,8 @@ struct CellComponents {
     std::vector<std::vector<std::pair<int, int>>> segmentPieces; // per segment: (site, line piece)
 };
 
-CellComponents computeCellComponents(const RestrictionDomain &domain, const RestrictedVoronoiDiagram &cells);
+CellComponents computeCellComponents(const RestrictionDomain &domain,
+                                     const RestrictedVoronoiDiagram &cells);
 
 // Domain segment joining two domain points, or -1 (built once per domain).
 class SegmentIndex {

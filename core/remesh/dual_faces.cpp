@@ -14,7 +14,8 @@ constexpr int kUnknown = INT_MIN;
 
 std::uint64_t pairKey(int a, int b)
 {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32)
+           | static_cast<std::uint32_t>(b);
 }
 
 // A maximal run of a piece's boundary with one neighbour: a piece (label ≥ 0) across a
@@ -26,9 +27,10 @@ struct Arc {
 
 class Builder {
 public:
-    Builder(const RestrictionDomain &domain, const RestrictedVoronoiDiagram &cells, const CellComponents &cc,
-            const CellPoints &points, DualFaceCounts &counts)
-        : m_domain(domain), m_cells(cells), m_cc(cc), m_points(points), m_counts(counts), m_segments(domain)
+    Builder(const RestrictionDomain &domain, const RestrictedVoronoiDiagram &cells,
+            const CellComponents &cc, const CellPoints &points, DualFaceCounts &counts)
+        : m_domain(domain), m_cells(cells), m_cc(cc), m_points(points), m_counts(counts),
+          m_segments(domain)
     {
         for (int f = 0; f < static_cast<int>(cells.polygons.size()); ++f)
             m_facetOf.emplace(pairKey(cells.polygons[f].triangle, cells.polygons[f].site), f);
@@ -58,7 +60,8 @@ private:
         const Vec3 &x = m_cells.vertices[vertex].position;
         int best = pts.front();
         for (int p : pts)
-            if ((m_points.points[p].position - x).squaredNorm() < (m_points.points[best].position - x).squaredNorm())
+            if ((m_points.points[p].position - x).squaredNorm()
+                < (m_points.points[best].position - x).squaredNorm())
                 best = p;
         return best;
     }
@@ -84,7 +87,8 @@ private:
                 const int to = m_cells.polygonVertices[facet.first + (k + 1) % facet.count];
                 if (support >= 0) {
                     auto it = m_facetOf.find(pairKey(facet.triangle, support));
-                    edges.push_back({from, to, it == m_facetOf.end() ? kUnknown : m_cc.facetPiece[it->second]});
+                    edges.push_back(
+                        {from, to, it == m_facetOf.end() ? kUnknown : m_cc.facetPiece[it->second]});
                     continue;
                 }
                 const int e = -1 - support;
@@ -186,8 +190,8 @@ private:
             for (int v : ends) {
                 if (!switched) {
                     const Vec3 &x = m_cells.vertices[v].position;
-                    switched = (m_points.points[pb].position - x).squaredNorm() <
-                               (m_points.points[pa].position - x).squaredNorm();
+                    switched = (m_points.points[pb].position - x).squaredNorm()
+                               < (m_points.points[pa].position - x).squaredNorm();
                 }
                 m_attach[pairKey(piece, v)] = switched ? pb : pa;
             }
@@ -237,11 +241,13 @@ private:
             }
             int facetAt[3], inSite[3], site[3];
             for (int i = 0; i < 3; ++i) {
-                const int f = static_cast<int>(occurrence[3 * v + i] / 1024), k = static_cast<int>(occurrence[3 * v + i] % 1024);
+                const int f = static_cast<int>(occurrence[3 * v + i] / 1024),
+                          k = static_cast<int>(occurrence[3 * v + i] % 1024);
                 const RvdPolygon &facet = m_cells.polygons[f];
                 facetAt[i] = f;
                 site[i] = facet.site;
-                inSite[i] = m_cells.polygonSupports[facet.first + (k + facet.count - 1) % facet.count];
+                inSite[i] =
+                    m_cells.polygonSupports[facet.first + (k + facet.count - 1) % facet.count];
             }
             // Counter-clockwise: from a cell to the one across its incoming edge.
             int order[3] = {0, -1, -1};
@@ -256,7 +262,8 @@ private:
             std::vector<int> poly;
             for (int i : order)
                 poly.push_back(attached(m_cc.facetPiece[facetAt[i]], v));
-            emitPolygon(poly, m_domain.triangleSurface[m_cells.polygons[facetAt[0]].triangle], false);
+            emitPolygon(poly, m_domain.triangleSurface[m_cells.polygons[facetAt[0]].triangle],
+                        false);
         }
     }
 
@@ -281,10 +288,13 @@ private:
         }
         // A quad: the diagonal giving the better smaller quality.
         auto q = [&](int a, int b, int c) {
-            return triangleQuality(m_points.points[a].position, m_points.points[b].position, m_points.points[c].position);
+            return triangleQuality(m_points.points[a].position, m_points.points[b].position,
+                                   m_points.points[c].position);
         };
-        const double d02 = std::min(q(clean[0], clean[1], clean[2]), q(clean[0], clean[2], clean[3]));
-        const double d13 = std::min(q(clean[1], clean[2], clean[3]), q(clean[1], clean[3], clean[0]));
+        const double d02 =
+            std::min(q(clean[0], clean[1], clean[2]), q(clean[0], clean[2], clean[3]));
+        const double d13 =
+            std::min(q(clean[1], clean[2], clean[3]), q(clean[1], clean[3], clean[0]));
         if (d02 >= d13) {
             m_triangles.push_back({{clean[0], clean[1], clean[2]}, surface});
             m_triangles.push_back({{clean[0], clean[2], clean[3]}, surface});
@@ -308,9 +318,10 @@ private:
 
 } // namespace
 
-std::vector<OutputTriangle> buildDualFaces(const RestrictionDomain &domain, const RestrictedVoronoiDiagram &cells,
-                                           const CellComponents &components, const CellPoints &points,
-                                           DualFaceCounts &counts)
+std::vector<OutputTriangle> buildDualFaces(const RestrictionDomain &domain,
+                                           const RestrictedVoronoiDiagram &cells,
+                                           const CellComponents &components,
+                                           const CellPoints &points, DualFaceCounts &counts)
 {
     return Builder(domain, cells, components, points, counts).run();
 }

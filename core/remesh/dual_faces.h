@@ -19,15 +19,16 @@
 namespace stratamesh {
 
 struct DualFaceCounts {
-    int vertexTriangles = 0;   // duals of RVD vertices
-    int arcPolygons = 0;       // duals of arcs with two points on a side
-    int collapsedFaces = 0;    // duals with fewer than three distinct points (after merges)
+    int vertexTriangles = 0;    // duals of RVD vertices
+    int arcPolygons = 0;        // duals of arcs with two points on a side
+    int collapsedFaces = 0;     // duals with fewer than three distinct points (after merges)
     int incompleteVertices = 0; // RVD vertices not seen by exactly three facets (should be 0)
 };
 
 // Triangles (tagged with their input surface) over the points of `points`.
-std::vector<OutputTriangle> buildDualFaces(const RestrictionDomain &domain, const RestrictedVoronoiDiagram &cells,
-                                           const CellComponents &components, const CellPoints &points,
-                                           DualFaceCounts &counts);
+std::vector<OutputTriangle> buildDualFaces(const RestrictionDomain &domain,
+                                           const RestrictedVoronoiDiagram &cells,
+                                           const CellComponents &components,
+                                           const CellPoints &points, DualFaceCounts &counts);
 
 } // namespace stratamesh

@@ -28,7 +28,10 @@ using TriangleList = std::vector<K::Triangle_3>;
 using Primitive = CGAL::AABB_triangle_primitive<K, TriangleList::const_iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
-K::Point_3 cg(const Vec3 &v) { return K::Point_3(v.x(), v.y(), v.z()); }
+K::Point_3 cg(const Vec3 &v)
+{
+    return K::Point_3(v.x(), v.y(), v.z());
+}
 
 struct SurfaceTree {
     TriangleList triangles;
@@ -64,8 +67,9 @@ Vec3 closestPoint(const SurfaceTree &st, const Vec3 &x)
 // common line): each copy's vertex goes off the triangle's centroid along its normal, towards the
 // nearest vertex of its surface off the lines, by at most a quarter of the triangle's smallest
 // altitude, so each fan stays a fan and the copies differ.
-std::vector<Vec3> offsetTowardsSurfaces(const Model &input, const std::vector<int> &surfaces, const Vec3 &a,
-                                        const Vec3 &b, const Vec3 &c, const std::vector<char> &onLine)
+std::vector<Vec3> offsetTowardsSurfaces(const Model &input, const std::vector<int> &surfaces,
+                                        const Vec3 &a, const Vec3 &b, const Vec3 &c,
+                                        const std::vector<char> &onLine)
 {
     const Vec3 normal = (b - a).cross(c - a);
     const double area2 = normal.norm();
@@ -115,8 +119,8 @@ bool collapseSliver(EditableSoup &soup, const Model &input, int t, Simplificatio
     const OutputTriangle tri = soup.triangle(t);
     int e = 0;
     for (int k = 1; k < 3; ++k)
-        if ((soup.position(tri.v[(k + 1) % 3]) - soup.position(tri.v[k])).squaredNorm() <
-            (soup.position(tri.v[(e + 1) % 3]) - soup.position(tri.v[e])).squaredNorm())
+        if ((soup.position(tri.v[(k + 1) % 3]) - soup.position(tri.v[k])).squaredNorm()
+            < (soup.position(tri.v[(e + 1) % 3]) - soup.position(tri.v[e])).squaredNorm())
             e = k;
     int u = tri.v[e], w = tri.v[(e + 1) % 3];
     // The vertex that may move least stays: corners over line vertices over interior ones.
@@ -143,7 +147,8 @@ bool collapseSliver(EditableSoup &soup, const Model &input, int t, Simplificatio
 
 } // namespace
 
-DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &input, SimplificationLedger &ledger)
+DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &input,
+                                               SimplificationLedger &ledger)
 {
     DuplicateSeparation result;
     std::map<std::array<int, 3>, std::vector<int>> bySet;
@@ -166,8 +171,9 @@ DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &
         std::vector<int> copies, surfaces;
         for (int t : tris) {
             const int surface = soup.triangle(t).surface;
-            if (std::find(surfaces.begin(), surfaces.end(), surface) != surfaces.end() || surface < 0 ||
-                surface >= static_cast<int>(input.surfaces.size()) || !treeOf(trees, input, surface).tree) {
+            if (std::find(surfaces.begin(), surfaces.end(), surface) != surfaces.end()
+                || surface < 0 || surface >= static_cast<int>(input.surfaces.size())
+                || !treeOf(trees, input, surface).tree) {
                 soup.removeTriangle(t); // an exact copy inside one surface
                 ++result.removedTriangles;
                 continue;
@@ -182,7 +188,8 @@ DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &
             continue;
         }
         const OutputTriangle first = soup.triangle(copies.front());
-        const Vec3 a = soup.position(first.v[0]), b = soup.position(first.v[1]), c = soup.position(first.v[2]);
+        const Vec3 a = soup.position(first.v[0]), b = soup.position(first.v[1]),
+                   c = soup.position(first.v[2]);
         const Vec3 centroid = (a + b + c) / 3.0;
         // Where each surface is under the triangle, along its normal through a few interior
         // points; keep the point whose fans are the best shaped among those that separate the
@@ -202,12 +209,15 @@ DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &
         for (const Vec3 &probe : probes) {
             Candidate cand{1.0, std::numeric_limits<double>::max(), {}};
             for (int surface : surfaces)
-                cand.targets.push_back(probe + n * n.dot(closestPoint(treeOf(trees, input, surface), probe) - probe));
+                cand.targets.push_back(
+                    probe + n * n.dot(closestPoint(treeOf(trees, input, surface), probe) - probe));
             for (std::size_t i = 0; i < cand.targets.size(); ++i) {
                 for (std::size_t j = i + 1; j < cand.targets.size(); ++j)
-                    cand.separation = std::min(cand.separation, (cand.targets[i] - cand.targets[j]).norm());
+                    cand.separation =
+                        std::min(cand.separation, (cand.targets[i] - cand.targets[j]).norm());
                 cand.shape = std::min({cand.shape, triangleQuality(a, b, cand.targets[i]),
-                                       triangleQuality(b, c, cand.targets[i]), triangleQuality(c, a, cand.targets[i])});
+                                       triangleQuality(b, c, cand.targets[i]),
+                                       triangleQuality(c, a, cand.targets[i])});
             }
             if (cand.separation > tiny)
                 candidates.push_back(std::move(cand));
@@ -240,7 +250,8 @@ DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &
                 const int v = soup.addPoint(p);
                 soup.removeTriangle(copies[i]);
                 for (int k = 0; k < 3; ++k)
-                    soup.addTriangle({copyCorners[i][k], copyCorners[i][(k + 1) % 3], v}, surfaces[i]);
+                    soup.addTriangle({copyCorners[i][k], copyCorners[i][(k + 1) % 3], v},
+                                     surfaces[i]);
                 added.push_back(v);
             }
             return added;

@@ -21,6 +21,7 @@ struct DuplicateSeparation {
 };
 
 // Collapses are ledger records (degenerate_contact_triangle).
-DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &input, SimplificationLedger &ledger);
+DuplicateSeparation separateDuplicateTriangles(EditableSoup &soup, const Model &input,
+                                               SimplificationLedger &ledger);
 
 } // namespace stratamesh

@@ -140,7 +140,8 @@ VertexClass EditableSoup::vertexClass(int v) const
         std::sort(s.begin(), s.end());
         return s;
     };
-    return signature(features[0]) == signature(features[1]) ? VertexClass::Line : VertexClass::Fixed;
+    return signature(features[0]) == signature(features[1]) ? VertexClass::Line
+                                                            : VertexClass::Fixed;
 }
 
 int EditableSoup::addTriangle(const std::array<int, 3> &v, int surface)
@@ -234,7 +235,9 @@ bool EditableSoup::collapse(int u, int w, const Vec3 &target, double minQuality,
         if (!found)
             return false;
     }
-    if (checkShape && (wouldFlip(u, target, shared, w, minQuality) || wouldFlip(w, target, shared, -1, minQuality)))
+    if (checkShape
+        && (wouldFlip(u, target, shared, w, minQuality)
+            || wouldFlip(w, target, shared, -1, minQuality)))
         return false;
     for (int t : m_vertexTriangles[u]) {
         if (std::find(shared.begin(), shared.end(), t) != shared.end())

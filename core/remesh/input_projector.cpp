@@ -17,7 +17,10 @@ using TriangleList = std::vector<K::Triangle_3>;
 using Primitive = CGAL::AABB_triangle_primitive<K, TriangleList::const_iterator>;
 using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
-K::Point_3 cg(const Vec3 &v) { return K::Point_3(v.x(), v.y(), v.z()); }
+K::Point_3 cg(const Vec3 &v)
+{
+    return K::Point_3(v.x(), v.y(), v.z());
+}
 
 } // namespace
 
@@ -38,7 +41,8 @@ bool InputProjector::hasSurface(int surface)
         auto t = std::make_unique<Tree>();
         const Surface &s = m_input.surfaces[surface];
         for (const Triangle &tri : s.triangles) {
-            K::Triangle_3 ct(cg(s.vertices[tri[0]]), cg(s.vertices[tri[1]]), cg(s.vertices[tri[2]]));
+            K::Triangle_3 ct(cg(s.vertices[tri[0]]), cg(s.vertices[tri[1]]),
+                             cg(s.vertices[tri[2]]));
             if (!ct.is_degenerate())
                 t->triangles.push_back(ct);
         }
@@ -86,7 +90,8 @@ Vec3 InputProjector::onLines(const std::vector<int> &lines, const Vec3 &x) const
             const Vec3 &a = m_input.vertices[line.vertices[i]];
             const Vec3 &b = m_input.vertices[line.vertices[(i + 1) % n]];
             const Vec3 d = b - a;
-            const double t = d.squaredNorm() > 0 ? std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+            const double t =
+                d.squaredNorm() > 0 ? std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
             const Vec3 p = a + t * d;
             if ((p - x).squaredNorm() < best) {
                 best = (p - x).squaredNorm();

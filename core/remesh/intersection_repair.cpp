@@ -58,7 +58,8 @@ bool anyIntersection(const EditableSoup &soup, const std::vector<int> &tris)
             continue;
         const BBox bt = boxOf(soup, t);
         for (int u = 0; u < soup.triangleCapacity(); ++u)
-            if (u != t && soup.alive(u) && bt.overlaps(boxOf(soup, u)) && pairIntersects(soup, t, u))
+            if (u != t && soup.alive(u) && bt.overlaps(boxOf(soup, u))
+                && pairIntersects(soup, t, u))
                 return true;
     }
     return false;
@@ -117,8 +118,8 @@ bool tryMoves(EditableSoup &soup, const std::array<int, 3> &tri, double minQuali
 
 // Last resort (thesis §4.4.2: features below the resolution are merged): collapse an edge of
 // one of the triangles, the shortest first, when fewer triangles intersect around it after.
-bool tryCollapses(EditableSoup &soup, const Model &input, const std::array<int, 3> &a, const std::array<int, 3> &b,
-                  SimplificationLedger &ledger)
+bool tryCollapses(EditableSoup &soup, const Model &input, const std::array<int, 3> &a,
+                  const std::array<int, 3> &b, SimplificationLedger &ledger)
 {
     std::vector<std::pair<double, std::pair<int, int>>> edges;
     for (const auto &tri : {a, b})
@@ -132,7 +133,8 @@ bool tryCollapses(EditableSoup &soup, const Model &input, const std::array<int, 
         const auto rank = [&](int v) { return static_cast<int>(soup.vertexClass(v)); };
         if (rank(u) > rank(w))
             std::swap(u, w);
-        const Vec3 target = rank(u) == rank(w) ? Vec3(0.5 * (soup.position(u) + soup.position(w))) : soup.position(w);
+        const Vec3 target = rank(u) == rank(w) ? Vec3(0.5 * (soup.position(u) + soup.position(w)))
+                                               : soup.position(w);
         LedgerRecord r;
         r.kind = LedgerKind::CloseFeatureMerge;
         r.inputs = inputEntitiesOf(soup, input, {u, w});
@@ -144,7 +146,8 @@ bool tryCollapses(EditableSoup &soup, const Model &input, const std::array<int, 
         const int before = intersectionsAroundVertices(soup, {u, w});
         for (bool checkShape : {true, false}) {
             EditableSoup backup = soup;
-            if (soup.collapse(u, w, target, 0.0, checkShape) && intersectionsAroundVertices(soup, {w}) < before) {
+            if (soup.collapse(u, w, target, 0.0, checkShape)
+                && intersectionsAroundVertices(soup, {w}) < before) {
                 ledger.push_back(r);
                 return true;
             }
@@ -167,7 +170,8 @@ int intersectionsAroundVertices(const EditableSoup &soup, const std::vector<int>
     for (int t : tris) {
         const BBox bt = boxOf(soup, t);
         for (int u = 0; u < soup.triangleCapacity(); ++u) {
-            if (u == t || !soup.alive(u) || (std::binary_search(tris.begin(), tris.end(), u) && u < t))
+            if (u == t || !soup.alive(u)
+                || (std::binary_search(tris.begin(), tris.end(), u) && u < t))
                 continue;
             if (bt.overlaps(boxOf(soup, u)) && pairIntersects(soup, t, u))
                 ++count;
@@ -213,12 +217,14 @@ IntersectionRepairResult repairIntersections(EditableSoup &soup, const Model &in
         pairs = soupIntersections(soup);
     }
     // Merges go on while they make progress: each one removes at least one intersecting pair.
-    for (int round = 0; params.allowMerges && round < 4 * params.maxRounds && !pairs.empty(); ++round) {
+    for (int round = 0; params.allowMerges && round < 4 * params.maxRounds && !pairs.empty();
+         ++round) {
         bool changed = false;
         for (const auto &[t, u] : pairs) {
             if (!soup.alive(t) || !soup.alive(u) || !pairIntersects(soup, t, u))
                 continue;
-            changed = tryCollapses(soup, input, soup.triangle(t).v, soup.triangle(u).v, ledger) || changed;
+            changed = tryCollapses(soup, input, soup.triangle(t).v, soup.triangle(u).v, ledger)
+                      || changed;
         }
         pairs = soupIntersections(soup);
         if (!changed)

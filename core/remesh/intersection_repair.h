@@ -13,11 +13,12 @@ namespace stratamesh {
 struct IntersectionRepairParams {
     int maxRounds = 5;
     double minQuality = 0.05; // moves and flips may not create worse triangles than this
-    bool allowMerges = true;  // then collapse edges of what still intersects (close_feature_merge records)
+    bool allowMerges =
+        true; // then collapse edges of what still intersects (close_feature_merge records)
 };
 
 struct IntersectionRepairResult {
-    int found = 0;      // intersecting pairs before repair
+    int found = 0; // intersecting pairs before repair
     int resolved = 0;
     int unresolved = 0; // pairs left, each a ledger record
 };

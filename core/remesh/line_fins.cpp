@@ -14,7 +14,8 @@ namespace {
 bool shareLine(const OutputPoint &a, const OutputPoint &b, const OutputPoint &c)
 {
     std::vector<int> ab;
-    std::set_intersection(a.lines.begin(), a.lines.end(), b.lines.begin(), b.lines.end(), std::back_inserter(ab));
+    std::set_intersection(a.lines.begin(), a.lines.end(), b.lines.begin(), b.lines.end(),
+                          std::back_inserter(ab));
     for (int l : ab)
         if (std::binary_search(c.lines.begin(), c.lines.end(), l))
             return true;
@@ -36,7 +37,8 @@ int removeLineFins(EditableSoup &soup)
             continue;
         // The middle point: the one with the widest angle.
         const std::array<double, 3> angles =
-            triangleShape(soup.position(fin.v[0]), soup.position(fin.v[1]), soup.position(fin.v[2])).anglesDeg;
+            triangleShape(soup.position(fin.v[0]), soup.position(fin.v[1]), soup.position(fin.v[2]))
+                .anglesDeg;
         const auto k = std::max_element(angles.begin(), angles.end()) - angles.begin();
         if (angles[k] < minApexDeg)
             continue;
@@ -64,7 +66,8 @@ int removeLineFins(EditableSoup &soup)
         auto turnsSame = [&](const std::array<int, 3> &v) {
             return (soup.position(v[1]) - soup.position(v[0]))
                        .cross(soup.position(v[2]) - soup.position(v[0]))
-                       .dot(reference) > 0.0;
+                       .dot(reference)
+                   > 0.0;
         };
         if (!turnsSame(n0) || !turnsSame(n1) || !soup.edgeTriangles(m, x).empty())
             continue;

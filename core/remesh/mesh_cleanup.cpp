@@ -95,16 +95,20 @@ CleanupCounts removeValence3Vertices(EditableSoup &soup, const Model &input,
             if (c < 0 || c == a)
                 continue;
             const Vec3 &pa = soup.position(a), &pb = soup.position(b), &pc = soup.position(c);
-            if ((pb - pa).cross(pc - pa).dot(normalSum) <= 0.0 || triangleQuality(pa, pb, pc) <= 0.0)
+            if ((pb - pa).cross(pc - pa).dot(normalSum) <= 0.0
+                || triangleQuality(pa, pb, pc) <= 0.0)
                 continue;
             bool exists = false;
             for (int t : soup.vertexTriangles(a))
-                exists = exists || (cornerIndex(soup.triangle(t), b) >= 0 && cornerIndex(soup.triangle(t), c) >= 0);
+                exists = exists
+                         || (cornerIndex(soup.triangle(t), b) >= 0
+                             && cornerIndex(soup.triangle(t), c) >= 0);
             if (exists)
                 continue;
             const int surface = soup.triangle(tris[0]).surface;
             ledger.push_back(makeRecord(LedgerKind::Valence3Removed, soup, input, {v},
-                                        soup.position(v), pointPlaneDistance(soup.position(v), pa, pb, pc),
+                                        soup.position(v),
+                                        pointPlaneDistance(soup.position(v), pa, pb, pc),
                                         "valence-3 vertex of a tiny cell removed (Fig 4.8a)"));
             for (int t : tris)
                 soup.removeTriangle(t);
@@ -123,7 +127,8 @@ bool fixDegenerate(EditableSoup &soup, int t, const Model &input, const CleanupP
                    SimplificationLedger &ledger, CleanupCounts &counts)
 {
     const OutputTriangle tri = soup.triangle(t);
-    const std::array<Vec3, 3> p{soup.position(tri.v[0]), soup.position(tri.v[1]), soup.position(tri.v[2])};
+    const std::array<Vec3, 3> p{soup.position(tri.v[0]), soup.position(tri.v[1]),
+                                soup.position(tri.v[2])};
     const TriangleShape shape = triangleShape(p[0], p[1], p[2]);
     const double minQ = 0.5 * params.degenerateQuality;
     const Vec3 centre = (p[0] + p[1] + p[2]) / 3.0;
@@ -142,20 +147,25 @@ bool fixDegenerate(EditableSoup &soup, int t, const Model &input, const CleanupP
                 return true;
             }
         } else if (along == 1) {
-            // Fig 4.8b: the apex joins the free border, or leaves it when it only had this triangle.
+            // Fig 4.8b: the apex joins the free border, or leaves it when it only had this
+            // triangle.
             const VertexClass rc = soup.vertexClass(r);
             if (rc == VertexClass::Interior || soup.vertexTriangles(r).size() == 1) {
-                const double size = (soup.position(r) -
-                                     projectOnSegment(soup.position(r), soup.position(a), soup.position(b))).norm();
-                ledger.push_back(makeRecord(LedgerKind::DegenerateBorderTriangle, soup, input, {r, a, b},
-                                            centre, size, "degenerate triangle on a free border removed (Fig 4.8b)"));
+                const double size =
+                    (soup.position(r)
+                     - projectOnSegment(soup.position(r), soup.position(a), soup.position(b)))
+                        .norm();
+                ledger.push_back(
+                    makeRecord(LedgerKind::DegenerateBorderTriangle, soup, input, {r, a, b}, centre,
+                               size, "degenerate triangle on a free border removed (Fig 4.8b)"));
                 soup.removeTriangle(t);
                 ++counts.borderTriangles;
                 return true;
             }
         } else if (soup.vertexClass(r) == VertexClass::Interior) {
             // Algorithm 4.4, configuration 6: the apex is inserted into the contact edge.
-            const Vec3 target = projectOnSegment(soup.position(r), soup.position(a), soup.position(b));
+            const Vec3 target =
+                projectOnSegment(soup.position(r), soup.position(a), soup.position(b));
             const double moved = (target - soup.position(r)).norm();
             soup.removeTriangle(t);
             if (!soup.tryMove(r, target, minQ)) {
@@ -163,8 +173,10 @@ bool fixDegenerate(EditableSoup &soup, int t, const Model &input, const CleanupP
                 return false;
             }
             soup.splitEdge(a, b, r);
-            ledger.push_back(makeRecord(LedgerKind::DegenerateContactTriangle, soup, input, {r, a, b}, centre,
-                                        moved, "cap along a contact: vertex inserted into the contact (Alg 4.4, configuration 6)"));
+            ledger.push_back(makeRecord(LedgerKind::DegenerateContactTriangle, soup, input,
+                                        {r, a, b}, centre, moved,
+                                        "cap along a contact: vertex inserted into the contact "
+                                        "(Alg 4.4, configuration 6)"));
             ++counts.contactTriangles;
             return true;
         }
@@ -200,14 +212,15 @@ bool fixDegenerate(EditableSoup &soup, int t, const Model &input, const CleanupP
         target = soup.position(y);
     } else
         return false;
-    const bool interiorOnly = cx == VertexClass::Interior && cy == VertexClass::Interior &&
-                              soup.vertexClass(tri.v[(e + 2) % 3]) == VertexClass::Interior;
-    const double moved = std::max((target - soup.position(x)).norm(), (target - soup.position(y)).norm());
+    const bool interiorOnly = cx == VertexClass::Interior && cy == VertexClass::Interior
+                              && soup.vertexClass(tri.v[(e + 2) % 3]) == VertexClass::Interior;
+    const double moved =
+        std::max((target - soup.position(x)).norm(), (target - soup.position(y)).norm());
     const std::vector<int> involved{x, y};
-    const LedgerRecord record = makeRecord(onBorder ? LedgerKind::DegenerateBorderTriangle
-                                                    : LedgerKind::DegenerateContactTriangle,
-                                           soup, input, involved, centre, moved,
-                                           "needle: its short edge collapsed (Alg 4.4, configuration 9)");
+    const LedgerRecord record = makeRecord(
+        onBorder ? LedgerKind::DegenerateBorderTriangle : LedgerKind::DegenerateContactTriangle,
+        soup, input, involved, centre, moved,
+        "needle: its short edge collapsed (Alg 4.4, configuration 9)");
     if (!soup.collapse(x, y, target, minQ))
         return false;
     if (interiorOnly) {

@@ -80,14 +80,15 @@ int relaxVertices(EditableSoup &soup, InputProjector &projector, const Smoothing
                 for (int w : r.neighbours)
                     sum += soup.position(w);
                 const int surface = soup.triangle(soup.vertexTriangles(v).front()).surface;
-                target = projector.onSurface(surface, sum / static_cast<double>(r.neighbours.size()), old);
+                target = projector.onSurface(surface,
+                                             sum / static_cast<double>(r.neighbours.size()), old);
                 // The centroid evens the ring; next to a thin piece or a line a step towards one
                 // neighbour may open the worst angle more: the best worst quality wins.
                 double best = worstQualityAround(soup, v, target);
                 if (best < kSearchBelow)
                     for (int w : r.neighbours) {
-                        const Vec3 candidate =
-                            projector.onSurface(surface, old + 0.25 * (soup.position(w) - old), old);
+                        const Vec3 candidate = projector.onSurface(
+                            surface, old + 0.25 * (soup.position(w) - old), old);
                         const double q = worstQualityAround(soup, v, candidate);
                         if (q > best) {
                             best = q;
@@ -100,12 +101,14 @@ int relaxVertices(EditableSoup &soup, InputProjector &projector, const Smoothing
                 // towards either neighbour compete, and the best worst quality wins.
                 const std::vector<int> &along = r.neighbours;
                 const std::vector<int> &lines = soup.point(v).lines;
-                target = projector.onLines(lines, (soup.position(along[0]) + soup.position(along[1])) / 2.0);
+                target = projector.onLines(
+                    lines, (soup.position(along[0]) + soup.position(along[1])) / 2.0);
                 double best = worstQualityAround(soup, v, target);
                 if (best < kSearchBelow)
                     for (int w : along)
                         for (double f : {0.2, 0.4}) {
-                            const Vec3 candidate = projector.onLines(lines, old + f * (soup.position(w) - old));
+                            const Vec3 candidate =
+                                projector.onLines(lines, old + f * (soup.position(w) - old));
                             const double q = worstQualityAround(soup, v, candidate);
                             if (q > best) {
                                 best = q;
@@ -119,10 +122,12 @@ int relaxVertices(EditableSoup &soup, InputProjector &projector, const Smoothing
                 // surface) the straight middle is off it.
                 Vec3 candidate = target;
                 if (f != 1.0)
-                    candidate = c == VertexClass::Interior
-                                    ? projector.onSurface(soup.triangle(soup.vertexTriangles(v).front()).surface,
-                                                          old + f * (target - old), old)
-                                    : projector.onLines(soup.point(v).lines, old + f * (target - old));
+                    candidate =
+                        c == VertexClass::Interior
+                            ? projector.onSurface(
+                                soup.triangle(soup.vertexTriangles(v).front()).surface,
+                                old + f * (target - old), old)
+                            : projector.onLines(soup.point(v).lines, old + f * (target - old));
                 if (worstQualityAround(soup, v, candidate) < before)
                     continue;
                 if (soup.tryMove(v, candidate, 0.0)) {

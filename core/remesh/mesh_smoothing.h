@@ -19,6 +19,7 @@ struct SmoothingParams {
 };
 
 // Number of vertex moves kept.
-int relaxVertices(EditableSoup &soup, InputProjector &projector, const SmoothingParams &params = {});
+int relaxVertices(EditableSoup &soup, InputProjector &projector,
+                  const SmoothingParams &params = {});
 
 } // namespace stratamesh

@@ -61,8 +61,9 @@ std::vector<std::string> cornerSurfaceNames(const Model &m, const Corner &c)
 // Greedy matching of items with equal keys by increasing distance; returns output match of
 // each input item (-1 when unmatched).
 template <class Key>
-std::vector<int> matchByKeyAndDistance(const std::vector<Key> &inKeys, const std::vector<Vec3> &inPos,
-                                       const std::vector<Key> &outKeys, const std::vector<Vec3> &outPos)
+std::vector<int>
+matchByKeyAndDistance(const std::vector<Key> &inKeys, const std::vector<Vec3> &inPos,
+                      const std::vector<Key> &outKeys, const std::vector<Vec3> &outPos)
 {
     struct Candidate {
         double d;
@@ -91,8 +92,8 @@ std::vector<int> matchByKeyAndDistance(const std::vector<Key> &inKeys, const std
     return match;
 }
 
-LedgerRecord entityRecord(LedgerKind kind, EntityRef ref, bool isInput, const Vec3 &position, double size,
-                          const std::string &meaning, const std::string &note)
+LedgerRecord entityRecord(LedgerKind kind, EntityRef ref, bool isInput, const Vec3 &position,
+                          double size, const std::string &meaning, const std::string &note)
 {
     LedgerRecord r;
     r.kind = kind;
@@ -123,7 +124,8 @@ std::vector<SurfacePart> surfaceParts(const Surface &surface)
     std::map<int, SurfacePart> byRoot;
     for (int t = 0; t < static_cast<int>(parent.size()); ++t) {
         const Triangle &tri = surface.triangles[t];
-        const Vec3 &a = surface.vertices[tri[0]], &b = surface.vertices[tri[1]], &c = surface.vertices[tri[2]];
+        const Vec3 &a = surface.vertices[tri[0]], &b = surface.vertices[tri[1]],
+                   &c = surface.vertices[tri[2]];
         const double area = 0.5 * (b - a).cross(c - a).norm();
         SurfacePart &part = byRoot[findRoot(parent, t)];
         part.area += area;
@@ -136,11 +138,15 @@ std::vector<SurfacePart> surfaceParts(const Surface &surface)
             part.centroid /= part.area;
         parts.push_back(part);
     }
-    std::sort(parts.begin(), parts.end(), [](const SurfacePart &x, const SurfacePart &y) { return x.area > y.area; });
+    std::sort(parts.begin(), parts.end(),
+              [](const SurfacePart &x, const SurfacePart &y) { return x.area > y.area; });
     return parts;
 }
 
-int surfaceComponentCount(const Surface &surface) { return static_cast<int>(surfaceParts(surface).size()); }
+int surfaceComponentCount(const Surface &surface)
+{
+    return static_cast<int>(surfaceParts(surface).size());
+}
 
 void recordEntityChanges(const Model &input, const Model &output, SimplificationLedger &ledger)
 {
@@ -151,26 +157,30 @@ void recordEntityChanges(const Model &input, const Model &output, Simplification
         const Surface &in = input.surfaces[s];
         auto it = outByName.find(in.name);
         const int inCount = surfaceComponentCount(in);
-        const int outCount = it == outByName.end() ? 0 : surfaceComponentCount(output.surfaces[it->second]);
+        const int outCount =
+            it == outByName.end() ? 0 : surfaceComponentCount(output.surfaces[it->second]);
         Vec3 centre = Vec3::Zero();
         for (const Vec3 &v : in.vertices)
             centre += v;
         if (!in.vertices.empty())
             centre /= static_cast<double>(in.vertices.size());
         if (outCount == 0)
-            ledger.push_back(entityRecord(LedgerKind::SurfaceLost, surfaceRef(input, static_cast<int>(s)), true,
-                                          centre, surfaceArea(in), "area", "surface entirely below the resolution"));
+            ledger.push_back(entityRecord(
+                LedgerKind::SurfaceLost, surfaceRef(input, static_cast<int>(s)), true, centre,
+                surfaceArea(in), "area", "surface entirely below the resolution"));
         else
             for (int k = outCount; k < inCount; ++k)
-                ledger.push_back(entityRecord(LedgerKind::SurfacePartLost, surfaceRef(input, static_cast<int>(s)),
-                                              true, centre, 0.0, "area", "a connected part of the surface disappeared"));
+                ledger.push_back(entityRecord(
+                    LedgerKind::SurfacePartLost, surfaceRef(input, static_cast<int>(s)), true,
+                    centre, 0.0, "area", "a connected part of the surface disappeared"));
         if (outCount > inCount) {
             // The largest parts continue the input's; each smaller one is a new piece to review.
             const std::vector<SurfacePart> parts = surfaceParts(output.surfaces[it->second]);
             for (int k = inCount; k < outCount; ++k)
-                ledger.push_back(entityRecord(LedgerKind::SurfacePartCreated, surfaceRef(output, it->second), false,
-                                              parts[k].centroid, parts[k].area, "area",
-                                              "the surface was split into more parts: this one is separate"));
+                ledger.push_back(
+                    entityRecord(LedgerKind::SurfacePartCreated, surfaceRef(output, it->second),
+                                 false, parts[k].centroid, parts[k].area, "area",
+                                 "the surface was split into more parts: this one is separate"));
         }
     }
 
@@ -191,14 +201,15 @@ void recordEntityChanges(const Model &input, const Model &output, Simplification
             outMatched[match[i]] = 1;
             continue;
         }
-        ledger.push_back(entityRecord(LedgerKind::LineLost, lineRef(input, static_cast<int>(i)), true, inPos[i],
-                                      polylineLength(input, input.lines[i]), "length",
-                                      "contact or border line not in the output"));
+        ledger.push_back(entityRecord(LedgerKind::LineLost, lineRef(input, static_cast<int>(i)),
+                                      true, inPos[i], polylineLength(input, input.lines[i]),
+                                      "length", "contact or border line not in the output"));
     }
     for (std::size_t o = 0; o < output.lines.size(); ++o)
         if (!outMatched[o])
-            ledger.push_back(entityRecord(LedgerKind::LineCreated, lineRef(output, static_cast<int>(o)), false,
-                                          outPos[o], polylineLength(output, output.lines[o]), "length",
+            ledger.push_back(entityRecord(LedgerKind::LineCreated,
+                                          lineRef(output, static_cast<int>(o)), false, outPos[o],
+                                          polylineLength(output, output.lines[o]), "length",
                                           "line of the output with no counterpart in the input"));
 
     inKeys.clear();
@@ -226,13 +237,15 @@ void recordEntityChanges(const Model &input, const Model &output, Simplification
             for (const Vec3 &p : outPos)
                 nearest = std::min(nearest, (p - inPos[i]).norm());
         }
-        ledger.push_back(entityRecord(LedgerKind::CornerLost, cornerRef(input, static_cast<int>(i)), true, inPos[i],
-                                      nearest, "distance", "corner not in the output (distance to the nearest output corner)"));
+        ledger.push_back(entityRecord(
+            LedgerKind::CornerLost, cornerRef(input, static_cast<int>(i)), true, inPos[i], nearest,
+            "distance", "corner not in the output (distance to the nearest output corner)"));
     }
     for (std::size_t o = 0; o < output.corners.size(); ++o)
         if (!cornerMatched[o])
-            ledger.push_back(entityRecord(LedgerKind::CornerCreated, cornerRef(output, static_cast<int>(o)), false,
-                                          outPos[o], 0.0, "distance", "corner of the output with no counterpart in the input"));
+            ledger.push_back(entityRecord(
+                LedgerKind::CornerCreated, cornerRef(output, static_cast<int>(o)), false, outPos[o],
+                0.0, "distance", "corner of the output with no counterpart in the input"));
 }
 
 Model buildOutputModel(const Model &input, const OutputMesh &mesh, SimplificationLedger &ledger)
@@ -271,7 +284,8 @@ Model buildOutputModel(const Model &input, const OutputMesh &mesh, Simplificatio
     auto mapSides = [&](const std::vector<RegionSide> &sides) {
         std::vector<RegionSide> r;
         for (const RegionSide &side : sides)
-            if (side.surface >= 0 && side.surface < static_cast<int>(surfaceMap.size()) && surfaceMap[side.surface] >= 0)
+            if (side.surface >= 0 && side.surface < static_cast<int>(surfaceMap.size())
+                && surfaceMap[side.surface] >= 0)
                 r.push_back({surfaceMap[side.surface], side.positive});
         return r;
     };

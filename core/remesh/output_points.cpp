@@ -14,8 +14,14 @@ namespace stratamesh {
 namespace {
 
 using K = CGAL::Simple_cartesian<double>;
-K::Point_3 cg(const Vec3 &v) { return K::Point_3(v.x(), v.y(), v.z()); }
-Vec3 eg(const K::Point_3 &p) { return Vec3(p.x(), p.y(), p.z()); }
+K::Point_3 cg(const Vec3 &v)
+{
+    return K::Point_3(v.x(), v.y(), v.z());
+}
+Vec3 eg(const K::Point_3 &p)
+{
+    return Vec3(p.x(), p.y(), p.z());
+}
 
 struct Segment3 {
     Vec3 a, b;
@@ -69,9 +75,12 @@ Vec3 closestOn(const Part &part, const Vec3 &x)
         if (!tri.has_on(p)) {
             // Outside: the nearest point is on an edge.
             double edgeBest = std::numeric_limits<double>::max();
-            for (const auto &[u, v] : {std::pair{t.a, t.b}, std::pair{t.b, t.c}, std::pair{t.c, t.a}}) {
+            for (const auto &[u, v] :
+                 {std::pair{t.a, t.b}, std::pair{t.b, t.c}, std::pair{t.c, t.a}}) {
                 const Vec3 d = v - u;
-                const double s = d.squaredNorm() > 0 ? std::clamp((x - u).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+                const double s = d.squaredNorm() > 0
+                                     ? std::clamp((x - u).dot(d) / d.squaredNorm(), 0.0, 1.0)
+                                     : 0.0;
                 const Vec3 e = u + s * d;
                 if ((e - x).squaredNorm() < edgeBest) {
                     edgeBest = (e - x).squaredNorm();
@@ -98,8 +107,9 @@ double partDistance(const Part &a, const Part &b, double cutoff)
     double best = std::numeric_limits<double>::max();
     for (const Segment3 &s : a.segments)
         for (const Segment3 &t : b.segments)
-            best = std::min(best, std::sqrt(CGAL::squared_distance(K::Segment_3(cg(s.a), cg(s.b)),
-                                                                   K::Segment_3(cg(t.a), cg(t.b)))));
+            best =
+                std::min(best, std::sqrt(CGAL::squared_distance(K::Segment_3(cg(s.a), cg(s.b)),
+                                                                K::Segment_3(cg(t.a), cg(t.b)))));
     auto vertexDistances = [&](const Part &from, const Part &to) {
         std::vector<Vec3> vs;
         for (const Segment3 &s : from.segments)
@@ -170,8 +180,9 @@ std::vector<EntityRef> refsOf(const Model &model, const OutputPoint &p)
     return refs;
 }
 
-LedgerRecord mergeRecord(LedgerKind kind, const Model &model, PointSet &set, const std::vector<Vec3> &before,
-                         int root, double size, const std::string &meaning, const std::string &note)
+LedgerRecord mergeRecord(LedgerKind kind, const Model &model, PointSet &set,
+                         const std::vector<Vec3> &before, int root, double size,
+                         const std::string &meaning, const std::string &note)
 {
     LedgerRecord r;
     r.kind = kind;
@@ -196,8 +207,9 @@ Vec3 mean(const std::vector<Vec3> &v)
 
 } // namespace
 
-CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain, const RestrictedVoronoiDiagram &cells,
-                             const CellComponents &cc, const CellPointsParams &params, SimplificationLedger &ledger)
+CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain,
+                             const RestrictedVoronoiDiagram &cells, const CellComponents &cc,
+                             const CellPointsParams &params, SimplificationLedger &ledger)
 {
     const double dResolution = params.dResolution;
     PointSet set;
@@ -214,7 +226,8 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
         Vec3 centroid = Vec3::Zero();
         for (int l : cc.lineComponentPieces[b]) {
             const RvdLinePiece &piece = cells.linePieces[l];
-            const Vec3 &a = cells.vertices[piece.vertices[0]].position, &c = cells.vertices[piece.vertices[1]].position;
+            const Vec3 &a = cells.vertices[piece.vertices[0]].position,
+                       &c = cells.vertices[piece.vertices[1]].position;
             part.segments.push_back({a, c});
             part.grow(a);
             part.grow(c);
@@ -224,7 +237,8 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
             const int line = domain.segmentLine[piece.segment];
             p.lines.push_back(line);
             if (line >= 0 && line < static_cast<int>(model.lines.size()))
-                p.surfaces.insert(p.surfaces.end(), model.lines[line].surfaces.begin(), model.lines[line].surfaces.end());
+                p.surfaces.insert(p.surfaces.end(), model.lines[line].surfaces.begin(),
+                                  model.lines[line].surfaces.end());
         }
         std::sort(p.lines.begin(), p.lines.end());
         p.lines.erase(std::unique(p.lines.begin(), p.lines.end()), p.lines.end());
@@ -243,12 +257,14 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
             p.position = closestOn(part, mean(cornerPositions));
         } else {
             p.origin = PointOrigin::Line;
-            p.position = closestOn(part, length > 0 ? Vec3(centroid / length) : part.segments.front().a);
+            p.position =
+                closestOn(part, length > 0 ? Vec3(centroid / length) : part.segments.front().a);
         }
         bcPoint[b] = set.add(p, part);
         if (cornerPositions.size() > 1)
-            ledger.push_back(mergeRecord(LedgerKind::CornerMerge, model, set, cornerPositions, bcPoint[b], 0.0,
-                                         "distance", "corners of one Voronoi cell joined by a line merged (Fig 4.6b)"));
+            ledger.push_back(mergeRecord(
+                LedgerKind::CornerMerge, model, set, cornerPositions, bcPoint[b], 0.0, "distance",
+                "corners of one Voronoi cell joined by a line merged (Fig 4.6b)"));
     }
 
     // (1) cell components without lines: centroid projected onto the component.
@@ -288,10 +304,12 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
                 continue;
             OutputPoint &p = set.point(cellPoint[c]);
             std::sort(surfaces[c].begin(), surfaces[c].end());
-            surfaces[c].erase(std::unique(surfaces[c].begin(), surfaces[c].end()), surfaces[c].end());
+            surfaces[c].erase(std::unique(surfaces[c].begin(), surfaces[c].end()),
+                              surfaces[c].end());
             p.surfaces = surfaces[c];
-            const Vec3 centroid = area[c] > 0 ? Vec3(moment[c] / area[c])
-                                              : (parts[c].triangles.empty() ? Vec3::Zero() : parts[c].triangles[0].a);
+            const Vec3 centroid =
+                area[c] > 0 ? Vec3(moment[c] / area[c])
+                            : (parts[c].triangles.empty() ? Vec3::Zero() : parts[c].triangles[0].a);
             p.position = closestOn(parts[c], centroid);
             set.setPart(cellPoint[c], std::move(parts[c]));
         }
@@ -314,8 +332,9 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
             for (int r : roots)
                 all.append(set.part(r));
             const int root = set.merge(roots, closestOn(all, mean(before)), PointOrigin::Line);
-            ledger.push_back(mergeRecord(LedgerKind::MultiPointMerge, model, set, before, root, 0.0, "distance",
-                                         "a cell component with more than two points: points merged (Fig 4.6a)"));
+            ledger.push_back(mergeRecord(
+                LedgerKind::MultiPointMerge, model, set, before, root, 0.0, "distance",
+                "a cell component with more than two points: points merged (Fig 4.6a)"));
             continue;
         }
         // Merge the two points whose model parts are closest, until two are left: the same
@@ -332,13 +351,17 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
                         bj = j;
                     }
                 }
-            const std::vector<Vec3> before{set.point(roots[bi]).position, set.point(roots[bj]).position};
+            const std::vector<Vec3> before{set.point(roots[bi]).position,
+                                           set.point(roots[bj]).position};
             Part both = set.part(roots[bi]);
             both.append(set.part(roots[bj]));
-            const PointOrigin origin = std::min(set.point(roots[bi]).origin, set.point(roots[bj]).origin);
-            const int root = set.merge({roots[bi], roots[bj]}, closestOn(both, mean(before)), origin);
-            ledger.push_back(mergeRecord(LedgerKind::MultiPointMerge, model, set, before, root, best, "distance",
-                                         "a cell component with more than two points: its two closest merged (Fig 4.6a)"));
+            const PointOrigin origin =
+                std::min(set.point(roots[bi]).origin, set.point(roots[bj]).origin);
+            const int root =
+                set.merge({roots[bi], roots[bj]}, closestOn(both, mean(before)), origin);
+            ledger.push_back(mergeRecord(
+                LedgerKind::MultiPointMerge, model, set, before, root, best, "distance",
+                "a cell component with more than two points: its two closest merged (Fig 4.6a)"));
             roots.erase(roots.begin() + static_cast<std::ptrdiff_t>(bj));
             roots[bi] = root;
         }
@@ -362,8 +385,9 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
                     const std::vector<Vec3> before{set.point(a).position, set.point(b).position};
                     const PointOrigin origin = std::min(set.point(a).origin, set.point(b).origin);
                     const int root = set.merge({a, b}, mean(before), origin);
-                    ledger.push_back(mergeRecord(LedgerKind::CloseFeatureMerge, model, set, before, root, d, "distance",
-                                                 "model parts closer than d_resolution merged (Fig 4.7)"));
+                    ledger.push_back(mergeRecord(
+                        LedgerKind::CloseFeatureMerge, model, set, before, root, d, "distance",
+                        "model parts closer than d_resolution merged (Fig 4.7)"));
                 }
         }
     }

@@ -31,7 +31,8 @@ struct CellPointsParams {
 };
 
 // `model` is the input the domain was made from (names for the ledger; line incidences).
-CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain, const RestrictedVoronoiDiagram &cells,
+CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain,
+                             const RestrictedVoronoiDiagram &cells,
                              const CellComponents &components, const CellPointsParams &params,
                              SimplificationLedger &ledger);
 

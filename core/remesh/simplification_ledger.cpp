@@ -7,21 +7,36 @@ namespace stratamesh {
 std::string ledgerKindName(LedgerKind kind)
 {
     switch (kind) {
-    case LedgerKind::CornerMerge: return "corner_merge";
-    case LedgerKind::MultiPointMerge: return "multi_point_merge";
-    case LedgerKind::CloseFeatureMerge: return "close_feature_merge";
-    case LedgerKind::DegenerateContactTriangle: return "degenerate_contact_triangle";
-    case LedgerKind::DegenerateBorderTriangle: return "degenerate_border_triangle";
-    case LedgerKind::Valence3Removed: return "valence3_removed";
-    case LedgerKind::SurfaceLost: return "surface_lost";
-    case LedgerKind::LineLost: return "line_lost";
-    case LedgerKind::CornerLost: return "corner_lost";
-    case LedgerKind::SurfaceCreated: return "surface_created";
-    case LedgerKind::LineCreated: return "line_created";
-    case LedgerKind::CornerCreated: return "corner_created";
-    case LedgerKind::IntersectionUnresolved: return "intersection_unresolved";
-    case LedgerKind::SurfacePartLost: return "surface_part_lost";
-    case LedgerKind::SurfacePartCreated: return "surface_part_created";
+    case LedgerKind::CornerMerge:
+        return "corner_merge";
+    case LedgerKind::MultiPointMerge:
+        return "multi_point_merge";
+    case LedgerKind::CloseFeatureMerge:
+        return "close_feature_merge";
+    case LedgerKind::DegenerateContactTriangle:
+        return "degenerate_contact_triangle";
+    case LedgerKind::DegenerateBorderTriangle:
+        return "degenerate_border_triangle";
+    case LedgerKind::Valence3Removed:
+        return "valence3_removed";
+    case LedgerKind::SurfaceLost:
+        return "surface_lost";
+    case LedgerKind::LineLost:
+        return "line_lost";
+    case LedgerKind::CornerLost:
+        return "corner_lost";
+    case LedgerKind::SurfaceCreated:
+        return "surface_created";
+    case LedgerKind::LineCreated:
+        return "line_created";
+    case LedgerKind::CornerCreated:
+        return "corner_created";
+    case LedgerKind::IntersectionUnresolved:
+        return "intersection_unresolved";
+    case LedgerKind::SurfacePartLost:
+        return "surface_part_lost";
+    case LedgerKind::SurfacePartCreated:
+        return "surface_part_created";
     }
     return "unknown";
 }
@@ -29,10 +44,14 @@ std::string ledgerKindName(LedgerKind kind)
 std::string entityKindName(EntityKind kind)
 {
     switch (kind) {
-    case EntityKind::Surface: return "surface";
-    case EntityKind::Line: return "line";
-    case EntityKind::Corner: return "corner";
-    case EntityKind::Vertex: return "vertex";
+    case EntityKind::Surface:
+        return "surface";
+    case EntityKind::Line:
+        return "line";
+    case EntityKind::Corner:
+        return "corner";
+    case EntityKind::Vertex:
+        return "vertex";
     }
     return "unknown";
 }
@@ -73,8 +92,8 @@ void addUnique(std::vector<EntityRef> &refs, const EntityRef &ref)
 
 int countKind(const SimplificationLedger &ledger, LedgerKind kind)
 {
-    return static_cast<int>(std::count_if(ledger.begin(), ledger.end(),
-                                          [kind](const LedgerRecord &r) { return r.kind == kind; }));
+    return static_cast<int>(std::count_if(
+        ledger.begin(), ledger.end(), [kind](const LedgerRecord &r) { return r.kind == kind; }));
 }
 
 } // namespace stratamesh

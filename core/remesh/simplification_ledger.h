@@ -11,9 +11,9 @@
 namespace stratamesh {
 
 enum class LedgerKind {
-    CornerMerge,               // corners of one cell joined by a line merged (Alg 4.2 step 2, Fig 4.6b)
-    MultiPointMerge,           // a cell component with > 2 points merged (Alg 4.2 step 3, Fig 4.6a)
-    CloseFeatureMerge,         // points of parts closer than d_resolution merged (Alg 4.2 step 4, Fig 4.7)
+    CornerMerge,       // corners of one cell joined by a line merged (Alg 4.2 step 2, Fig 4.6b)
+    MultiPointMerge,   // a cell component with > 2 points merged (Alg 4.2 step 3, Fig 4.6a)
+    CloseFeatureMerge, // points of parts closer than d_resolution merged (Alg 4.2 step 4, Fig 4.7)
     DegenerateContactTriangle, // needle or cap along a contact removed (Alg 4.4, Fig 4.9)
     DegenerateBorderTriangle,  // degenerate triangle on a free border removed (Fig 4.8b)
     Valence3Removed,           // valence-3 interior vertex removed (Fig 4.8a)
@@ -23,7 +23,7 @@ enum class LedgerKind {
     SurfaceCreated,
     LineCreated,
     CornerCreated,
-    IntersectionUnresolved,    // intersecting output triangles left after repair (§4.4.5)
+    IntersectionUnresolved, // intersecting output triangles left after repair (§4.4.5)
     // Surface parts: SurfaceLost/SurfaceCreated count whole surfaces (so that input − lost +
     // created = output for the `info` counts); a surface keeping its name but losing or gaining
     // a connected part is one of these.

@@ -45,7 +45,8 @@ struct Polyline {
     }
     Vec3 at(double t) const
     {
-        const std::size_t i = static_cast<std::size_t>(std::upper_bound(arc.begin(), arc.end(), t) - arc.begin());
+        const std::size_t i =
+            static_cast<std::size_t>(std::upper_bound(arc.begin(), arc.end(), t) - arc.begin());
         if (i == 0)
             return points.front();
         if (i >= points.size())
@@ -78,8 +79,10 @@ struct MergedLines {
 MergedLines mergeLines(const Model &m, const std::vector<int> &a, std::vector<int> &b)
 {
     const Polyline pa(positionsOf(m, a));
-    if ((m.vertices[b.front()] - m.vertices[a.front()]).norm() + (m.vertices[b.back()] - m.vertices[a.back()]).norm() >
-        (m.vertices[b.back()] - m.vertices[a.front()]).norm() + (m.vertices[b.front()] - m.vertices[a.back()]).norm())
+    if ((m.vertices[b.front()] - m.vertices[a.front()]).norm()
+            + (m.vertices[b.back()] - m.vertices[a.back()]).norm()
+        > (m.vertices[b.back()] - m.vertices[a.front()]).norm()
+              + (m.vertices[b.front()] - m.vertices[a.back()]).norm())
         std::reverse(b.begin(), b.end());
     const Polyline pb(positionsOf(m, b));
     struct Entry {
@@ -113,28 +116,31 @@ MergedLines mergeLines(const Model &m, const std::vector<int> &a, std::vector<in
     double uMax = 0.0;
     for (const Entry &e : entries) {
         uMax = std::max(uMax, e.u);
-        (e.onB ? merged.chainOfB : merged.chainOfA)[e.index] = append(0.5 * (pa.at(e.t) + pb.at(uMax)));
+        (e.onB ? merged.chainOfB : merged.chainOfA)[e.index] =
+            append(0.5 * (pa.at(e.t) + pb.at(uMax)));
     }
-    merged.chainOfA.back() = merged.chainOfB.back() = append(0.5 * (pa.points.back() + pb.points.back()));
+    merged.chainOfA.back() = merged.chainOfB.back() =
+        append(0.5 * (pa.points.back() + pb.points.back()));
     merged.endOf[a.front()] = merged.endOf[b.front()] = 0;
     merged.endOf[a.back()] = merged.endOf[b.back()] = merged.chainOfA.back();
     return merged;
 }
-
 
 // The triangles of a surface around the ends of a strip, once each end has shrunk to a point,
 // are replaced by a triangulation of the polygon around them (ear clipping in their mean plane,
 // with the chain vertices inserted along the lines): moving the ends alone would fold the long
 // thin triangles boxes often have there.
 template <class Inserted, class ChainVertex, class IsChain>
-bool refillStar(const Surface &in, const std::vector<int> &global, const std::vector<Triangle> &star,
-                const std::vector<int> &local, const Inserted &inserted, const ChainVertex &chainVertex,
-                const IsChain &isChain, Surface &surface, std::vector<Vec3> &before)
+bool refillStar(const Surface &in, const std::vector<int> &global,
+                const std::vector<Triangle> &star, const std::vector<int> &local,
+                const Inserted &inserted, const ChainVertex &chainVertex, const IsChain &isChain,
+                Surface &surface, std::vector<Vec3> &before)
 {
     Vec3 normal = Vec3::Zero();
     std::map<std::pair<int, int>, int> edges; // directed boundary edges (local ids) with counts
     for (const Triangle &t : star) {
-        normal += (in.vertices[t[1]] - in.vertices[t[0]]).cross(in.vertices[t[2]] - in.vertices[t[0]]);
+        normal +=
+            (in.vertices[t[1]] - in.vertices[t[0]]).cross(in.vertices[t[2]] - in.vertices[t[0]]);
         for (int e = 0; e < 3; ++e) {
             std::vector<int> path{local[t[e]]};
             for (int c : inserted(global[t[e]], global[t[(e + 1) % 3]]))
@@ -179,17 +185,23 @@ bool refillStar(const Surface &in, const std::vector<int> &global, const std::ve
     }
     normal.normalize();
     const Vec3 u = normal.unitOrthogonal(), v = normal.cross(u);
-    auto flat = [&](int id) { return Eigen::Vector2d(surface.vertices[id].dot(u), surface.vertices[id].dot(v)); };
-    auto cross2 = [](const Eigen::Vector2d &a, const Eigen::Vector2d &b) { return a.x() * b.y() - a.y() * b.x(); };
+    auto flat = [&](int id) {
+        return Eigen::Vector2d(surface.vertices[id].dot(u), surface.vertices[id].dot(v));
+    };
+    auto cross2 = [](const Eigen::Vector2d &a, const Eigen::Vector2d &b) {
+        return a.x() * b.y() - a.y() * b.x();
+    };
     for (std::vector<int> &loop : loops) {
         while (loop.size() > 3) {
             // The ear with the largest smallest angle: along the merged line the loop has runs
             // of nearly aligned vertices, whose ears are slivers.
             double best = 0.0;
             std::size_t chosen = loop.size();
-            const auto offLine = std::count_if(loop.begin(), loop.end(), [&](int id) { return !isChain(id); });
+            const auto offLine =
+                std::count_if(loop.begin(), loop.end(), [&](int id) { return !isChain(id); });
             for (std::size_t i = 0; i < loop.size(); ++i) {
-                const int p = loop[(i + loop.size() - 1) % loop.size()], c = loop[i], n = loop[(i + 1) % loop.size()];
+                const int p = loop[(i + loop.size() - 1) % loop.size()], c = loop[i],
+                          n = loop[(i + 1) % loop.size()];
                 const Eigen::Vector2d a = flat(p), b = flat(c), d = flat(n);
                 if (!(cross2(b - a, d - b) > 0))
                     continue;
@@ -198,15 +210,18 @@ bool refillStar(const Surface &in, const std::vector<int> &global, const std::ve
                     if (w == p || w == c || w == n)
                         continue;
                     const Eigen::Vector2d x = flat(w);
-                    if (cross2(b - a, x - a) > 0 && cross2(d - b, x - b) > 0 && cross2(a - d, x - d) > 0)
+                    if (cross2(b - a, x - a) > 0 && cross2(d - b, x - b) > 0
+                        && cross2(a - d, x - d) > 0)
                         empty = false;
                 }
                 // An ear with its three corners on the merged line would lie on it, and the
                 // surface across the line may make the same one: a last resort only.
                 // Clipping the last vertex off the line would leave only such ears.
-                const bool onLine = (isChain(p) && isChain(c) && isChain(n)) || (!isChain(c) && offLine == 1);
-                const double quality = triangleMinAngleDeg(surface.vertices[p], surface.vertices[c], surface.vertices[n]) *
-                                       (onLine ? 1e-6 : 1.0);
+                const bool onLine =
+                    (isChain(p) && isChain(c) && isChain(n)) || (!isChain(c) && offLine == 1);
+                const double quality = triangleMinAngleDeg(surface.vertices[p], surface.vertices[c],
+                                                           surface.vertices[n])
+                                       * (onLine ? 1e-6 : 1.0);
                 if (empty && quality > best) {
                     best = quality;
                     chosen = i;
@@ -226,7 +241,6 @@ bool refillStar(const Surface &in, const std::vector<int> &global, const std::ve
     return true;
 }
 
-
 // Input slivers with three corners on a line (a kink of it) are no longer flat once the line has
 // moved, and can cut the surfaces across it: each is dropped and the edge it closed split at its
 // middle corner, as line_fins.h does in the output.
@@ -237,7 +251,8 @@ void unfoldAlongLine(Surface &surface, std::vector<Vec3> &before, const IsChain 
         std::map<std::pair<int, int>, int> directed;
         for (std::size_t k = 0; k < surface.triangles.size(); ++k)
             for (int e = 0; e < 3; ++e)
-                directed[{surface.triangles[k][e], surface.triangles[k][(e + 1) % 3]}] = static_cast<int>(k);
+                directed[{surface.triangles[k][e], surface.triangles[k][(e + 1) % 3]}] =
+                    static_cast<int>(k);
         std::vector<char> dead(surface.triangles.size(), 0);
         std::vector<Triangle> added;
         std::vector<Vec3> addedBefore;
@@ -246,7 +261,9 @@ void unfoldAlongLine(Surface &surface, std::vector<Vec3> &before, const IsChain 
             if (dead[k] || !isChain(t[0]) || !isChain(t[1]) || !isChain(t[2]))
                 continue;
             const std::array<double, 3> angles =
-                triangleShape(surface.vertices[t[0]], surface.vertices[t[1]], surface.vertices[t[2]]).anglesDeg;
+                triangleShape(surface.vertices[t[0]], surface.vertices[t[1]],
+                              surface.vertices[t[2]])
+                    .anglesDeg;
             const auto mid = std::max_element(angles.begin(), angles.end()) - angles.begin();
             const int m = t[mid], p = t[(mid + 1) % 3], q = t[(mid + 2) % 3];
             auto across = directed.find({q, p});
@@ -289,7 +306,8 @@ bool collapseStrip(Model &m, const ThinStrip &strip)
     if (a.size() < 2 || b.size() < 2 || a.front() == a.back() || b.front() == b.back())
         return false;
     for (int s : lineA.surfaces)
-        if (s != strip.surface && std::binary_search(lineB.surfaces.begin(), lineB.surfaces.end(), s))
+        if (s != strip.surface
+            && std::binary_search(lineB.surfaces.begin(), lineB.surfaces.end(), s))
             return false; // the merged line would join that surface to itself
     MergedLines merged = mergeLines(m, a, b);
     for (int l : m.surfaces[strip.surface].lines) {
@@ -372,7 +390,8 @@ bool collapseStrip(Model &m, const ThinStrip &strip)
         auto isChain = [&](int id) { return id < static_cast<int>(onChain.size()) && onChain[id]; };
         std::vector<Vec3> vertexNormals(in.vertices.size(), Vec3::Zero()); // area-weighted
         for (const Triangle &t : in.triangles) {
-            const Vec3 n = (in.vertices[t[1]] - in.vertices[t[0]]).cross(in.vertices[t[2]] - in.vertices[t[0]]);
+            const Vec3 n = (in.vertices[t[1]] - in.vertices[t[0]])
+                               .cross(in.vertices[t[2]] - in.vertices[t[0]]);
             for (int v : t)
                 vertexNormals[v] += n;
         }
@@ -405,7 +424,8 @@ bool collapseStrip(Model &m, const ThinStrip &strip)
                 between = std::move(ins);
             }
             if (split == 3) {
-                if (!refillStar(in, global, {t}, local, inserted, chainVertex, isChain, surface, before))
+                if (!refillStar(in, global, {t}, local, inserted, chainVertex, isChain, surface,
+                                before))
                     return false;
                 continue;
             }
@@ -429,12 +449,15 @@ bool collapseStrip(Model &m, const ThinStrip &strip)
             surface.triangles.push_back({from, lt[(split + 1) % 3], apex});
             before.push_back(normal);
         }
-        if (!star.empty() && !refillStar(in, global, star, local, inserted, chainVertex, isChain, surface, before))
+        if (!star.empty()
+            && !refillStar(in, global, star, local, inserted, chainVertex, isChain, surface,
+                           before))
             return false;
         unfoldAlongLine(surface, before, isChain);
         for (std::size_t k = 0; k < surface.triangles.size(); ++k) {
             const Triangle &t = surface.triangles[k];
-            const Vec3 n = (surface.vertices[t[1]] - surface.vertices[t[0]]).cross(surface.vertices[t[2]] - surface.vertices[t[0]]);
+            const Vec3 n = (surface.vertices[t[1]] - surface.vertices[t[0]])
+                               .cross(surface.vertices[t[2]] - surface.vertices[t[0]]);
             // Slivers along the line (three corners on it) were flat before and stay so.
             const bool alongLine = isChain(t[0]) && isChain(t[1]) && isChain(t[2]);
             if (!alongLine && !before[k].isZero() && !(n.dot(before[k]) > 0.0))
@@ -475,20 +498,22 @@ bool collapseStrip(Model &m, const ThinStrip &strip)
 
 } // namespace
 
-StripCollapse removeThinStrips(const Model &input, double maxWidth, SimplificationLedger &ledger, Progress &progress)
+StripCollapse removeThinStrips(const Model &input, double maxWidth, SimplificationLedger &ledger,
+                               Progress &progress)
 {
     StripCollapse result;
     result.model = input;
     result.surfaceToInput.resize(input.surfaces.size());
     for (std::size_t s = 0; s < input.surfaces.size(); ++s)
         result.surfaceToInput[s] = static_cast<int>(s);
-    std::vector<char> refused(input.surfaces.size(), 0); // by input surface
+    std::vector<char> refused(input.surfaces.size(), 0);        // by input surface
     std::optional<std::map<std::string, std::size_t>> problems; // validity counts of result.model
     for (;;) {
         progress.tick(0.0, "thin strips");
         const std::vector<ThinStrip> strips = findThinStrips(result.model, maxWidth);
-        auto next = std::find_if(strips.begin(), strips.end(),
-                                 [&](const ThinStrip &s) { return !refused[result.surfaceToInput[s.surface]]; });
+        auto next = std::find_if(strips.begin(), strips.end(), [&](const ThinStrip &s) {
+            return !refused[result.surfaceToInput[s.surface]];
+        });
         if (next == strips.end())
             return result;
         const ThinStrip strip = *next;
@@ -516,14 +541,16 @@ StripCollapse removeThinStrips(const Model &input, double maxWidth, Simplificati
         double area = 0.0;
         Vec3 centre = Vec3::Zero();
         for (const Triangle &t : gone.triangles) {
-            const double ta = triangleArea(gone.vertices[t[0]], gone.vertices[t[1]], gone.vertices[t[2]]);
+            const double ta =
+                triangleArea(gone.vertices[t[0]], gone.vertices[t[1]], gone.vertices[t[2]]);
             area += ta;
             centre += ta * (gone.vertices[t[0]] + gone.vertices[t[1]] + gone.vertices[t[2]]) / 3.0;
         }
         if (area > 0.0)
             centre /= area;
-        const std::string what = "strip " + gone.name + " (" + std::to_string(static_cast<int>(strip.width + 0.5)) +
-                                 " m wide, limit " + std::to_string(static_cast<int>(maxWidth + 0.5)) + " m)";
+        const std::string what =
+            "strip " + gone.name + " (" + std::to_string(static_cast<int>(strip.width + 0.5))
+            + " m wide, limit " + std::to_string(static_cast<int>(maxWidth + 0.5)) + " m)";
         LedgerRecord merge;
         merge.kind = LedgerKind::CloseFeatureMerge;
         // The lines are named as in the input: a later strip's lines exist only in the model

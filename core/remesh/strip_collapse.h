@@ -17,9 +17,9 @@
 namespace stratamesh {
 
 struct StripCollapse {
-    Model model;                      // with topology; `input` itself when nothing was removed
-    std::vector<ThinStrip> removed;   // ids refer to the input model
-    std::vector<int> surfaceToInput;  // model surface → input surface
+    Model model;                     // with topology; `input` itself when nothing was removed
+    std::vector<ThinStrip> removed;  // ids refer to the input model
+    std::vector<int> surfaceToInput; // model surface → input surface
 };
 
 // Removes the thin strips of `input` (with topology) narrower than `maxWidth`, one at a time

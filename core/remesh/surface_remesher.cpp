@@ -212,15 +212,17 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     // the model (modelA5 at 4 sites: 12 regions on 9 surfaces).
     const int fewest = std::max(4, static_cast<int>(input.surfaces.size()));
     if (n < fewest || n > kMaxRemeshSites)
-        throw InputError("remesh: " + std::to_string(n) + " sites is outside " + std::to_string(fewest) + ".."
-                         + std::to_string(kMaxRemeshSites) + " for this model of "
-                         + std::to_string(input.surfaces.size()) + " surfaces (edge length at most "
+        throw InputError("remesh: " + std::to_string(n) + " sites is outside "
+                         + std::to_string(fewest) + ".." + std::to_string(kMaxRemeshSites)
+                         + " for this model of " + std::to_string(input.surfaces.size())
+                         + " surfaces (edge length at most "
                          + number(edgeLengthForSites(area, fewest)) + ")");
     const double diagonal = bboxDiagonal(input);
     if (params.dResolution > 0.1 * diagonal)
-        throw InputError("remesh: d_resolution " + number(params.dResolution)
-                         + " would merge features across a tenth of the model (bounding-box diagonal "
-                         + number(diagonal) + "); use at most " + number(0.1 * diagonal));
+        throw InputError(
+            "remesh: d_resolution " + number(params.dResolution)
+            + " would merge features across a tenth of the model (bounding-box diagonal "
+            + number(diagonal) + "); use at most " + number(0.1 * diagonal));
     SimplificationLedger ledger;
     const StripCollapse collapsed =
         stripsRemoved(input, edgeLengthForSites(area, n), params, ledger, progress);
@@ -315,15 +317,16 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         refinementTargets(simplified, result.model, result.ledger, stripRecords, result.validity,
                           params.dResolution, 0.5 * edgeLengthForSites(area, result.siteCount))
             .size());
-    reconcileLedger(input, result.model, result.ledger, 2.0 * edgeLengthForSites(area, result.siteCount),
-                    stripRecords);
+    reconcileLedger(input, result.model, result.ledger,
+                    2.0 * edgeLengthForSites(area, result.siteCount), stripRecords);
     result.energy = optimised.energy;
     result.initialSiteCount = n;
     result.refinementRounds = rounds;
     result.timings.samplingSeconds = sampling;
     result.timings.totalSeconds = secondsSince(start);
     // Whole-strip removal moves lines before the remesh; when refinement cannot make its
-    // result valid, the strips are kept and the run done again (their slivers beat an invalid model).
+    // result valid, the strips are kept and the run done again (their slivers beat an invalid
+    // model).
     if (!result.validity.valid && params.stripWidthFactor > 0.0 && !result.strips.empty()
         && params.refinementRounds > 0) {
         RemeshParams keepStrips = params;

@@ -12,12 +12,12 @@
 #pragma once
 
 #include "common/progress.h"
+#include "model/validity.h"
 #include "remesh/dual_faces.h"
 #include "remesh/duplicate_separation.h"
 #include "remesh/intersection_repair.h"
 #include "remesh/mesh_cleanup.h"
 #include "remesh/simplification_ledger.h"
-#include "model/validity.h"
 #include "remesh/thin_strips.h"
 
 #include <vector>
@@ -27,16 +27,17 @@ namespace stratamesh {
 struct RemeshParams {
     int sites = 0;           // number of sites; when 0, derived from edgeLength
     double edgeLength = 0.0; // target edge length: sites = area / (√3/2 · L²), a hexagonal packing
-    double dResolution = 0.0; // Alg 4.2 step 4; 0 disables the merge of close features
+    double dResolution = 0.0;         // Alg 4.2 step 4; 0 disables the merge of close features
     bool mergeAllExtraPoints = false; // Alg 4.2 step 3 as in the thesis (see output_points.h)
     // Strips narrower than this fraction of the resolution edge length are removed whole before
     // remeshing (strip_collapse.h); 0 keeps them. A strip of width w holds one row of triangles of
     // base e with base angles atan(2w/e): 39° at 0.4, so narrower strips would only give slivers.
     double stripWidthFactor = 0.4;
-    int iterations = 100;    // CVT iterations (thesis: 100)
+    int iterations = 100;        // CVT iterations (thesis: 100)
     double boundaryWeight = 0.2; // α of F = (1 − α) F_CVT + α F_B (thesis §4.3.2)
-    unsigned seed = 1;       // initial random sampling
-    bool adaptive = false;   // density ρ = (1 − d/d_max)^exponent from the distance d to corners (Fig 4.19)
+    unsigned seed = 1;           // initial random sampling
+    bool adaptive =
+        false; // density ρ = (1 − d/d_max)^exponent from the distance d to corners (Fig 4.19)
     double adaptiveExponent = 4.0;
     double adaptiveFloor = 0.05; // smallest density, so that far surfaces still get sites
     CleanupParams cleanup;
@@ -49,7 +50,8 @@ struct RemeshParams {
     int refinementRounds = 4;
     double refinementDensityFactor = 2.0; // density raised this much around each place, per round
     int refinementIterations = 20;        // CVT iterations after sites are added
-    double refinementMaxGrowth = 1.0;     // topology places get at most this fraction of the asked sites
+    double refinementMaxGrowth =
+        1.0; // topology places get at most this fraction of the asked sites
     // A round that only saves topology is kept when its share of triangles below 30° grows by at
     // most this many percentage points over the unrefined remesh (features far below the
     // resolution cannot be kept without needles).
@@ -63,24 +65,25 @@ struct RemeshTimings {
 };
 
 struct RemeshResult {
-    Model model;                  // new model, with topology
+    Model model;                   // new model, with topology
     std::vector<ThinStrip> strips; // input strips removed whole
     SimplificationLedger ledger;
-    std::vector<double> energy;   // optimisation energy per iteration
-    std::vector<Vec3> sites;      // optimised sites
+    std::vector<double> energy; // optimisation energy per iteration
+    std::vector<Vec3> sites;    // optimised sites
     int siteCount = 0;
     RemeshTimings timings;
     DualFaceCounts faces;
     CleanupCounts cleanup;
     DuplicateSeparation duplicates;
     IntersectionRepairResult intersections;
-    ValidityReport validity;      // of `model`; the front ends refuse to write an invalid one
-    int initialSiteCount = 0;     // the sites asked for; siteCount is the final number
-    int refinementRounds = 0;     // rounds that added sites
-    int remainingTargets = 0;     // places still wrong after the last round (0 when converged)
+    ValidityReport validity;  // of `model`; the front ends refuse to write an invalid one
+    int initialSiteCount = 0; // the sites asked for; siteCount is the final number
+    int refinementRounds = 0; // rounds that added sites
+    int remainingTargets = 0; // places still wrong after the last round (0 when converged)
 };
 
-// Topology edits of a result per kind (surface, surface part, line and corner lost/created records).
+// Topology edits of a result per kind (surface, surface part, line and corner lost/created
+// records).
 struct TopologyEdits {
     int surfacesLost = 0, surfacesCreated = 0;
     int linesLost = 0, linesCreated = 0;
@@ -88,8 +91,8 @@ struct TopologyEdits {
     int surfacePartsLost = 0, surfacePartsCreated = 0;
     int total() const
     {
-        return surfacesLost + surfacesCreated + linesLost + linesCreated + cornersLost + cornersCreated
-               + surfacePartsLost + surfacePartsCreated;
+        return surfacesLost + surfacesCreated + linesLost + linesCreated + cornersLost
+               + cornersCreated + surfacePartsLost + surfacePartsCreated;
     }
 };
 TopologyEdits countTopologyEdits(const SimplificationLedger &ledger);
@@ -104,10 +107,11 @@ int sitesForEdgeLength(double area, double edgeLength);
 double edgeLengthForSites(double area, int sites);
 
 // Throws InputError on bad parameters or an empty model, Cancelled when cancelled.
-RemeshResult remeshModel(const Model &input, const RemeshParams &params, Progress &progress = Progress::none());
+RemeshResult remeshModel(const Model &input, const RemeshParams &params,
+                         Progress &progress = Progress::none());
 
 // The mesh-building half alone, from given sites (tests and benchmarks): `input` with topology.
-RemeshResult remeshWithSites(const Model &input, const std::vector<Vec3> &sites, const RemeshParams &params,
-                             Progress &progress = Progress::none());
+RemeshResult remeshWithSites(const Model &input, const std::vector<Vec3> &sites,
+                             const RemeshParams &params, Progress &progress = Progress::none());
 
 } // namespace stratamesh

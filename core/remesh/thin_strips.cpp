@@ -65,7 +65,8 @@ std::vector<ThinStrip> findThinStrips(const Model &model, double maxWidth)
         const Surface &surface = model.surfaces[s];
         if (isBoxSurface(surface) || surface.lines.size() < 2)
             continue;
-        if (std::any_of(surface.lines.begin(), surface.lines.end(), [&](int l) { return model.lines[l].closed; }))
+        if (std::any_of(surface.lines.begin(), surface.lines.end(),
+                        [&](int l) { return model.lines[l].closed; }))
             continue;
         const std::vector<std::pair<double, int>> byLength = boundaryLinesByLength(model, s);
         const double shorterLong = byLength[1].first;
@@ -73,7 +74,8 @@ std::vector<ThinStrip> findThinStrips(const Model &model, double maxWidth)
             continue;
         bool endsShort = true;
         for (std::size_t k = 2; k < byLength.size(); ++k)
-            endsShort = endsShort && byLength[k].first <= std::min(2.0 * maxWidth, 0.25 * shorterLong);
+            endsShort =
+                endsShort && byLength[k].first <= std::min(2.0 * maxWidth, 0.25 * shorterLong);
         if (!endsShort)
             continue;
         const std::vector<Vec3> a = polyline(model, model.lines[byLength[0].second]);

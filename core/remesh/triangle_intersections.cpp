@@ -17,7 +17,10 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using P3 = K::Point_3;
 using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
 
-P3 toCgal(const Vec3 &v) { return P3(v.x(), v.y(), v.z()); }
+P3 toCgal(const Vec3 &v)
+{
+    return P3(v.x(), v.y(), v.z());
+}
 
 bool isDegenerate(const std::vector<Vec3> &pts, const Triangle &t)
 {
@@ -59,7 +62,8 @@ bool trianglesIntersect(const std::vector<Vec3> &pts, const Triangle &a, const T
     int j = 0;
     while (j == sharedA[0] || j == sharedA[1] || j == sharedA[2])
         ++j;
-    return sharedEdgeTrianglesOverlap(pts[a[(i + 1) % 3]], pts[a[(i + 2) % 3]], pts[a[i]], pts[b[j]]);
+    return sharedEdgeTrianglesOverlap(pts[a[(i + 1) % 3]], pts[a[(i + 2) % 3]], pts[a[i]],
+                                      pts[b[j]]);
 }
 
 std::vector<std::pair<int, int>> findIntersectingTriangles(const std::vector<Vec3> &pts,
@@ -74,8 +78,8 @@ std::vector<std::pair<int, int>> findIntersectingTriangles(const std::vector<Vec
                 degenerate->push_back(t);
             continue;
         }
-        const auto bb = toCgal(pts[tris[t][0]]).bbox() + toCgal(pts[tris[t][1]]).bbox() +
-                        toCgal(pts[tris[t][2]]).bbox();
+        const auto bb = toCgal(pts[tris[t][0]]).bbox() + toCgal(pts[tris[t][1]]).bbox()
+                        + toCgal(pts[tris[t][2]]).bbox();
         boxes.emplace_back(bb, t);
     }
     std::vector<std::pair<int, int>> candidates;
@@ -89,7 +93,8 @@ std::vector<std::pair<int, int>> findIntersectingTriangles(const std::vector<Vec
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 1024),
                       [&](const tbb::blocked_range<std::size_t> &r) {
                           for (std::size_t c = r.begin(); c < r.end(); ++c)
-                              meets[c] = trianglesIntersect(pts, tris[candidates[c].first], tris[candidates[c].second]);
+                              meets[c] = trianglesIntersect(pts, tris[candidates[c].first],
+                                                            tris[candidates[c].second]);
                       });
     std::vector<std::pair<int, int>> result;
     for (std::size_t c = 0; c < candidates.size(); ++c)

@@ -12,7 +12,10 @@ namespace {
 
 constexpr double kUnit = 0x1p-53;
 
-Vec3 absolute(const Vec3 &v) { return v.cwiseAbs(); }
+Vec3 absolute(const Vec3 &v)
+{
+    return v.cwiseAbs();
+}
 
 // Power difference |q − pb|² − |q − pa|² and the magnitude bounding its rounding error.
 inline double powerDifference(const Vec3 &q, const Vec3 &pa, const Vec3 &pb, double &magnitude)
@@ -24,8 +27,8 @@ inline double powerDifference(const Vec3 &q, const Vec3 &pa, const Vec3 &pb, dou
 
 } // namespace
 
-ComputedPoint edgeVertexPoint(const std::vector<Vec3> &points, const std::vector<Vec3> &sites, int a, int b,
-                              int s0, int s1)
+ComputedPoint edgeVertexPoint(const std::vector<Vec3> &points, const std::vector<Vec3> &sites,
+                              int a, int b, int s0, int s1)
 {
     if (a > b)
         std::swap(a, b);
@@ -53,8 +56,9 @@ ComputedPoint edgeVertexPoint(const std::vector<Vec3> &points, const std::vector
     return r;
 }
 
-ComputedPoint faceVertexPoint(const Vec3 &q0, const Vec3 &q1, const Vec3 &q2, const std::vector<Vec3> &sites,
-                              int s0, int s1, int s2, double &u, double &v)
+ComputedPoint faceVertexPoint(const Vec3 &q0, const Vec3 &q1, const Vec3 &q2,
+                              const std::vector<Vec3> &sites, int s0, int s1, int s2, double &u,
+                              double &v)
 {
     int s[3] = {s0, s1, s2};
     std::sort(s, s + 3);
@@ -74,11 +78,11 @@ ComputedPoint faceVertexPoint(const Vec3 &q0, const Vec3 &q1, const Vec3 &q2, co
         eC[m] = 2 * 5.2 * kUnit * sn.dot(absolute(q2) + absolute(q0));
     }
     // Products x·y − z·w with first-order error propagation.
-    const auto cross2 = [](double x, double ex, double y, double ey, double z, double ez, double w, double ew,
-                           double &err) {
+    const auto cross2 = [](double x, double ex, double y, double ey, double z, double ez, double w,
+                           double ew, double &err) {
         const double r = x * y - z * w;
-        err = std::fabs(x) * ey + ex * std::fabs(y) + ex * ey + std::fabs(z) * ew + ez * std::fabs(w) + ez * ew +
-              3 * kUnit * (std::fabs(x * y) + std::fabs(z * w));
+        err = std::fabs(x) * ey + ex * std::fabs(y) + ex * ey + std::fabs(z) * ew
+              + ez * std::fabs(w) + ez * ew + 3 * kUnit * (std::fabs(x * y) + std::fabs(z * w));
         return r;
     };
     double eD = 0, eNu = 0, eNv = 0;
@@ -92,8 +96,10 @@ ComputedPoint faceVertexPoint(const Vec3 &q0, const Vec3 &q1, const Vec3 &q2, co
     if (std::fabs(D) > 2 * eD) {
         u = Nu / D;
         v = Nv / D;
-        const double du = (eNu + std::fabs(u) * eD) / (std::fabs(D) - eD) + 2 * kUnit * std::fabs(u);
-        const double dv = (eNv + std::fabs(v) * eD) / (std::fabs(D) - eD) + 2 * kUnit * std::fabs(v);
+        const double du =
+            (eNu + std::fabs(u) * eD) / (std::fabs(D) - eD) + 2 * kUnit * std::fabs(u);
+        const double dv =
+            (eNv + std::fabs(v) * eD) / (std::fabs(D) - eD) + 2 * kUnit * std::fabs(v);
         error = 1.01 * (e1.norm() * du + e2.norm() * dv);
     } else {
         u = v = 1.0 / 3.0;
@@ -126,9 +132,10 @@ namespace {
 // The input triangle in the site's frame; r2 and largestError receive the largest |x'|² and
 // the largest position error over its corners. Inlined in clipTriangle (once per triangle–site
 // pair, its call and a second pass over the corners cost as much as the corners themselves).
-inline __attribute__((always_inline)) void siteFrameTriangle(const Triangle &tri, const std::vector<Vec3> &points,
-                                                             const Vec3 &pi, ClipPolygon &polygon, double &r2,
-                                                             double &largestError)
+inline __attribute__((always_inline)) void siteFrameTriangle(const Triangle &tri,
+                                                             const std::vector<Vec3> &points,
+                                                             const Vec3 &pi, ClipPolygon &polygon,
+                                                             double &r2, double &largestError)
 {
     polygon.resize(3);
     ClipVertex *const v = polygon.data();
@@ -136,7 +143,9 @@ inline __attribute__((always_inline)) void siteFrameTriangle(const Triangle &tri
     largestError = 0;
     for (int c = 0; c < 3; ++c) {
         v[c].position = points[tri[c]] - pi;
-        v[c].error = 2 * kUnit * v[c].position.lpNorm<1>(); // one rounded subtraction per coordinate (|·|₂ ≤ |·|₁)
+        v[c].error =
+            2 * kUnit
+            * v[c].position.lpNorm<1>(); // one rounded subtraction per coordinate (|·|₂ ≤ |·|₁)
         v[c].u = c == 1 ? 1.0 : 0.0;
         v[c].v = c == 2 ? 1.0 : 0.0;
         v[c].out = inputEdgeSupport(c);
@@ -151,7 +160,8 @@ inline __attribute__((always_inline)) void siteFrameTriangle(const Triangle &tri
 void CellClipper::wholeTriangle(int t, int site, ClipPolygon &polygon) const
 {
     double r2 = 0, largestError = 0;
-    siteFrameTriangle(m_domain.triangles[t], m_domain.points, m_delaunay.site(site), polygon, r2, largestError);
+    siteFrameTriangle(m_domain.triangles[t], m_domain.points, m_delaunay.site(site), polygon, r2,
+                      largestError);
 }
 
 ClipVertex CellClipper::symbolicCut(int t, int site, int support, int l) const
@@ -171,7 +181,8 @@ ClipVertex CellClipper::symbolicCut(int t, int site, int support, int l) const
         x.u = lambda[1];
         x.v = lambda[2];
     } else {
-        p = faceVertexPoint(pts[tri[0]], pts[tri[1]], pts[tri[2]], m_delaunay.sites(), site, support, l, x.u, x.v);
+        p = faceVertexPoint(pts[tri[0]], pts[tri[1]], pts[tri[2]], m_delaunay.sites(), site,
+                            support, l, x.u, x.v);
     }
     x.position = p.position - pi;
     x.error = p.error + 2 * kUnit * x.position.lpNorm<1>();
@@ -193,7 +204,8 @@ int CellClipper::exactSide(int t, int site, const ClipPolygon &polygon, int k, i
         const int j = in < 0 ? out : in;
         return sideOfEdgeVertex(pts[tri[e]], pts[tri[(e + 1) % 3]], pi, site, sites[j], j, pl, l);
     }
-    return sideOfFaceVertex(pts[tri[0]], pts[tri[1]], pts[tri[2]], pi, site, sites[in], in, sites[out], out, pl, l);
+    return sideOfFaceVertex(pts[tri[0]], pts[tri[1]], pts[tri[2]], pi, site, sites[in], in,
+                            sites[out], out, pl, l);
 }
 
 void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
@@ -215,7 +227,8 @@ void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
     int valueCapacity = static_cast<int>(m_values.size());
     // Clips by bisector(site, l); false once the polygon is empty. Inlined in both loops below
     // (called for every bisector test, its call overhead was a tenth of its cost).
-    const auto clip = [&](int l, double dn) __attribute__((always_inline)) {
+    const auto clip = [&](int l, double dn) __attribute__((always_inline))
+    {
         // In the site's frame, π_l − π_i = 2·(h − d·x') with d = p_l − p_i, h = |d|²/2 and
         // dn = |d| rounded. The bound covers the rounding of d, h and the dot product, and the
         // error of x'.
@@ -244,7 +257,8 @@ void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
             polygon.clear();
             return false;
         }
-        // The clipped polygon is built in m_next, measured on the way (same maxima as siteFrameTriangle).
+        // The clipped polygon is built in m_next, measured on the way (same maxima as
+        // siteFrameTriangle).
         m_next.clear();
         m_next.reserve(n + 1); // a convex polygon cut by a plane gains at most one vertex
         double r2 = 0, worst = 0;
@@ -271,8 +285,8 @@ void CellClipper::clipTriangle(int t, int site, ClipPolygon &polygon)
                 x.position = a.position + tau * (b.position - a.position);
                 x.u = a.u + tau * (b.u - a.u);
                 x.v = a.v + tau * (b.v - a.v);
-                x.error = std::max(a.error, b.error) * (1 + 2 * tauError) + length * tauError +
-                          4 * kUnit * (a.position.lpNorm<1>() + length);
+                x.error = std::max(a.error, b.error) * (1 + 2 * tauError) + length * tauError
+                          + 4 * kUnit * (a.position.lpNorm<1>() + length);
             } else {
                 x = symbolicCut(t, site, a.out, l);
             }
@@ -331,8 +345,10 @@ void CellClipper::clipSegment(int s, int site, SegmentEnd &first, SegmentEnd &se
     const int *nb = m_delaunay.neighboursBegin(site);
     const double *dist = m_delaunay.neighbourDistances(site);
     const int count = m_delaunay.neighbourCount(site);
-    double limit = 2.0 * std::max((first.position - pi).norm() + first.error,
-                                  (second.position - pi).norm() + second.error) * (1.0 + 1e-12);
+    double limit = 2.0
+                   * std::max((first.position - pi).norm() + first.error,
+                              (second.position - pi).norm() + second.error)
+                   * (1.0 + 1e-12);
     const auto clip = [&](int l) {
         const int a = side(first, l), b = side(second, l);
         if (a < 0)
@@ -340,8 +356,10 @@ void CellClipper::clipSegment(int s, int site, SegmentEnd &first, SegmentEnd &se
         if (b > 0)
             return;
         second = cut(l);
-        limit = 2.0 * std::max((first.position - pi).norm() + first.error,
-                               (second.position - pi).norm() + second.error) * (1.0 + 1e-12);
+        limit = 2.0
+                * std::max((first.position - pi).norm() + first.error,
+                           (second.position - pi).norm() + second.error)
+                * (1.0 + 1e-12);
     };
     int q = 0;
     for (; q < count && dist[q] <= limit; ++q)
@@ -369,8 +387,8 @@ const std::vector<std::pair<double, int>> &CellClipper::sitesBeyondList(int site
 
 void CellClipper::throwInconsistent(int segment) const
 {
-    throw std::logic_error("restricted Voronoi diagram: inconsistent cells along line segment " +
-                           std::to_string(segment));
+    throw std::logic_error("restricted Voronoi diagram: inconsistent cells along line segment "
+                           + std::to_string(segment));
 }
 
 } // namespace stratamesh::rvd

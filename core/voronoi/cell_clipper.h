@@ -4,9 +4,9 @@
 // triangle–site pairs and the security radius).
 //
 // The triangle is clipped by the bisectors of the site's neighbours (voronoi_neighbours.h) in
-// order of distance, stopping when the next neighbour is farther than twice the farthest polygon vertex
-// (no bisector beyond can cut it). Work is done in the site's frame (positions relative to the
-// site) where a side test is one dot product; each computed position carries a proven bound on
+// order of distance, stopping when the next neighbour is farther than twice the farthest polygon
+// vertex (no bisector beyond can cut it). Work is done in the site's frame (positions relative to
+// the site) where a side test is one dot product; each computed position carries a proven bound on
 // its distance to the exact symbolic point, and whenever that bound leaves the side in doubt,
 // rvd_predicates.h decides exactly on the vertex's symbol. Decisions are therefore those of the
 // exact (perturbed) diagram; positions are only approximate, and the symbolic diagram
@@ -29,15 +29,21 @@ namespace stratamesh::rvd {
 
 // Support of a polygon edge: a site index ≥ 0 (the bisector with that neighbour) or −1 − e
 // for edge e of the input triangle (from corner e to corner (e + 1) % 3).
-inline int inputEdgeSupport(int e) { return -1 - e; }
-inline int inputEdgeOf(int support) { return -1 - support; }
+inline int inputEdgeSupport(int e)
+{
+    return -1 - e;
+}
+inline int inputEdgeOf(int support)
+{
+    return -1 - support;
+}
 
 struct ClipVertex {
-    Vec3 position;      // relative to the cell's site
-    double error = 0;   // proven bound on |position − exact point|
+    Vec3 position;       // relative to the cell's site
+    double error = 0;    // proven bound on |position − exact point|
     double u = 0, v = 0; // barycentric weights of corners 1 and 2 of the input triangle
-    int out = 0;        // support of the edge from this vertex to the next one
-    double norm2 = 0;   // |position|², kept for the security radius (set by the clipper)
+    int out = 0;         // support of the edge from this vertex to the next one
+    double norm2 = 0;    // |position|², kept for the security radius (set by the clipper)
 };
 
 // A clipped polygon: storage that only grows, so that the clipping loops write vertices after
@@ -83,8 +89,8 @@ private:
 struct SegmentEnd {
     Vec3 position;
     double error = 0;
-    double t = 0;       // parameter along the segment, 0 at its first point, 1 at its second
-    int site = -1;      // other site of the bisector, −1 for an endpoint of the segment
+    double t = 0;  // parameter along the segment, 0 at its first point, 1 at its second
+    int site = -1; // other site of the bisector, −1 for an endpoint of the segment
 };
 
 // Exact position data of an RVD vertex computed from its symbol in a canonical order, so that
@@ -94,11 +100,12 @@ struct ComputedPoint {
     double error = 0;
     double t = 0; // edge vertex: parameter from the lower to the higher point index
 };
-ComputedPoint edgeVertexPoint(const std::vector<Vec3> &points, const std::vector<Vec3> &sites, int a,
-                              int b, int s0, int s1);
+ComputedPoint edgeVertexPoint(const std::vector<Vec3> &points, const std::vector<Vec3> &sites,
+                              int a, int b, int s0, int s1);
 // Face vertex on triangle (q0, q1, q2) with sites {s0, s1, s2}; u, v barycentric of q1, q2.
-ComputedPoint faceVertexPoint(const Vec3 &q0, const Vec3 &q1, const Vec3 &q2, const std::vector<Vec3> &sites,
-                              int s0, int s1, int s2, double &u, double &v);
+ComputedPoint faceVertexPoint(const Vec3 &q0, const Vec3 &q1, const Vec3 &q2,
+                              const std::vector<Vec3> &sites, int s0, int s1, int s2, double &u,
+                              double &v);
 
 // One per thread: holds scratch buffers.
 class CellClipper {
@@ -110,7 +117,8 @@ public:
 
     // Calls emit(site, polygon) for every cell meeting triangle t, each once, in a
     // deterministic order. owners are the exact owners of the triangle's three points.
-    template <class Emit> void forEachTrianglePart(int t, const int owners[3], Emit &&emit)
+    template <class Emit>
+    void forEachTrianglePart(int t, const int owners[3], Emit &&emit)
     {
         if (owners[0] == owners[1] && owners[1] == owners[2]) {
             wholeTriangle(t, owners[0], m_polygon);
@@ -140,7 +148,8 @@ public:
 
     // Calls emit(site, first, second) for the pieces of segment s in line order (from its
     // first point to its second). owners are the exact owners of its two points.
-    template <class Emit> void forEachSegmentPart(int s, const int owners[2], Emit &&emit)
+    template <class Emit>
+    void forEachSegmentPart(int s, const int owners[2], Emit &&emit)
     {
         const auto &seg = m_domain.segments[s];
         SegmentEnd first{m_domain.points[seg[0]], 0, 0, -1};

@@ -19,7 +19,10 @@ constexpr int kSegmentChunk = 256;
 using detail::LineRecord;
 using detail::SurfaceRecord;
 
-int chunkCount(std::size_t n, int chunk) { return static_cast<int>((n + chunk - 1) / chunk); }
+int chunkCount(std::size_t n, int chunk)
+{
+    return static_cast<int>((n + chunk - 1) / chunk);
+}
 
 // Folds the records of each chunk into the per-site sums in chunk order while later chunks are
 // still being clipped (a serial fold after the loop left one thread idle): the thread that
@@ -28,7 +31,8 @@ int chunkCount(std::size_t n, int chunk) { return static_cast<int>((n + chunk - 
 class OrderedFold {
 public:
     explicit OrderedFold(int chunks) : m_done(chunks, 0) {}
-    template <class Fold> void finished(int chunk, Fold &&fold)
+    template <class Fold>
+    void finished(int chunk, Fold &&fold)
     {
         const std::lock_guard<std::mutex> lock(m_mutex);
         m_done[chunk] = 1;
@@ -45,15 +49,16 @@ private:
 // F_B of one piece C1C2 of cell p (thesis Fig 4.2) and its gradient. A piece end lying on
 // bisector(p, o) moves along its segment (direction d) when p or o moves:
 // dC = d·[(p_o − C)·dp_o + (C − p)·dp] / ((p_o − p)·d).
-void boundaryPiece(const std::vector<Vec3> &sites, int p, const rvd::SegmentEnd &c1, const rvd::SegmentEnd &c2,
-                   const Vec3 &d, std::vector<LineRecord> &out)
+void boundaryPiece(const std::vector<Vec3> &sites, int p, const rvd::SegmentEnd &c1,
+                   const rvd::SegmentEnd &c2, const Vec3 &d, std::vector<LineRecord> &out)
 {
     const Vec3 &sp = sites[p];
     const Vec3 a = c1.position - sp, b = c2.position - sp;
     const Vec3 n = a.cross(b);
-    LineRecord self{p, (c2.position - c1.position).norm(), 0.5 * n.squaredNorm(), n.cross(c2.position - c1.position)};
-    const Vec3 g1 = b.cross(n);  // ∂F/∂C1
-    const Vec3 g2 = n.cross(a);  // ∂F/∂C2
+    LineRecord self{p, (c2.position - c1.position).norm(), 0.5 * n.squaredNorm(),
+                    n.cross(c2.position - c1.position)};
+    const Vec3 g1 = b.cross(n); // ∂F/∂C1
+    const Vec3 g2 = n.cross(a); // ∂F/∂C2
     const rvd::SegmentEnd *ends[2] = {&c1, &c2};
     const Vec3 *grads[2] = {&g1, &g2};
     for (int e = 0; e < 2; ++e) {
@@ -85,21 +90,25 @@ void computePointOwners(const RestrictionDomain &domain, const VoronoiNeighbours
                         CellIntegralsWorkspace &workspace)
 {
     const int np = static_cast<int>(domain.points.size());
-    const bool hints = workspace.siteCount == delaunay.siteCount() &&
-                       static_cast<int>(workspace.pointOwners.size()) == np;
+    const bool hints = workspace.siteCount == delaunay.siteCount()
+                       && static_cast<int>(workspace.pointOwners.size()) == np;
     if (!hints)
         workspace.pointOwners.assign(np, -1);
     workspace.siteCount = delaunay.siteCount();
-    tbb::parallel_for(tbb::blocked_range<int>(0, chunkCount(np, kPointChunk), 1), [&](const tbb::blocked_range<int> &r) {
-        for (int c = r.begin(); c < r.end(); ++c) {
-            int previous = -1;
-            const int end = std::min(np, (c + 1) * kPointChunk);
-            for (int p = c * kPointChunk; p < end; ++p) {
-                const int hint = workspace.pointOwners[p] >= 0 ? workspace.pointOwners[p] : previous;
-                previous = workspace.pointOwners[p] = delaunay.owner(domain.points[p], hint);
-            }
-        }
-    });
+    tbb::parallel_for(tbb::blocked_range<int>(0, chunkCount(np, kPointChunk), 1),
+                      [&](const tbb::blocked_range<int> &r) {
+                          for (int c = r.begin(); c < r.end(); ++c) {
+                              int previous = -1;
+                              const int end = std::min(np, (c + 1) * kPointChunk);
+                              for (int p = c * kPointChunk; p < end; ++p) {
+                                  const int hint = workspace.pointOwners[p] >= 0
+                                                       ? workspace.pointOwners[p]
+                                                       : previous;
+                                  previous = workspace.pointOwners[p] =
+                                      delaunay.owner(domain.points[p], hint);
+                              }
+                          }
+                      });
 }
 
 CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeighbours &delaunay,
@@ -125,7 +134,8 @@ CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeigh
     OrderedFold surfaceFold(static_cast<int>(surfaceRecords.size()));
     // One clipper per thread for the whole loop (not per task): its marks and its answers about
     // sites beyond the lists stay warm from one task to the next.
-    tbb::enumerable_thread_specific<rvd::CellClipper> clippers([&] { return rvd::CellClipper(domain, delaunay); });
+    tbb::enumerable_thread_specific<rvd::CellClipper> clippers(
+        [&] { return rvd::CellClipper(domain, delaunay); });
     const auto foldSurface = [&](int c) {
         for (const SurfaceRecord &rec : surfaceRecords[c]) {
             result.area[rec.site] += rec.area;
@@ -134,64 +144,68 @@ CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeigh
             result.moment[rec.site] += rec.moment;
         }
     };
-    tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(surfaceRecords.size()), 1),
-                      [&](const tbb::blocked_range<int> &r) {
-        rvd::CellClipper &clipper = clippers.local();
-        for (int c = r.begin(); c < r.end(); ++c) {
-            std::vector<SurfaceRecord> &out = surfaceRecords[c];
-            out.clear();
-            const int end = std::min(nt, (c + 1) * kTriangleChunk);
-            for (int t = c * kTriangleChunk; t < end; ++t) {
-                const Triangle &tri = domain.triangles[t];
-                if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
-                    continue; // no area, and its edges are not edges
-                const int own[3] = {owners[tri[0]], owners[tri[1]], owners[tri[2]]};
-                double rho[3];
-                if (!domain.density.empty())
-                    for (int k = 0; k < 3; ++k)
-                        rho[k] = domain.density[tri[k]];
-                clipper.forEachTrianglePart(t, own, [&](int site, const rvd::ClipPolygon &polygon) {
-                    const rvd::PolygonIntegrals in =
-                        rvd::integratePolygon(polygon, domain.density.empty() ? nullptr : rho);
-                    if (!out.empty() && out.back().site == site) {
-                        SurfaceRecord &b = out.back();
-                        b.area += in.area;
-                        b.mass += in.mass;
-                        b.energy += in.energy;
-                        b.moment += in.massMoment;
-                    } else {
-                        out.push_back({site, in.area, in.mass, in.energy, in.massMoment});
-                    }
-                });
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, static_cast<int>(surfaceRecords.size()), 1),
+        [&](const tbb::blocked_range<int> &r) {
+            rvd::CellClipper &clipper = clippers.local();
+            for (int c = r.begin(); c < r.end(); ++c) {
+                std::vector<SurfaceRecord> &out = surfaceRecords[c];
+                out.clear();
+                const int end = std::min(nt, (c + 1) * kTriangleChunk);
+                for (int t = c * kTriangleChunk; t < end; ++t) {
+                    const Triangle &tri = domain.triangles[t];
+                    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
+                        continue; // no area, and its edges are not edges
+                    const int own[3] = {owners[tri[0]], owners[tri[1]], owners[tri[2]]};
+                    double rho[3];
+                    if (!domain.density.empty())
+                        for (int k = 0; k < 3; ++k)
+                            rho[k] = domain.density[tri[k]];
+                    clipper.forEachTrianglePart(
+                        t, own, [&](int site, const rvd::ClipPolygon &polygon) {
+                            const rvd::PolygonIntegrals in = rvd::integratePolygon(
+                                polygon, domain.density.empty() ? nullptr : rho);
+                            if (!out.empty() && out.back().site == site) {
+                                SurfaceRecord &b = out.back();
+                                b.area += in.area;
+                                b.mass += in.mass;
+                                b.energy += in.energy;
+                                b.moment += in.massMoment;
+                            } else {
+                                out.push_back({site, in.area, in.mass, in.energy, in.massMoment});
+                            }
+                        });
+                }
+                surfaceFold.finished(c, foldSurface);
             }
-            surfaceFold.finished(c, foldSurface);
-        }
-    });
+        });
 
     if (!options.boundary)
         return result;
     const int nseg = static_cast<int>(domain.segments.size());
     std::vector<std::vector<LineRecord>> &lineRecords = workspace.lineRecords;
     lineRecords.resize(chunkCount(nseg, kSegmentChunk));
-    tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(lineRecords.size()), 1),
-                      [&](const tbb::blocked_range<int> &r) {
-        rvd::CellClipper clipper(domain, delaunay);
-        for (int c = r.begin(); c < r.end(); ++c) {
-            std::vector<LineRecord> &out = lineRecords[c];
-            out.clear();
-            const int end = std::min(nseg, (c + 1) * kSegmentChunk);
-            for (int s = c * kSegmentChunk; s < end; ++s) {
-                const auto &seg = domain.segments[s];
-                if (seg[0] == seg[1])
-                    continue;
-                const Vec3 d = domain.points[seg[1]] - domain.points[seg[0]];
-                const int own[2] = {owners[seg[0]], owners[seg[1]]};
-                clipper.forEachSegmentPart(s, own, [&](int site, const rvd::SegmentEnd &a, const rvd::SegmentEnd &b) {
-                    boundaryPiece(sites, site, a, b, d, out);
-                });
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, static_cast<int>(lineRecords.size()), 1),
+        [&](const tbb::blocked_range<int> &r) {
+            rvd::CellClipper clipper(domain, delaunay);
+            for (int c = r.begin(); c < r.end(); ++c) {
+                std::vector<LineRecord> &out = lineRecords[c];
+                out.clear();
+                const int end = std::min(nseg, (c + 1) * kSegmentChunk);
+                for (int s = c * kSegmentChunk; s < end; ++s) {
+                    const auto &seg = domain.segments[s];
+                    if (seg[0] == seg[1])
+                        continue;
+                    const Vec3 d = domain.points[seg[1]] - domain.points[seg[0]];
+                    const int own[2] = {owners[seg[0]], owners[seg[1]]};
+                    clipper.forEachSegmentPart(
+                        s, own, [&](int site, const rvd::SegmentEnd &a, const rvd::SegmentEnd &b) {
+                            boundaryPiece(sites, site, a, b, d, out);
+                        });
+                }
             }
-        }
-    });
+        });
     for (const auto &records : lineRecords)
         for (const LineRecord &rec : records) {
             result.length[rec.site] += rec.length;

@@ -14,10 +14,10 @@ namespace stratamesh {
 
 struct CellIntegrals {
     // Surfaces, per site i over V_i ∩ Ω.
-    std::vector<double> mass;    // ∫ ρ
-    std::vector<Vec3> moment;    // ∫ ρ (y − s_i); the CVT gradient is −2·moment = 2 m_i (s_i − g_i)
-    std::vector<double> energy;  // ∫ ρ |y − s_i|²
-    std::vector<double> area;    // ∫ 1
+    std::vector<double> mass; // ∫ ρ
+    std::vector<Vec3> moment; // ∫ ρ (y − s_i); the CVT gradient is −2·moment = 2 m_i (s_i − g_i)
+    std::vector<double> energy; // ∫ ρ |y − s_i|²
+    std::vector<double> area;   // ∫ 1
     // Lines, per site over V_i ∩ B.
     std::vector<double> length;
     // Boundary energy F_B = Σ over restricted line pieces C1C2 of cell p of ½‖(C1 − p) × (C2 − p)‖²
@@ -61,7 +61,8 @@ struct CellIntegralsOptions {
 };
 
 CellIntegrals integrateCells(const RestrictionDomain &domain, const VoronoiNeighbours &delaunay,
-                             const CellIntegralsOptions &options, CellIntegralsWorkspace &workspace);
+                             const CellIntegralsOptions &options,
+                             CellIntegralsWorkspace &workspace);
 
 // Exact owner site of every domain point used by a triangle, segment or corner (−1 for
 // unused points), walking from the hints in the workspace.

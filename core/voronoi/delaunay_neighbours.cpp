@@ -20,13 +20,16 @@ using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
 using Dt = CGAL::Delaunay_triangulation_3<K, Tds>;
 using CellHandle = Dt::Cell_handle;
 
-K::Point_3 toPoint(const Vec3 &v) { return {v.x(), v.y(), v.z()}; }
+K::Point_3 toPoint(const Vec3 &v)
+{
+    return {v.x(), v.y(), v.z()};
+}
 
 // True when e is certainly not on the sphere through a, b, c, d: the in-sphere determinant in
 // double is farther from zero than its error bound (Shewchuk 1997, "Adaptive precision
 // floating-point arithmetic", insphere errboundA). Only the doubtful cases reach the exact test.
-bool certainlyNotCospherical(const K::Point_3 &a, const K::Point_3 &b, const K::Point_3 &c, const K::Point_3 &d,
-                             const K::Point_3 &e)
+bool certainlyNotCospherical(const K::Point_3 &a, const K::Point_3 &b, const K::Point_3 &c,
+                             const K::Point_3 &d, const K::Point_3 &e)
 {
     const double aex = a.x() - e.x(), bex = b.x() - e.x(), cex = c.x() - e.x(), dex = d.x() - e.x();
     const double aey = a.y() - e.y(), bey = b.y() - e.y(), cey = c.y() - e.y(), dey = d.y() - e.y();
@@ -34,21 +37,31 @@ bool certainlyNotCospherical(const K::Point_3 &a, const K::Point_3 &b, const K::
     const double aexbey = aex * bey, bexaey = bex * aey, bexcey = bex * cey, cexbey = cex * bey;
     const double cexdey = cex * dey, dexcey = dex * cey, dexaey = dex * aey, aexdey = aex * dey;
     const double aexcey = aex * cey, cexaey = cex * aey, bexdey = bex * dey, dexbey = dex * bey;
-    const double ab = aexbey - bexaey, bc = bexcey - cexbey, cd = cexdey - dexcey, da = dexaey - aexdey;
+    const double ab = aexbey - bexaey, bc = bexcey - cexbey, cd = cexdey - dexcey,
+                 da = dexaey - aexdey;
     const double ac = aexcey - cexaey, bd = bexdey - dexbey;
     const double abc = aez * bc - bez * ac + cez * ab;
     const double bcd = bez * cd - cez * bd + dez * bc;
     const double cda = cez * da + dez * ac + aez * cd;
     const double dab = dez * ab + aez * bd + bez * da;
-    const double alift = aex * aex + aey * aey + aez * aez, blift = bex * bex + bey * bey + bez * bez;
-    const double clift = cex * cex + cey * cey + cez * cez, dlift = dex * dex + dey * dey + dez * dez;
+    const double alift = aex * aex + aey * aey + aez * aez,
+                 blift = bex * bex + bey * bey + bez * bez;
+    const double clift = cex * cex + cey * cey + cez * cez,
+                 dlift = dex * dex + dey * dey + dez * dez;
     const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
     const auto A = [](double x) { return std::fabs(x); };
-    const double permanent =
-        ((A(cexdey) + A(dexcey)) * A(bez) + (A(dexbey) + A(bexdey)) * A(cez) + (A(bexcey) + A(cexbey)) * A(dez)) * alift +
-        ((A(dexaey) + A(aexdey)) * A(cez) + (A(aexcey) + A(cexaey)) * A(dez) + (A(cexdey) + A(dexcey)) * A(aez)) * blift +
-        ((A(aexbey) + A(bexaey)) * A(dez) + (A(bexdey) + A(dexbey)) * A(aez) + (A(dexaey) + A(aexdey)) * A(bez)) * clift +
-        ((A(bexcey) + A(cexbey)) * A(aez) + (A(cexaey) + A(aexcey)) * A(bez) + (A(aexbey) + A(bexaey)) * A(cez)) * dlift;
+    const double permanent = ((A(cexdey) + A(dexcey)) * A(bez) + (A(dexbey) + A(bexdey)) * A(cez)
+                              + (A(bexcey) + A(cexbey)) * A(dez))
+                                 * alift
+                             + ((A(dexaey) + A(aexdey)) * A(cez) + (A(aexcey) + A(cexaey)) * A(dez)
+                                + (A(cexdey) + A(dexcey)) * A(aez))
+                                   * blift
+                             + ((A(aexbey) + A(bexaey)) * A(dez) + (A(bexdey) + A(dexbey)) * A(aez)
+                                + (A(dexaey) + A(aexdey)) * A(bez))
+                                   * clift
+                             + ((A(bexcey) + A(cexbey)) * A(aez) + (A(cexaey) + A(aexcey)) * A(bez)
+                                + (A(aexbey) + A(bexaey)) * A(cez))
+                                   * dlift;
     constexpr double u = 0x1p-53;
     return std::fabs(det) > (16.0 + 224.0 * u) * u * permanent && permanent < 1e250;
 }
@@ -95,7 +108,8 @@ struct DegenerateClusters {
 // Degenerate adjacencies of a 3D triangulation (its Delaunay edges come from the cells).
 void collectDegenerate3(const Dt &dt, DegenerateClusters &clusters)
 {
-    const K::Side_of_oriented_sphere_3 sideOfSphere = dt.geom_traits().side_of_oriented_sphere_3_object();
+    const K::Side_of_oriented_sphere_3 sideOfSphere =
+        dt.geom_traits().side_of_oriented_sphere_3_object();
     const K::Orientation_3 orientation = dt.geom_traits().orientation_3_object();
     const auto sideOfCircle = dt.geom_traits().coplanar_side_of_bounded_circle_3_object();
     for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
@@ -108,10 +122,12 @@ void collectDegenerate3(const Dt &dt, DegenerateClusters &clusters)
             const bool nInfinite = dt.is_infinite(n);
             const auto opposite = n->vertex(n->index(ch));
             if (!infinite && !nInfinite) {
-                if (!certainlyNotCospherical(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
-                                             c->vertex(3)->point(), opposite->point()) &&
-                    sideOfSphere(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
-                                 c->vertex(3)->point(), opposite->point()) == CGAL::ON_ORIENTED_BOUNDARY)
+                if (!certainlyNotCospherical(c->vertex(0)->point(), c->vertex(1)->point(),
+                                             c->vertex(2)->point(), c->vertex(3)->point(),
+                                             opposite->point())
+                    && sideOfSphere(c->vertex(0)->point(), c->vertex(1)->point(),
+                                    c->vertex(2)->point(), c->vertex(3)->point(), opposite->point())
+                           == CGAL::ON_ORIENTED_BOUNDARY)
                     clusters.links.emplace_back(ch, n);
             } else if (infinite && nInfinite) {
                 // Two hull facets sharing an edge: degenerate when their four sites are cocircular.
@@ -120,15 +136,16 @@ void collectDegenerate3(const Dt &dt, DegenerateClusters &clusters)
                 for (int v = 0; v < 4; ++v)
                     if (!dt.is_infinite(c->vertex(v)))
                         p[m++] = c->vertex(v)->point();
-                if (m == 3 && orientation(p[0], p[1], p[2], opposite->point()) == CGAL::COPLANAR &&
-                    sideOfCircle(p[0], p[1], p[2], opposite->point()) == CGAL::ON_BOUNDARY)
+                if (m == 3 && orientation(p[0], p[1], p[2], opposite->point()) == CGAL::COPLANAR
+                    && sideOfCircle(p[0], p[1], p[2], opposite->point()) == CGAL::ON_BOUNDARY)
                     clusters.links.emplace_back(ch, n);
             }
         }
     }
 }
 
-void collectDimension2(const Dt &dt, std::vector<std::pair<int, int>> &pairs, DegenerateClusters &clusters)
+void collectDimension2(const Dt &dt, std::vector<std::pair<int, int>> &pairs,
+                       DegenerateClusters &clusters)
 {
     const auto sideOfCircle = dt.geom_traits().coplanar_side_of_bounded_circle_3_object();
     for (auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f) {
@@ -140,7 +157,8 @@ void collectDimension2(const Dt &dt, std::vector<std::pair<int, int>> &pairs, De
                 continue;
             const auto opposite = n->vertex(n->index(c));
             if (sideOfCircle(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
-                             opposite->point()) == CGAL::ON_BOUNDARY)
+                             opposite->point())
+                == CGAL::ON_BOUNDARY)
                 clusters.links.emplace_back(c, n);
         }
     }
@@ -188,7 +206,8 @@ DelaunayLists delaunayNeighbourLists(const std::vector<Vec3> &sites)
         collectDimension2(dt, pairs, clusters);
     } else if (r.dimension == 1) {
         for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
-            pairs.emplace_back(e->first->vertex(e->second)->info(), e->first->vertex(e->third)->info());
+            pairs.emplace_back(e->first->vertex(e->second)->info(),
+                               e->first->vertex(e->third)->info());
     }
     const auto extract = [&] {
         std::vector<int> rawOffsets(n + 1, 0);
@@ -206,8 +225,8 @@ DelaunayLists delaunayNeighbourLists(const std::vector<Vec3> &sites)
             std::vector<int> fill(rawOffsets.begin(), rawOffsets.end() - 1);
             if (r.dimension == 3)
                 for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
-                    const int ids[4] = {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
-                                        c->vertex(3)->info()};
+                    const int ids[4] = {c->vertex(0)->info(), c->vertex(1)->info(),
+                                        c->vertex(2)->info(), c->vertex(3)->info()};
                     for (int v = 0; v < 4; ++v)
                         for (int w = 1; w < 4; ++w)
                             raw[fill[ids[v]]++] = ids[(v + w) % 4];
@@ -241,7 +260,8 @@ DelaunayLists delaunayNeighbourLists(const std::vector<Vec3> &sites)
     if (!extra.empty()) {
         std::vector<std::vector<int>> lists(n);
         for (int i = 0; i < n; ++i)
-            lists[i].assign(r.neighbours.begin() + r.offsets[i], r.neighbours.begin() + r.offsets[i + 1]);
+            lists[i].assign(r.neighbours.begin() + r.offsets[i],
+                            r.neighbours.begin() + r.offsets[i + 1]);
         for (const auto &[a, b] : extra) {
             lists[a].push_back(b);
             lists[b].push_back(a);

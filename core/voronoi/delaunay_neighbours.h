@@ -10,10 +10,10 @@
 namespace stratamesh::detail {
 
 struct DelaunayLists {
-    std::vector<char> hidden;     // duplicates of a lower-index site
-    std::vector<int> offsets;     // CSR, unsorted neighbours
+    std::vector<char> hidden; // duplicates of a lower-index site
+    std::vector<int> offsets; // CSR, unsorted neighbours
     std::vector<int> neighbours;
-    int dimension = -1;           // affine dimension of the sites
+    int dimension = -1; // affine dimension of the sites
 };
 
 DelaunayLists delaunayNeighbourLists(const std::vector<Vec3> &sites);

@@ -42,7 +42,9 @@ inline PolygonIntegrals integratePolygon(const ClipPolygon &polygon, const doubl
             const Vec3 sum = x0 + x1 + x2;
             r.area += s;
             r.firstMoment += s / 3.0 * sum;
-            r.energy += s / 12.0 * (sum.squaredNorm() + polygon[0].norm2 + polygon[k].norm2 + polygon[k + 1].norm2);
+            r.energy +=
+                s / 12.0
+                * (sum.squaredNorm() + polygon[0].norm2 + polygon[k].norm2 + polygon[k + 1].norm2);
         }
         r.mass = r.area;
         r.massMoment = r.firstMoment;

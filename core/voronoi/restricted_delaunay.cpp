@@ -10,7 +10,8 @@
 
 namespace stratamesh {
 
-RestrictedDelaunay restrictedDelaunay(const RestrictionDomain &domain, const RestrictedVoronoiDiagram &rvd)
+RestrictedDelaunay restrictedDelaunay(const RestrictionDomain &domain,
+                                      const RestrictedVoronoiDiagram &rvd)
 {
     RestrictedDelaunay rdt;
     rdt.vertices = rvd.sites;
@@ -25,7 +26,8 @@ RestrictedDelaunay restrictedDelaunay(const RestrictionDomain &domain, const Res
         if (!seenTriangles.emplace(surface, s[0], s[1], s[2]).second)
             continue;
         const Triangle &in = domain.triangles[t];
-        const Vec3 normal = (domain.points[in[1]] - domain.points[in[0]]).cross(domain.points[in[2]] - domain.points[in[0]]);
+        const Vec3 normal = (domain.points[in[1]] - domain.points[in[0]])
+                                .cross(domain.points[in[2]] - domain.points[in[0]]);
         const Vec3 &a = rvd.sites[s[0]], &b = rvd.sites[s[1]], &c = rvd.sites[s[2]];
         const bool flip = (b - a).cross(c - a).dot(normal) < 0;
         rdt.triangles.push_back(flip ? Triangle{s[0], s[2], s[1]} : Triangle{s[0], s[1], s[2]});
@@ -56,7 +58,8 @@ RestrictedDelaunayQuality restrictedDelaunayQuality(const RestrictedDelaunay &rd
     q.minQuality = 1;
     q.minAngleDeg = 180;
     for (const Triangle &t : rdt.triangles) {
-        const TriangleShape shape = triangleShape(rdt.vertices[t[0]], rdt.vertices[t[1]], rdt.vertices[t[2]]);
+        const TriangleShape shape =
+            triangleShape(rdt.vertices[t[0]], rdt.vertices[t[1]], rdt.vertices[t[2]]);
         sum += shape.quality;
         q.minQuality = std::min(q.minQuality, shape.quality);
         q.minAngleDeg = std::min(q.minAngleDeg, shape.minAngleDeg);

@@ -13,14 +13,15 @@
 namespace stratamesh {
 
 struct RestrictedDelaunay {
-    std::vector<Vec3> vertices;                 // the sites
-    std::vector<Triangle> triangles;            // site triples, oriented like the input triangle
-    std::vector<int> triangleSurface;           // one triangle per (surface, triple)
-    std::vector<std::array<int, 2>> lineEdges;  // site pairs (i < j), one per (line, pair)
+    std::vector<Vec3> vertices;                // the sites
+    std::vector<Triangle> triangles;           // site triples, oriented like the input triangle
+    std::vector<int> triangleSurface;          // one triangle per (surface, triple)
+    std::vector<std::array<int, 2>> lineEdges; // site pairs (i < j), one per (line, pair)
     std::vector<int> lineEdgeLine;
 };
 
-RestrictedDelaunay restrictedDelaunay(const RestrictionDomain &domain, const RestrictedVoronoiDiagram &rvd);
+RestrictedDelaunay restrictedDelaunay(const RestrictionDomain &domain,
+                                      const RestrictedVoronoiDiagram &rvd);
 
 // Shape statistics of the RDT triangles (Q of Frey & Borouchaki, as in Table 4.2).
 struct RestrictedDelaunayQuality {

@@ -81,27 +81,33 @@ RvdSymbol polygonVertexSymbol(const Triangle &tri, int t, int site, int in, int 
 
 // Position of a symbolic vertex computed from its symbol only: bit-identical in every cell,
 // triangle and line sharing it.
-LocalVertex canonicalVertex(const RestrictionDomain &domain, const std::vector<Vec3> &sites, const RvdSymbol &s)
+LocalVertex canonicalVertex(const RestrictionDomain &domain, const std::vector<Vec3> &sites,
+                            const RvdSymbol &s)
 {
     switch (s.kind) {
     case RvdVertexKind::InputVertex:
         return {s, domain.points[s.a], 0.0};
     case RvdVertexKind::EdgeBisector: {
-        const rvd::ComputedPoint p = rvd::edgeVertexPoint(domain.points, sites, s.a, s.b, s.sites[0], s.sites[1]);
+        const rvd::ComputedPoint p =
+            rvd::edgeVertexPoint(domain.points, sites, s.a, s.b, s.sites[0], s.sites[1]);
         return {s, p.position, p.error};
     }
     case RvdVertexKind::FaceVoronoiEdge: {
         const Triangle &t = domain.triangles[s.a];
         double u = 0, v = 0;
-        const rvd::ComputedPoint p = rvd::faceVertexPoint(domain.points[t[0]], domain.points[t[1]], domain.points[t[2]],
-                                                          sites, s.sites[0], s.sites[1], s.sites[2], u, v);
+        const rvd::ComputedPoint p =
+            rvd::faceVertexPoint(domain.points[t[0]], domain.points[t[1]], domain.points[t[2]],
+                                 sites, s.sites[0], s.sites[1], s.sites[2], u, v);
         return {s, p.position, p.error};
     }
     }
     return {s, Vec3::Zero(), 0.0};
 }
 
-int chunks(std::size_t n) { return static_cast<int>((n + kChunk - 1) / kChunk); }
+int chunks(std::size_t n)
+{
+    return static_cast<int>((n + kChunk - 1) / kChunk);
+}
 
 void checkCancel(const Progress &progress)
 {
@@ -117,11 +123,11 @@ std::string RvdSymbol::toString() const
     case RvdVertexKind::InputVertex:
         return "point " + std::to_string(a);
     case RvdVertexKind::EdgeBisector:
-        return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ") ∩ bisector(" +
-               std::to_string(sites[0]) + ", " + std::to_string(sites[1]) + ")";
+        return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ") ∩ bisector("
+               + std::to_string(sites[0]) + ", " + std::to_string(sites[1]) + ")";
     case RvdVertexKind::FaceVoronoiEdge:
-        return "triangle " + std::to_string(a) + " ∩ Voronoi edge(" + std::to_string(sites[0]) + ", " +
-               std::to_string(sites[1]) + ", " + std::to_string(sites[2]) + ")";
+        return "triangle " + std::to_string(a) + " ∩ Voronoi edge(" + std::to_string(sites[0])
+               + ", " + std::to_string(sites[1]) + ", " + std::to_string(sites[2]) + ")";
     }
     return {};
 }
@@ -134,7 +140,8 @@ std::size_t RvdSymbolHash::operator()(const RvdSymbol &s) const
     return static_cast<std::size_t>(h);
 }
 
-RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domain, const std::vector<Vec3> &sites,
+RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domain,
+                                                  const std::vector<Vec3> &sites,
                                                   Progress &progress, NeighbourSearch search)
 {
     const VoronoiNeighbours delaunay(sites, search);
@@ -142,7 +149,8 @@ RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domai
     return computeRestrictedVoronoi(domain, delaunay, progress);
 }
 
-RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domain, const VoronoiNeighbours &delaunay,
+RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domain,
+                                                  const VoronoiNeighbours &delaunay,
                                                   Progress &progress)
 {
     RestrictedVoronoiDiagram rvd;
@@ -156,59 +164,66 @@ RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domai
     const int nt = static_cast<int>(domain.triangles.size());
     const int nseg = static_cast<int>(domain.segments.size());
     std::vector<Chunk> triangleChunks(chunks(nt)), segmentChunks(chunks(nseg));
-    tbb::parallel_for(tbb::blocked_range<int>(0, chunks(nt), 1), [&](const tbb::blocked_range<int> &r) {
-        rvd::CellClipper clipper(domain, delaunay);
-        for (int c = r.begin(); c < r.end(); ++c) {
-            checkCancel(progress);
-            Chunk &out = triangleChunks[c];
-            for (int t = c * kChunk; t < std::min(nt, (c + 1) * kChunk); ++t) {
-                const Triangle &tri = domain.triangles[t];
-                if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
-                    continue;
-                const int own[3] = {owners[tri[0]], owners[tri[1]], owners[tri[2]]};
-                clipper.forEachTrianglePart(t, own, [&](int site, const rvd::ClipPolygon &poly) {
-                    const rvd::PolygonIntegrals in = rvd::integratePolygon(poly, nullptr);
-                    const int n = static_cast<int>(poly.size());
-                    Vec3 centroid = sites[site] + in.firstMoment / in.area;
-                    if (!(in.area > 0)) {
-                        centroid = sites[site];
-                        for (const rvd::ClipVertex &v : poly)
-                            centroid += v.position / n;
-                    }
-                    out.polygons.push_back({site, t, static_cast<int>(out.vertices.size()), n, in.area, centroid});
-                    for (int k = 0; k < n; ++k) {
-                        const int inSupport = poly[(k + n - 1) % n].out;
-                        out.vertices.push_back(polygonVertexSymbol(tri, t, site, inSupport, poly[k].out));
-                        out.supports.push_back(poly[k].out);
-                    }
-                });
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, chunks(nt), 1), [&](const tbb::blocked_range<int> &r) {
+            rvd::CellClipper clipper(domain, delaunay);
+            for (int c = r.begin(); c < r.end(); ++c) {
+                checkCancel(progress);
+                Chunk &out = triangleChunks[c];
+                for (int t = c * kChunk; t < std::min(nt, (c + 1) * kChunk); ++t) {
+                    const Triangle &tri = domain.triangles[t];
+                    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
+                        continue;
+                    const int own[3] = {owners[tri[0]], owners[tri[1]], owners[tri[2]]};
+                    clipper.forEachTrianglePart(
+                        t, own, [&](int site, const rvd::ClipPolygon &poly) {
+                            const rvd::PolygonIntegrals in = rvd::integratePolygon(poly, nullptr);
+                            const int n = static_cast<int>(poly.size());
+                            Vec3 centroid = sites[site] + in.firstMoment / in.area;
+                            if (!(in.area > 0)) {
+                                centroid = sites[site];
+                                for (const rvd::ClipVertex &v : poly)
+                                    centroid += v.position / n;
+                            }
+                            out.polygons.push_back({site, t, static_cast<int>(out.vertices.size()),
+                                                    n, in.area, centroid});
+                            for (int k = 0; k < n; ++k) {
+                                const int inSupport = poly[(k + n - 1) % n].out;
+                                out.vertices.push_back(
+                                    polygonVertexSymbol(tri, t, site, inSupport, poly[k].out));
+                                out.supports.push_back(poly[k].out);
+                            }
+                        });
+                }
             }
-        }
-    });
+        });
     progress.tick(0.6, "restricted Voronoi diagram");
-    tbb::parallel_for(tbb::blocked_range<int>(0, chunks(nseg), 1), [&](const tbb::blocked_range<int> &r) {
-        rvd::CellClipper clipper(domain, delaunay);
-        for (int c = r.begin(); c < r.end(); ++c) {
-            Chunk &out = segmentChunks[c];
-            for (int s = c * kChunk; s < std::min(nseg, (c + 1) * kChunk); ++s) {
-                const auto &seg = domain.segments[s];
-                if (seg[0] == seg[1])
-                    continue;
-                const int own[2] = {owners[seg[0]], owners[seg[1]]};
-                clipper.forEachSegmentPart(s, own, [&](int site, const rvd::SegmentEnd &a, const rvd::SegmentEnd &b) {
-                    LocalPiece piece{site, s, {}, (b.position - a.position).norm()};
-                    const rvd::SegmentEnd *ends[2] = {&a, &b};
-                    for (int e = 0; e < 2; ++e) {
-                        const rvd::SegmentEnd &x = *ends[e];
-                        const RvdSymbol sym = x.site < 0 ? inputVertexSymbol(seg[x.t == 0 ? 0 : 1])
-                                                         : edgeSymbol(seg[0], seg[1], site, x.site);
-                        piece.ends[e] = sym;
-                    }
-                    out.pieces.push_back(piece);
-                });
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, chunks(nseg), 1), [&](const tbb::blocked_range<int> &r) {
+            rvd::CellClipper clipper(domain, delaunay);
+            for (int c = r.begin(); c < r.end(); ++c) {
+                Chunk &out = segmentChunks[c];
+                for (int s = c * kChunk; s < std::min(nseg, (c + 1) * kChunk); ++s) {
+                    const auto &seg = domain.segments[s];
+                    if (seg[0] == seg[1])
+                        continue;
+                    const int own[2] = {owners[seg[0]], owners[seg[1]]};
+                    clipper.forEachSegmentPart(
+                        s, own, [&](int site, const rvd::SegmentEnd &a, const rvd::SegmentEnd &b) {
+                            LocalPiece piece{site, s, {}, (b.position - a.position).norm()};
+                            const rvd::SegmentEnd *ends[2] = {&a, &b};
+                            for (int e = 0; e < 2; ++e) {
+                                const rvd::SegmentEnd &x = *ends[e];
+                                const RvdSymbol sym =
+                                    x.site < 0 ? inputVertexSymbol(seg[x.t == 0 ? 0 : 1])
+                                               : edgeSymbol(seg[0], seg[1], site, x.site);
+                                piece.ends[e] = sym;
+                            }
+                            out.pieces.push_back(piece);
+                        });
+                }
             }
-        }
-    });
+        });
     progress.tick(0.7, "restricted Voronoi diagram");
 
     // Sequential merge in triangle order: vertex ids follow first appearance, deterministically.
@@ -274,7 +289,8 @@ RestrictedVoronoiDiagram computeRestrictedVoronoi(const RestrictionDomain &domai
         std::vector<int> fill(rvd.vertexPolygonOffsets.begin(), rvd.vertexPolygonOffsets.end() - 1);
         for (std::size_t p = 0; p < rvd.polygons.size(); ++p)
             for (int k = 0; k < rvd.polygons[p].count; ++k)
-                rvd.vertexPolygons[fill[rvd.polygonVertices[rvd.polygons[p].first + k]]++] = static_cast<int>(p);
+                rvd.vertexPolygons[fill[rvd.polygonVertices[rvd.polygons[p].first + k]]++] =
+                    static_cast<int>(p);
     }
 
     rvd.cornerSites.resize(domain.corners.size());

@@ -35,7 +35,9 @@ void surfaceComponents(const RestrictionDomain &domain, RestrictedVoronoiDiagram
         ++triangleFirst[p.triangle + 1];
     for (int t = 0; t < nt; ++t)
         triangleFirst[t + 1] += triangleFirst[t];
-    const int ne = domain.edgeIds.empty() ? 0 : *std::max_element(domain.edgeIds.begin(), domain.edgeIds.end()) + 1;
+    const int ne = domain.edgeIds.empty()
+                       ? 0
+                       : *std::max_element(domain.edgeIds.begin(), domain.edgeIds.end()) + 1;
     std::vector<int> edgeFirst(ne + 1, 0), edgeTriangles(domain.edgeIds.size());
     for (int id : domain.edgeIds)
         ++edgeFirst[id + 1];
@@ -59,7 +61,8 @@ void surfaceComponents(const RestrictionDomain &domain, RestrictedVoronoiDiagram
                     continue; // each pair of triangles once
                 for (int p2 = triangleFirst[t2]; p2 < triangleFirst[t2 + 1]; ++p2)
                     if (rvd.polygons[p2].site == poly.site)
-                        uf.unite(p, p2); // the cell meets both sides of the edge: along it (convexity)
+                        uf.unite(p,
+                                 p2); // the cell meets both sides of the edge: along it (convexity)
             }
         }
     }
@@ -117,8 +120,9 @@ void lineComponents(const RestrictionDomain &domain, RestrictedVoronoiDiagram &r
         }
         const bool closed = domain.lineClosed[line] != 0;
         bool wholeLoop = closed && runs.size() == 1;
-        if (closed && runs.size() > 1 &&
-            rvd.linePieces[runs.front().front()].site == rvd.linePieces[runs.back().back()].site) {
+        if (closed && runs.size() > 1
+            && rvd.linePieces[runs.front().front()].site
+                   == rvd.linePieces[runs.back().back()].site) {
             runs.back().insert(runs.back().end(), runs.front().begin(), runs.front().end());
             runs.erase(runs.begin());
         }
@@ -128,12 +132,14 @@ void lineComponents(const RestrictionDomain &domain, RestrictedVoronoiDiagram &r
             c.line = line;
             c.pieces = run;
             if (!wholeLoop)
-                c.ends = {rvd.linePieces[run.front()].vertices[0], rvd.linePieces[run.back()].vertices[1]};
+                c.ends = {rvd.linePieces[run.front()].vertices[0],
+                          rvd.linePieces[run.back()].vertices[1]};
             for (int p : run) {
                 const RvdLinePiece &piece = rvd.linePieces[p];
                 c.length += piece.length;
-                c.centroid += piece.length * 0.5 *
-                              (rvd.vertices[piece.vertices[0]].position + rvd.vertices[piece.vertices[1]].position);
+                c.centroid += piece.length * 0.5
+                              * (rvd.vertices[piece.vertices[0]].position
+                                 + rvd.vertices[piece.vertices[1]].position);
             }
             if (c.length > 0)
                 c.centroid /= c.length;

@@ -17,7 +17,8 @@ std::uint64_t edgeKey(int a, int b)
 {
     if (a > b)
         std::swap(a, b);
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32)
+           | static_cast<std::uint32_t>(b);
 }
 
 } // namespace
@@ -61,8 +62,8 @@ RestrictionDomain makeRestrictionDomain(const Model &model, std::vector<double> 
             Triangle g{};
             for (int c = 0; c < 3; ++c) {
                 if (t[c] < 0 || t[c] >= nv)
-                    throw InputError("surface '" + s.name + "': triangle " + std::to_string(ti) +
-                                     " has a vertex index out of range");
+                    throw InputError("surface '" + s.name + "': triangle " + std::to_string(ti)
+                                     + " has a vertex index out of range");
                 g[c] = topology ? model.surfaceVertexToGlobal[si][t[c]] : offsets[si] + t[c];
             }
             d.triangles.push_back(g);
@@ -107,7 +108,8 @@ void finalizeDomain(RestrictionDomain &d, const std::vector<Triangle> &localTria
     for (int t = 0; t < nt; ++t) {
         for (int c = 0; c < 3; ++c)
             if (d.triangles[t][c] < 0 || d.triangles[t][c] >= np)
-                throw InputError("domain triangle " + std::to_string(t) + " has a vertex out of range");
+                throw InputError("domain triangle " + std::to_string(t)
+                                 + " has a vertex out of range");
         if (d.triangleSurface[t] < 0)
             throw InputError("domain triangle " + std::to_string(t) + " has no surface");
         d.surfaceCount = std::max(d.surfaceCount, d.triangleSurface[t] + 1);
@@ -117,7 +119,8 @@ void finalizeDomain(RestrictionDomain &d, const std::vector<Triangle> &localTria
     for (std::size_t s = 0; s < d.segments.size(); ++s) {
         for (int c = 0; c < 2; ++c)
             if (d.segments[s][c] < 0 || d.segments[s][c] >= np)
-                throw InputError("domain segment " + std::to_string(s) + " has a vertex out of range");
+                throw InputError("domain segment " + std::to_string(s)
+                                 + " has a vertex out of range");
         if (d.segmentLine[s] < 0)
             throw InputError("domain segment " + std::to_string(s) + " has no line");
         d.lineCount = std::max(d.lineCount, d.segmentLine[s] + 1);
@@ -127,11 +130,12 @@ void finalizeDomain(RestrictionDomain &d, const std::vector<Triangle> &localTria
             throw InputError("domain corner " + std::to_string(c) + " is out of range");
     if (!d.density.empty()) {
         if (static_cast<int>(d.density.size()) != np)
-            throw InputError("density: " + std::to_string(d.density.size()) + " values for " +
-                             std::to_string(np) + " points");
+            throw InputError("density: " + std::to_string(d.density.size()) + " values for "
+                             + std::to_string(np) + " points");
         for (int i = 0; i < np; ++i)
             if (!(d.density[i] > 0) || !std::isfinite(d.density[i]))
-                throw InputError("density at point " + std::to_string(i) + " is not a positive number");
+                throw InputError("density at point " + std::to_string(i)
+                                 + " is not a positive number");
     }
 
     // Edge ids per surface from the connectivity ids.
@@ -144,7 +148,8 @@ void finalizeDomain(RestrictionDomain &d, const std::vector<Triangle> &localTria
     for (int t = 0; t < nt; ++t) {
         auto &map = perSurface[d.triangleSurface[t]];
         for (int e = 0; e < 3; ++e) {
-            const auto [it, inserted] = map.emplace(edgeKey(conn[t][e], conn[t][(e + 1) % 3]), nextId);
+            const auto [it, inserted] =
+                map.emplace(edgeKey(conn[t][e], conn[t][(e + 1) % 3]), nextId);
             if (inserted)
                 ++nextId;
             d.edgeIds[3 * t + e] = it->second;
@@ -170,8 +175,10 @@ void finalizeDomain(RestrictionDomain &d, const std::vector<Triangle> &localTria
             continue;
         for (int k = first; k < last; ++k)
             if (d.segments[d.lineSegments[k]][1] != d.segments[d.lineSegments[k + 1]][0])
-                throw InputError("line " + std::to_string(l) + ": its segments are not given in line order");
-        d.lineClosed[l] = d.segments[d.lineSegments[last]][1] == d.segments[d.lineSegments[first]][0];
+                throw InputError("line " + std::to_string(l)
+                                 + ": its segments are not given in line order");
+        d.lineClosed[l] =
+            d.segments[d.lineSegments[last]][1] == d.segments[d.lineSegments[first]][0];
     }
 }
 

@@ -12,14 +12,14 @@
 namespace stratamesh {
 
 struct RestrictionDomain {
-    std::vector<Vec3> points;                    // Model::vertices once topology is recovered
-    std::vector<Triangle> triangles;             // indices into points
-    std::vector<int> triangleSurface;            // surface of each triangle
-    std::vector<int> triangleInSurface;          // its index inside Surface::triangles
-    std::vector<std::array<int, 2>> segments;    // line segments, indices into points
-    std::vector<int> segmentLine;                // line of each segment
-    std::vector<int> corners;                    // point of each corner (Model::corners order)
-    std::vector<double> density;                 // ρ per point (> 0); empty means ρ = 1
+    std::vector<Vec3> points;                 // Model::vertices once topology is recovered
+    std::vector<Triangle> triangles;          // indices into points
+    std::vector<int> triangleSurface;         // surface of each triangle
+    std::vector<int> triangleInSurface;       // its index inside Surface::triangles
+    std::vector<std::array<int, 2>> segments; // line segments, indices into points
+    std::vector<int> segmentLine;             // line of each segment
+    std::vector<int> corners;                 // point of each corner (Model::corners order)
+    std::vector<double> density;              // ρ per point (> 0); empty means ρ = 1
     int surfaceCount = 0;
     int lineCount = 0;
 

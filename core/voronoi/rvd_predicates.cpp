@@ -20,9 +20,18 @@ struct Fd {
     double m;
     int k;
 };
-inline Fd operator+(const Fd &a, const Fd &b) { return {a.v + b.v, a.m + b.m, std::max(a.k, b.k) + 1}; }
-inline Fd operator-(const Fd &a, const Fd &b) { return {a.v - b.v, a.m + b.m, std::max(a.k, b.k) + 1}; }
-inline Fd operator*(const Fd &a, const Fd &b) { return {a.v * b.v, a.m * b.m, a.k + b.k + 1}; }
+inline Fd operator+(const Fd &a, const Fd &b)
+{
+    return {a.v + b.v, a.m + b.m, std::max(a.k, b.k) + 1};
+}
+inline Fd operator-(const Fd &a, const Fd &b)
+{
+    return {a.v - b.v, a.m + b.m, std::max(a.k, b.k) + 1};
+}
+inline Fd operator*(const Fd &a, const Fd &b)
+{
+    return {a.v * b.v, a.m * b.m, a.k + b.k + 1};
+}
 
 // Sign when the error bound proves it, 0 when in doubt (then exact arithmetic decides).
 inline int certainSign(const Fd &x)
@@ -38,28 +47,59 @@ inline int certainSign(const Fd &x)
     return 0;
 }
 
-inline int signOf(const CGAL::Mpzf &x) { return static_cast<int>(x.sign()); }
+inline int signOf(const CGAL::Mpzf &x)
+{
+    return static_cast<int>(x.sign());
+}
 
-template <class T> T number(double d);
-template <> inline Fd number<Fd>(double d) { return {d, std::fabs(d), 0}; }
-template <> inline CGAL::Mpzf number<CGAL::Mpzf>(double d) { return CGAL::Mpzf(d); }
+template <class T>
+T number(double d);
+template <>
+inline Fd number<Fd>(double d)
+{
+    return {d, std::fabs(d), 0};
+}
+template <>
+inline CGAL::Mpzf number<CGAL::Mpzf>(double d)
+{
+    return CGAL::Mpzf(d);
+}
 
-template <class T> struct P3 {
+template <class T>
+struct P3 {
     T x, y, z;
 };
-template <class T> P3<T> point(const Vec3 &v) { return {number<T>(v.x()), number<T>(v.y()), number<T>(v.z())}; }
-template <class T> P3<T> operator-(const P3<T> &a, const P3<T> &b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-template <class T> P3<T> operator+(const P3<T> &a, const P3<T> &b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-template <class T> T dot(const P3<T> &a, const P3<T> &b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+template <class T>
+P3<T> point(const Vec3 &v)
+{
+    return {number<T>(v.x()), number<T>(v.y()), number<T>(v.z())};
+}
+template <class T>
+P3<T> operator-(const P3<T> &a, const P3<T> &b)
+{
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <class T>
+P3<T> operator+(const P3<T> &a, const P3<T> &b)
+{
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <class T>
+T dot(const P3<T> &a, const P3<T> &b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
 // |q − pb|² − |q − pa|², written to keep magnitudes small: (pa − pb)·((q − pa) + (q − pb)).
-template <class T> T powerDifference(const P3<T> &q, const P3<T> &pa, const P3<T> &pb)
+template <class T>
+T powerDifference(const P3<T> &q, const P3<T> &pa, const P3<T> &pb)
 {
     return dot(pa - pb, (q - pa) + (q - pb));
 }
 
 // Symbolic perturbation: the first non-zero coefficient by increasing site index decides.
-template <std::size_t N> int perturbedSign(std::array<std::pair<int, int>, N> indexAndSign)
+template <std::size_t N>
+int perturbedSign(std::array<std::pair<int, int>, N> indexAndSign)
 {
     std::sort(indexAndSign.begin(), indexAndSign.end());
     for (const auto &[index, sign] : indexAndSign)
@@ -70,13 +110,15 @@ template <std::size_t N> int perturbedSign(std::array<std::pair<int, int>, N> in
 
 // Edge vertex x = (q0, q1) ∩ bisector(i, j), tested against l. With f = π_l − π_i and
 // g = π_j − π_i (affine along the segment), f(x) = (g0·f1 − g1·f0) / (g0 − g1).
-template <class T> struct EdgeTerms {
+template <class T>
+struct EdgeTerms {
     T f0, f1, g0, g1;
     T numerator() const { return g0 * f1 - g1 * f0; }
     T denominator() const { return g0 - g1; }
 };
 template <class T>
-EdgeTerms<T> edgeTerms(const Vec3 &q0d, const Vec3 &q1d, const Vec3 &pid, const Vec3 &pjd, const Vec3 &pld)
+EdgeTerms<T> edgeTerms(const Vec3 &q0d, const Vec3 &q1d, const Vec3 &pid, const Vec3 &pjd,
+                       const Vec3 &pld)
 {
     const P3<T> q0 = point<T>(q0d), q1 = point<T>(q1d), pi = point<T>(pid), pj = point<T>(pjd),
                 pl = point<T>(pld);
@@ -87,7 +129,8 @@ EdgeTerms<T> edgeTerms(const Vec3 &q0d, const Vec3 &q1d, const Vec3 &pid, const 
 // Face vertex: on the triangle plane x = q0 + u·(q1 − q0) + v·(q2 − q0) (up to a factor 2 on
 // u, v), G_m(x) = A_m + u·B_m + v·C_m = π_m − π_i for m ∈ {j, k, l}. x solves G_j = G_k = 0 and
 // G_l(x) = det[[A_l,B_l,C_l],[A_j,B_j,C_j],[A_k,B_k,C_k]] / (B_j·C_k − B_k·C_j) by Cramer.
-template <class T> struct FaceTerms {
+template <class T>
+struct FaceTerms {
     T a[3], b[3], c[3]; // index 0: l, 1: j, 2: k
     T minorL() const { return b[1] * c[2] - b[2] * c[1]; }
     T minorJ() const { return b[0] * c[2] - b[2] * c[0]; }
@@ -115,7 +158,10 @@ FaceTerms<T> faceTerms(const Vec3 &q0d, const Vec3 &q1d, const Vec3 &q2d, const 
 
 } // namespace
 
-long long exactPredicateCount() { return g_exactCount.load(std::memory_order_relaxed); }
+long long exactPredicateCount()
+{
+    return g_exactCount.load(std::memory_order_relaxed);
+}
 
 int sideOfInputVertex(const Vec3 &q, const Vec3 &pi, int i, const Vec3 &pl, int l)
 {
@@ -194,7 +240,8 @@ int sideOfFaceVertex(const Vec3 &q0, const Vec3 &q1, const Vec3 &q2, const Vec3 
     if (sn == 0) {
         // A_m gains w_i − w_m: the determinant gains
         // w_i (m_l − m_j + m_k) − w_l m_l + w_j m_j − w_k m_k.
-        sn = perturbedSign<4>({{{i, signOf(ml - mj + mk)}, {l, -sd}, {j, signOf(mj)}, {k, -signOf(mk)}}});
+        sn = perturbedSign<4>(
+            {{{i, signOf(ml - mj + mk)}, {l, -sd}, {j, signOf(mj)}, {k, -signOf(mk)}}});
     }
     return sn * sd;
 }

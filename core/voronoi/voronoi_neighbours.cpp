@@ -89,10 +89,18 @@ struct VoronoiNeighbours::KdTree {
         const Vec3 *points = nullptr;
         std::size_t count = 0;
         std::size_t kdtree_get_point_count() const { return count; }
-        double kdtree_get_pt(std::size_t i, std::size_t dim) const { return points[i][static_cast<int>(dim)]; }
-        template <class B> bool kdtree_get_bbox(B &) const { return false; }
+        double kdtree_get_pt(std::size_t i, std::size_t dim) const
+        {
+            return points[i][static_cast<int>(dim)];
+        }
+        template <class B>
+        bool kdtree_get_bbox(B &) const
+        {
+            return false;
+        }
     };
-    using Index = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3, int>;
+    using Index = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>,
+                                                      Cloud, 3, int>;
     Cloud cloud;
     std::unique_ptr<Index> index;
 };
@@ -102,7 +110,8 @@ VoronoiNeighbours::~VoronoiNeighbours() = default;
 VoronoiNeighbours::VoronoiNeighbours(VoronoiNeighbours &&) noexcept = default;
 VoronoiNeighbours &VoronoiNeighbours::operator=(VoronoiNeighbours &&) noexcept = default;
 
-VoronoiNeighbours::VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch search, const NeighbourHints *hints)
+VoronoiNeighbours::VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch search,
+                                     const NeighbourHints *hints)
     : m_search(search), m_sites(std::move(sites)), m_kdOnce(std::make_unique<std::once_flag>())
 {
     checkSites();
@@ -172,8 +181,8 @@ void VoronoiNeighbours::checkSites() const
 bool VoronoiNeighbours::reuseNearest(const NeighbourReuse &reuse)
 {
     const int n = siteCount();
-    if (n == 0 || reuse.sites.size() != m_sites.size() || reuse.complete.size() != m_sites.size() ||
-        reuse.lists.offsets.size() != m_sites.size() + 1)
+    if (n == 0 || reuse.sites.size() != m_sites.size() || reuse.complete.size() != m_sites.size()
+        || reuse.lists.offsets.size() != m_sites.size() + 1)
         return false;
     std::vector<double> drift(n);
     for (int i = 0; i < n; ++i)
@@ -192,13 +201,17 @@ bool VoronoiNeighbours::reuseNearest(const NeighbourReuse &reuse)
             // Unlisted sites were at least `complete` away; each end moved at most its drift.
             // The margin covers the rounding of the drifts and of the distances.
             const double old = reuse.complete[i];
-            const double radius = std::isfinite(old) ? (old - drift[i] - largest) * (1 - 1e-12) : old;
+            const double radius =
+                std::isfinite(old) ? (old - drift[i] - largest) * (1 - 1e-12) : old;
             int count = 0;
-            for (int k = reuse.lists.offsets[i]; k < reuse.lists.offsets[i + 1] && count < slots; ++k) {
+            for (int k = reuse.lists.offsets[i]; k < reuse.lists.offsets[i + 1] && count < slots;
+                 ++k) {
                 const int j = reuse.lists.neighbours[k];
                 const double d = std::sqrt(squaredDistance(m_sites[j], m_sites[i]));
                 if (d == 0.0)
-                    duplicate.store(true, std::memory_order_relaxed); // hidden sites: the full search sorts them out
+                    duplicate.store(
+                        true,
+                        std::memory_order_relaxed); // hidden sites: the full search sorts them out
                 if (d < radius)
                     kept[count++] = {d, j};
             }
@@ -227,8 +240,8 @@ const VoronoiNeighbours::KdTree &VoronoiNeighbours::kdTree() const
         m_kdTree->cloud.points = m_sites.data();
         m_kdTree->cloud.count = m_sites.size();
         // The constructor builds the index (leaves of 10: fastest for the k-nearest lists).
-        m_kdTree->index = std::make_unique<KdTree::Index>(3, m_kdTree->cloud,
-                                                          nanoflann::KDTreeSingleIndexAdaptorParams(10));
+        m_kdTree->index = std::make_unique<KdTree::Index>(
+            3, m_kdTree->cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
     });
     return *m_kdTree;
 }
@@ -245,8 +258,8 @@ void VoronoiNeighbours::buildNearest(const NeighbourHints *hints)
     // Queried in the tree's leaf order (nearby sites one after another: the same nodes stay in
     // cache); each list is sorted by distance here, as sortByDistance() would.
     const auto &order = tree.index->vAcc;
-    const bool useHints = hints && hints->offsets.size() == static_cast<std::size_t>(n) + 1 &&
-                          hints->offsets.back() == static_cast<int>(hints->neighbours.size());
+    const bool useHints = hints && hints->offsets.size() == static_cast<std::size_t>(n) + 1
+                          && hints->offsets.back() == static_cast<int>(hints->neighbours.size());
     tbb::parallel_for(tbb::blocked_range<int>(0, n, 512), [&](const tbb::blocked_range<int> &r) {
         std::vector<int> ids(k);
         std::vector<double> d2(k);
@@ -358,7 +371,8 @@ void VoronoiNeighbours::sortByDistance()
     });
 }
 
-void VoronoiNeighbours::sitesBeyondList(int i, double radius, std::vector<std::pair<double, int>> &out) const
+void VoronoiNeighbours::sitesBeyondList(int i, double radius,
+                                        std::vector<std::pair<double, int>> &out) const
 {
     out.clear();
     const double complete = completeRadius(i);

@@ -32,7 +32,7 @@ enum class NeighbourSearch { Delaunay, NearestNeighbours };
 // previous CVT evaluation: the sites moved little). They only make the search faster: the
 // lists found are the same.
 struct NeighbourHints {
-    std::vector<int> offsets;    // per site, CSR over neighbours; empty: no hints
+    std::vector<int> offsets; // per site, CSR over neighbours; empty: no hints
     std::vector<int> neighbours;
 };
 
@@ -56,7 +56,8 @@ public:
     VoronoiNeighbours();
     // Exactly duplicated sites are kept but hidden: the lowest index owns the point, the others
     // have empty cells. Throws InputError on a non-finite coordinate.
-    explicit VoronoiNeighbours(std::vector<Vec3> sites, NeighbourSearch search = NeighbourSearch::Delaunay,
+    explicit VoronoiNeighbours(std::vector<Vec3> sites,
+                               NeighbourSearch search = NeighbourSearch::Delaunay,
                                const NeighbourHints *hints = nullptr);
     // NearestNeighbours lists, reusing `reuse` when the sites moved little, else searched afresh
     // (seeded with the old lists) and stored into it.

@@ -47,9 +47,10 @@ private slots:
         STRATAMESH_REQUIRE_DATA(path, "modelA2.ml");
         QTemporaryDir dir;
         const QString xyz = dir.filePath(QStringLiteral("sites.xyz"));
-        const QJsonObject r = runJson({QStringLiteral("cvt"), path, QStringLiteral("--sites"), QStringLiteral("500"),
-                                       QStringLiteral("--iterations"), QStringLiteral("15"), QStringLiteral("--seed"),
-                                       QStringLiteral("3"), QStringLiteral("--json"), QStringLiteral("--sites-out"), xyz});
+        const QJsonObject r = runJson(
+            {QStringLiteral("cvt"), path, QStringLiteral("--sites"), QStringLiteral("500"),
+             QStringLiteral("--iterations"), QStringLiteral("15"), QStringLiteral("--seed"),
+             QStringLiteral("3"), QStringLiteral("--json"), QStringLiteral("--sites-out"), xyz});
         QVERIFY(!r.isEmpty());
         QCOMPARE(r[QStringLiteral("sites")].toInt(), 500);
         QCOMPARE(r[QStringLiteral("iterations")].toInt(), 15);
@@ -59,9 +60,11 @@ private slots:
         // L-BFGS with a line search never accepts a step that raises the energy.
         QVERIFY(energy.first().toDouble() < r[QStringLiteral("initial_energy")].toDouble());
         for (int i = 1; i < energy.size(); ++i)
-            QVERIFY2(energy[i].toDouble() <= energy[i - 1].toDouble(), qPrintable(QString::number(i)));
+            QVERIFY2(energy[i].toDouble() <= energy[i - 1].toDouble(),
+                     qPrintable(QString::number(i)));
         const QJsonObject rdt = r[QStringLiteral("rdt")].toObject();
-        QVERIFY(rdt[QStringLiteral("triangles")].toInt() > 500); // about twice the sites on surfaces
+        QVERIFY(rdt[QStringLiteral("triangles")].toInt()
+                > 500); // about twice the sites on surfaces
         QVERIFY(rdt[QStringLiteral("mean_quality")].toDouble() > 0.5);
         QVERIFY(rdt[QStringLiteral("mean_quality")].toDouble() <= 1.0);
         const QJsonObject timings = r[QStringLiteral("timings")].toObject();
@@ -88,7 +91,8 @@ private slots:
     void cvtRefusesBadSites()
     {
         STRATAMESH_REQUIRE_DATA(path, "modelA1.ml");
-        const CliRun r = runCli({QStringLiteral("cvt"), path, QStringLiteral("--sites"), QStringLiteral("-4")});
+        const CliRun r =
+            runCli({QStringLiteral("cvt"), path, QStringLiteral("--sites"), QStringLiteral("-4")});
         QVERIFY(r.finished);
         QVERIFY(r.exitCode != 0);
         QVERIFY2(r.err.contains(QStringLiteral("--sites")), qPrintable(r.err));
@@ -100,9 +104,10 @@ private slots:
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("remeshed.ml"));
         const QString report = dir.filePath(QStringLiteral("report.json"));
-        const CliRun r = runCli({QStringLiteral("remesh"), path, QStringLiteral("--sites"), QStringLiteral("1000"),
-                                 QStringLiteral("--iterations"), QStringLiteral("30"), QStringLiteral("-o"), out,
-                                 QStringLiteral("--report"), report});
+        const CliRun r =
+            runCli({QStringLiteral("remesh"), path, QStringLiteral("--sites"),
+                    QStringLiteral("1000"), QStringLiteral("--iterations"), QStringLiteral("30"),
+                    QStringLiteral("-o"), out, QStringLiteral("--report"), report});
         QVERIFY2(r.finished && r.exitCode == 0, qPrintable(r.err));
         QFile reportFile(report);
         QVERIFY(reportFile.open(QIODevice::ReadOnly));
@@ -110,12 +115,14 @@ private slots:
         QVERIFY(!rep.isEmpty());
         for (const char *side : {"input", "output"}) {
             const QJsonObject o = rep[QLatin1String(side)].toObject();
-            QVERIFY2(o.contains(QStringLiteral("counts")) && o.contains(QStringLiteral("mesh")), side);
+            QVERIFY2(o.contains(QStringLiteral("counts")) && o.contains(QStringLiteral("mesh")),
+                     side);
             QVERIFY2(o[QStringLiteral("validity")][QStringLiteral("valid")].toBool(), side);
         }
         // Regions are what a simulator meshes: none may be lost.
-        QCOMPARE(rep[QStringLiteral("output")][QStringLiteral("counts")][QStringLiteral("without_box")]
-                     [QStringLiteral("regions")].toInt(),
+        QCOMPARE(rep[QStringLiteral("output")][QStringLiteral("counts")]
+                    [QStringLiteral("without_box")][QStringLiteral("regions")]
+                        .toInt(),
                  4);
         const double hausdorff = rep[QStringLiteral("hausdorff_pct_bbox")].toDouble(-1);
         QVERIFY(hausdorff > 0 && hausdorff < 2.0);
@@ -130,7 +137,8 @@ private slots:
         const QJsonObject info = runJson({QStringLiteral("info"), out, QStringLiteral("--json")});
         QVERIFY(!info.isEmpty());
         QVERIFY(info[QStringLiteral("validity")][QStringLiteral("valid")].toBool());
-        QCOMPARE(info[QStringLiteral("counts")], rep[QStringLiteral("output")][QStringLiteral("counts")]);
+        QCOMPARE(info[QStringLiteral("counts")],
+                 rep[QStringLiteral("output")][QStringLiteral("counts")]);
     }
 
     // Without refinement the modelA2 remesh at 1000 sites (seed 1) holds two points 1e-12 apart,
@@ -141,15 +149,25 @@ private slots:
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("remeshed.ml"));
         const QString report = dir.filePath(QStringLiteral("report.json"));
-        const QStringList base{QStringLiteral("remesh"), path, QStringLiteral("--sites"), QStringLiteral("1000"),
-                               QStringLiteral("--seed"), QStringLiteral("1"), QStringLiteral("--refinement-rounds"),
-                               QStringLiteral("0"), QStringLiteral("-o"), out, QStringLiteral("--report"), report};
+        const QStringList base{QStringLiteral("remesh"),
+                               path,
+                               QStringLiteral("--sites"),
+                               QStringLiteral("1000"),
+                               QStringLiteral("--seed"),
+                               QStringLiteral("1"),
+                               QStringLiteral("--refinement-rounds"),
+                               QStringLiteral("0"),
+                               QStringLiteral("-o"),
+                               out,
+                               QStringLiteral("--report"),
+                               report};
         const CliRun refused = runCli(base);
         QVERIFY(refused.finished);
         QCOMPARE(refused.exitCode, 1);
         QVERIFY(!QFile::exists(out));
         QVERIFY(!QFile::exists(report));
-        QVERIFY2(refused.err.contains(QStringLiteral("not valid")) && refused.err.contains(QStringLiteral("close_vertices")),
+        QVERIFY2(refused.err.contains(QStringLiteral("not valid"))
+                     && refused.err.contains(QStringLiteral("close_vertices")),
                  qPrintable(refused.err));
 
         const CliRun allowed = runCli(base + QStringList{QStringLiteral("--allow-invalid")});
@@ -158,25 +176,29 @@ private slots:
         QFile reportFile(report);
         QVERIFY(reportFile.open(QIODevice::ReadOnly));
         const QJsonObject rep = parseObject(reportFile.readAll());
-        QVERIFY(!rep[QStringLiteral("output")][QStringLiteral("validity")][QStringLiteral("valid")].toBool());
+        QVERIFY(!rep[QStringLiteral("output")][QStringLiteral("validity")][QStringLiteral("valid")]
+                     .toBool());
         QCOMPARE(rep[QStringLiteral("refinement")][QStringLiteral("rounds")].toInt(), 0);
 
         // With refinement (the default) the same run is valid and says how many sites it added.
-        const CliRun refined = runCli({QStringLiteral("remesh"), path, QStringLiteral("--sites"), QStringLiteral("1000"),
-                                       QStringLiteral("--seed"), QStringLiteral("1"), QStringLiteral("-o"), out,
-                                       QStringLiteral("--report"), report});
+        const CliRun refined =
+            runCli({QStringLiteral("remesh"), path, QStringLiteral("--sites"),
+                    QStringLiteral("1000"), QStringLiteral("--seed"), QStringLiteral("1"),
+                    QStringLiteral("-o"), out, QStringLiteral("--report"), report});
         QVERIFY2(refined.finished && refined.exitCode == 0, qPrintable(refined.err));
         reportFile.close();
         QVERIFY(reportFile.open(QIODevice::ReadOnly));
         const QJsonObject again = parseObject(reportFile.readAll());
-        QVERIFY(again[QStringLiteral("output")][QStringLiteral("validity")][QStringLiteral("valid")].toBool());
+        QVERIFY(again[QStringLiteral("output")][QStringLiteral("validity")][QStringLiteral("valid")]
+                    .toBool());
         const QJsonObject refinement = again[QStringLiteral("refinement")].toObject();
         QCOMPARE(refinement[QStringLiteral("initial_sites")].toInt(), 1000);
         QVERIFY(refinement[QStringLiteral("final_sites")].toInt() > 1000);
         const QJsonObject edits = again[QStringLiteral("topology_edits")].toObject();
         int sum = 0;
-        for (const char *k : {"surfaces_lost", "surfaces_created", "lines_lost", "lines_created", "corners_lost",
-                              "corners_created", "surface_parts_lost", "surface_parts_created"})
+        for (const char *k :
+             {"surfaces_lost", "surfaces_created", "lines_lost", "lines_created", "corners_lost",
+              "corners_created", "surface_parts_lost", "surface_parts_created"})
             sum += edits[QLatin1String(k)].toInt(-1000);
         QCOMPARE(edits[QStringLiteral("total")].toInt(), sum);
         // The ledger adds up: input - lost + created = output for surfaces, lines and corners.
@@ -188,8 +210,9 @@ private slots:
                          + e[QStringLiteral("created")].toInt(),
                      e[QStringLiteral("output")].toInt());
             QCOMPARE(e[QStringLiteral("output")].toInt(),
-                     again[QStringLiteral("output")][QStringLiteral("counts")][QStringLiteral("all")][QLatin1String(k)]
-                         .toInt());
+                     again[QStringLiteral("output")][QStringLiteral("counts")]
+                          [QStringLiteral("all")][QLatin1String(k)]
+                              .toInt());
         }
     }
 
@@ -198,8 +221,9 @@ private slots:
         STRATAMESH_REQUIRE_DATA(path, "modelA1.ml");
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("remeshed.xyz"));
-        const CliRun r = runCli({QStringLiteral("remesh"), path, QStringLiteral("--sites"), QStringLiteral("100"),
-                                 QStringLiteral("-o"), out, QStringLiteral("--report"), dir.filePath("r.json")});
+        const CliRun r = runCli({QStringLiteral("remesh"), path, QStringLiteral("--sites"),
+                                 QStringLiteral("100"), QStringLiteral("-o"), out,
+                                 QStringLiteral("--report"), dir.filePath("r.json")});
         QVERIFY(r.finished);
         QVERIFY(r.exitCode != 0);
         QVERIFY(!QFile::exists(out));
@@ -211,23 +235,30 @@ private slots:
         STRATAMESH_REQUIRE_DATA(path, "modelA1.ml");
         QTemporaryDir dir;
         const QString vtu = dir.filePath(QStringLiteral("cells.vtu"));
-        const QJsonObject r = runJson({QStringLiteral("complexity"), path, QStringLiteral("--cells"),
-                                       QStringLiteral("100"), QStringLiteral("--json"), QStringLiteral("--cells-vtk"), vtu});
+        const QJsonObject r = runJson(
+            {QStringLiteral("complexity"), path, QStringLiteral("--cells"), QStringLiteral("100"),
+             QStringLiteral("--json"), QStringLiteral("--cells-vtk"), vtu});
         QVERIFY(!r.isEmpty());
         const QJsonObject global = r[QStringLiteral("global")].toObject();
         // Thesis Table 3.1 and 3.3 for modelA1.
         QCOMPARE(global[QStringLiteral("counts")][QStringLiteral("regions")].toInt(), 4);
         QCOMPARE(global[QStringLiteral("counts")][QStringLiteral("surfaces")].toInt(), 3);
-        QVERIFY(std::abs(global[QStringLiteral("variation")][QStringLiteral("regions")].toDouble() - 0.74) < 0.005);
-        QVERIFY(std::abs(global[QStringLiteral("variation")][QStringLiteral("surfaces")].toDouble()) < 0.005);
+        QVERIFY(std::abs(global[QStringLiteral("variation")][QStringLiteral("regions")].toDouble()
+                         - 0.74)
+                < 0.005);
+        QVERIFY(std::abs(global[QStringLiteral("variation")][QStringLiteral("surfaces")].toDouble())
+                < 0.005);
         for (const char *key : {"regions", "surfaces", "lines", "total"})
-            QVERIFY2(global[QStringLiteral("geometric")][QLatin1String(key)].toDouble(-1) >= 0, key);
+            QVERIFY2(global[QStringLiteral("geometric")][QLatin1String(key)].toDouble(-1) >= 0,
+                     key);
         const QJsonArray local = r[QStringLiteral("local")].toArray();
         QCOMPARE(local.size(), 1);
         const QJsonObject cells = local[0].toObject();
         QCOMPARE(cells[QStringLiteral("cells")].toInt(), 100);
-        const int q10 = cells[QStringLiteral("q10")].toInt(), q50 = cells[QStringLiteral("q50")].toInt();
-        const int q90 = cells[QStringLiteral("q90")].toInt(), max = cells[QStringLiteral("max")].toInt();
+        const int q10 = cells[QStringLiteral("q10")].toInt(),
+                  q50 = cells[QStringLiteral("q50")].toInt();
+        const int q90 = cells[QStringLiteral("q90")].toInt(),
+                  max = cells[QStringLiteral("max")].toInt();
         QVERIFY(1 <= q10 && q10 <= q50 && q50 <= q90 && q90 <= max);
         QVERIFY(r.contains(QStringLiteral("timings")));
         QFile file(vtu);
@@ -239,8 +270,8 @@ private slots:
     void complexityRefusesBadCells()
     {
         STRATAMESH_REQUIRE_DATA(path, "modelA1.ml");
-        const CliRun r =
-            runCli({QStringLiteral("complexity"), path, QStringLiteral("--cells"), QStringLiteral("10,x"), QStringLiteral("--json")});
+        const CliRun r = runCli({QStringLiteral("complexity"), path, QStringLiteral("--cells"),
+                                 QStringLiteral("10,x"), QStringLiteral("--json")});
         QVERIFY(r.finished);
         QVERIFY(r.exitCode != 0);
         QVERIFY2(r.err.contains(QStringLiteral("--cells")), qPrintable(r.err));
@@ -250,8 +281,10 @@ private slots:
     {
         const QString missing = QStringLiteral("/nonexistent/model.ml");
         for (const QStringList &arguments :
-             {QStringList{QStringLiteral("cvt"), missing, QStringLiteral("--sites"), QStringLiteral("10")},
-              QStringList{QStringLiteral("complexity"), missing, QStringLiteral("--cells"), QStringLiteral("10")}}) {
+             {QStringList{QStringLiteral("cvt"), missing, QStringLiteral("--sites"),
+                          QStringLiteral("10")},
+              QStringList{QStringLiteral("complexity"), missing, QStringLiteral("--cells"),
+                          QStringLiteral("10")}}) {
             const CliRun r = runCli(arguments);
             QVERIFY(r.finished);
             QVERIFY(r.exitCode != 0);

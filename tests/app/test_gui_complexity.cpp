@@ -43,7 +43,8 @@ namespace {
 
 constexpr int kTimeoutMs = 60000;
 
-bool waitForComplexity(MainWindow &window, const ComplexityParams &params, bool cancelAtOnce = false)
+bool waitForComplexity(MainWindow &window, const ComplexityParams &params,
+                       bool cancelAtOnce = false)
 {
     QSignalSpy finished(&window, &MainWindow::complexityFinished);
     if (!window.startComplexity(params))
@@ -128,7 +129,8 @@ private slots:
         QCOMPARE(options.complexityCells, 500);
         QCOMPARE(options.openPath, QStringLiteral("m.ml"));
         GuiOptions bad;
-        QVERIFY(!parseGuiOptions({QStringLiteral("stratamesh"), QStringLiteral("--complexity-cells"), QStringLiteral("0")},
+        QVERIFY(!parseGuiOptions({QStringLiteral("stratamesh"),
+                                  QStringLiteral("--complexity-cells"), QStringLiteral("0")},
                                  bad, exitCode));
         QCOMPARE(exitCode, 2);
     }
@@ -159,7 +161,8 @@ private slots:
     void dockShowsTheCoreFigures()
     {
         const ComplexityParams params = smallRun();
-        QSignalSpy progress(m_window->complexityController(), &ComplexityController::progressChanged);
+        QSignalSpy progress(m_window->complexityController(),
+                            &ComplexityController::progressChanged);
         QVERIFY(waitForComplexity(*m_window, params));
         // The bar only moves forward through the stages and ends full.
         QVERIFY(!progress.isEmpty());
@@ -184,14 +187,22 @@ private slots:
         QCOMPARE(panel->globalText(P::CountsRow, P::TotalColumn),
                  QString::number(n.regions + n.surfaces + n.lines + n.corners));
         QVERIFY(n.surfaces > 0);
-        QCOMPARE(panel->globalText(P::GeometricRow, P::RegionsColumn), c.toString(core.geometric.regionsTotal, 'f', 2));
-        QCOMPARE(panel->globalText(P::GeometricRow, P::SurfacesColumn), c.toString(core.geometric.surfacesTotal, 'f', 2));
-        QCOMPARE(panel->globalText(P::GeometricRow, P::LinesColumn), c.toString(core.geometric.linesTotal, 'f', 2));
-        QCOMPARE(panel->globalText(P::GeometricRow, P::TotalColumn), c.toString(core.geometric.total(), 'f', 2));
-        QCOMPARE(panel->globalText(P::VariationRow, P::RegionsColumn), c.toString(core.variation.regions, 'f', 2));
-        QCOMPARE(panel->globalText(P::VariationRow, P::SurfacesColumn), c.toString(core.variation.surfaces, 'f', 2));
-        QCOMPARE(panel->globalText(P::VariationRow, P::LinesColumn), c.toString(core.variation.lines, 'f', 2));
-        QCOMPARE(panel->globalText(P::VariationRow, P::TotalColumn), c.toString(core.variation.total, 'f', 2));
+        QCOMPARE(panel->globalText(P::GeometricRow, P::RegionsColumn),
+                 c.toString(core.geometric.regionsTotal, 'f', 2));
+        QCOMPARE(panel->globalText(P::GeometricRow, P::SurfacesColumn),
+                 c.toString(core.geometric.surfacesTotal, 'f', 2));
+        QCOMPARE(panel->globalText(P::GeometricRow, P::LinesColumn),
+                 c.toString(core.geometric.linesTotal, 'f', 2));
+        QCOMPARE(panel->globalText(P::GeometricRow, P::TotalColumn),
+                 c.toString(core.geometric.total(), 'f', 2));
+        QCOMPARE(panel->globalText(P::VariationRow, P::RegionsColumn),
+                 c.toString(core.variation.regions, 'f', 2));
+        QCOMPARE(panel->globalText(P::VariationRow, P::SurfacesColumn),
+                 c.toString(core.variation.surfaces, 'f', 2));
+        QCOMPARE(panel->globalText(P::VariationRow, P::LinesColumn),
+                 c.toString(core.variation.lines, 'f', 2));
+        QCOMPARE(panel->globalText(P::VariationRow, P::TotalColumn),
+                 c.toString(core.variation.total, 'f', 2));
         const LocalComplexity &local = core.local.front();
         const CountStatistics &s = local.statistics;
         QCOMPARE(local.counts.size(), std::size_t(100));
@@ -230,7 +241,9 @@ private slots:
                 QVERIFY(local.counts[id].total() >= threshold);
                 ++faces[id];
             }
-            const auto drawn = [&](int j) { return j >= 0 && local.counts[j].total() >= threshold; };
+            const auto drawn = [&](int j) {
+                return j >= 0 && local.counts[j].total() >= threshold;
+            };
             for (std::size_t i = 0; i < local.counts.size(); ++i) {
                 int expected = 0;
                 if (drawn(int(i)))

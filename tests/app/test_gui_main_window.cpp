@@ -4,15 +4,15 @@
 #include "support/test_data.h"
 #include "widgets/image_compare.h"
 
+#include "common/error.h"
 #include "feature_legend.h"
 #include "io/model_reader.h"
-#include "model/model_counts.h"
-#include "common/error.h"
 #include "main_window.h"
-#include "translations.h"
 #include "message_panel.h"
+#include "model/model_counts.h"
 #include "model_scene.h"
 #include "open_model_controller.h"
+#include "translations.h"
 #include "vtk_view_widget.h"
 
 #include <QAction>
@@ -77,7 +77,8 @@ private slots:
         QVERIFY(m_window->legend()->isVisible());
         const ModelCounts counts = countEntities(*model);
         QVERIFY(counts.withoutBox.surfaces > 0);
-        QVERIFY2(m_window->statusCounts().contains(QStringLiteral("%1 surfaces").arg(counts.withoutBox.surfaces)),
+        QVERIFY2(m_window->statusCounts().contains(
+                     QStringLiteral("%1 surfaces").arg(counts.withoutBox.surfaces)),
                  qPrintable(m_window->statusCounts()));
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), 0);
     }
@@ -92,7 +93,8 @@ private slots:
         const QImage with = m_window->view()->grabFramebuffer();
         const int changed = test::differingPixels(with, without, 6);
         qInfo("box changes %d pixels", changed);
-        QVERIFY2(changed > with.width() * with.height() / 100, qPrintable(QString::number(changed)));
+        QVERIFY2(changed > with.width() * with.height() / 100,
+                 qPrintable(QString::number(changed)));
         m_window->showBoxAction()->trigger();
         QVERIFY(!m_window->scene()->boxVisible());
         QCOMPARE(test::differingPixels(m_window->view()->grabFramebuffer(), without, 6), 0);
@@ -116,7 +118,8 @@ private slots:
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), 0);
         QVERIFY(m_window->windowTitle().contains(QStringLiteral("modelA1.ml")));
         // Thesis Table 3.1 for model A1 (box excluded): 4 regions, 3 surfaces, no line, no corner.
-        QVERIFY2(m_window->statusCounts().startsWith(QStringLiteral("4 regions  ·  3 surfaces  ·  0 lines  ·  0 corners")),
+        QVERIFY2(m_window->statusCounts().startsWith(
+                     QStringLiteral("4 regions  ·  3 surfaces  ·  0 lines  ·  0 corners")),
                  qPrintable(m_window->statusCounts()));
     }
 
@@ -127,8 +130,9 @@ private slots:
         const QString path = dir.filePath(QStringLiteral("broken.ts"));
         QFile file(path);
         QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write("GOCAD TSurf 1\nHEADER {\nname: broken\n}\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 nope\n"
-                   "VRTX 3 0 1 0\nTRGL 1 2 3\nEND\n");
+        file.write(
+            "GOCAD TSurf 1\nHEADER {\nname: broken\n}\nTFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 nope\n"
+            "VRTX 3 0 1 0\nTRGL 1 2 3\nEND\n");
         file.close();
         // What the core says about this file is what the panel must show.
         int line = 0;
@@ -149,7 +153,8 @@ private slots:
         int row = 0;
         while (panel->message(row).severity != Message::Severity::Error)
             ++row;
-        QCOMPARE(panel->cellText(row, MessagePanel::LocationColumn), QStringLiteral("broken.ts:%1").arg(line));
+        QCOMPARE(panel->cellText(row, MessagePanel::LocationColumn),
+                 QStringLiteral("broken.ts:%1").arg(line));
         QCOMPARE(panel->cellText(row, MessagePanel::TextColumn), cause);
         QCOMPARE(panel->message(row).file, path);
         // A failed open leaves the previous model on screen.
@@ -161,7 +166,8 @@ private slots:
         QVERIFY(!load(*m_window, QStringLiteral("/nonexistent/dir/model.ml")));
         MessagePanel *panel = m_window->messagePanel();
         QCOMPARE(panel->count(Message::Severity::Error), 1);
-        QVERIFY(panel->cellText(0, MessagePanel::LocationColumn).startsWith(QStringLiteral("model.ml")));
+        QVERIFY(panel->cellText(0, MessagePanel::LocationColumn)
+                    .startsWith(QStringLiteral("model.ml")));
     }
 
     void screenshotCommandWritesThePicture()
@@ -180,7 +186,8 @@ private slots:
         // The coloured surfaces must be in the picture, not just the grey window frame.
         const int coloured = test::saturatedPixels(image);
         qInfo("screenshot %dx%d, %d saturated pixels", image.width(), image.height(), coloured);
-        QVERIFY2(coloured > image.width() * image.height() / 20, qPrintable(QString::number(coloured)));
+        QVERIFY2(coloured > image.width() * image.height() / 20,
+                 qPrintable(QString::number(coloured)));
     }
 
     void screenshotOfABrokenFileExitsWithTwo()
@@ -189,7 +196,8 @@ private slots:
         const QString png = dir.filePath(QStringLiteral("shot.png"));
         QProcess process;
         process.start(QStringLiteral(STRATAMESH_GUI_PATH),
-                      {QStringLiteral("--open"), dir.filePath(QStringLiteral("absent.ml")), QStringLiteral("--screenshot"), png});
+                      {QStringLiteral("--open"), dir.filePath(QStringLiteral("absent.ml")),
+                       QStringLiteral("--screenshot"), png});
         QVERIFY(process.waitForFinished(kLoadTimeoutMs));
         QCOMPARE(process.exitCode(), 2);
         QVERIFY(!QImage(png).isNull());

@@ -152,10 +152,13 @@ private slots:
         QVERIFY(m_window->outputView()->isVisible());
         QVERIFY(m_window->view()->isVisible());
         // One camera for both views: they always show the same place.
-        QCOMPARE(m_window->outputView()->renderer()->GetActiveCamera(), m_window->view()->renderer()->GetActiveCamera());
-        QCOMPARE(m_window->outputScene()->surfaceActorCount(), int(outcome->output->surfaces.size()));
+        QCOMPARE(m_window->outputView()->renderer()->GetActiveCamera(),
+                 m_window->view()->renderer()->GetActiveCamera());
+        QCOMPARE(m_window->outputScene()->surfaceActorCount(),
+                 int(outcome->output->surfaces.size()));
         QVERIFY(outcome->output->triangleCount() > 0);
-        QVERIFY(outcome->output->triangleCount() < m_inputTriangles); // 300 sites for a 4520-triangle model
+        QVERIFY(outcome->output->triangleCount()
+                < m_inputTriangles); // 300 sites for a 4520-triangle model
         const QImage output = m_window->outputView()->grabFramebuffer();
         const int drawn = test::saturatedPixels(output);
         qInfo("%zu output triangles, %zu ledger records, %d saturated output pixels",
@@ -168,7 +171,8 @@ private slots:
         QCOMPARE(ledger->visibleRowCount(), int(outcome->ledger->size()));
         for (LedgerKind kind : LedgerTableModel::allKinds())
             if (const int n = countKind(*outcome->ledger, kind); n > 0)
-                QVERIFY2(ledger->summaryText().contains(QStringLiteral("%1: %2").arg(LedgerTableModel::kindText(kind)).arg(n)),
+                QVERIFY2(ledger->summaryText().contains(
+                             QStringLiteral("%1: %2").arg(LedgerTableModel::kindText(kind)).arg(n)),
                          qPrintable(ledger->summaryText()));
 
         // Table 4.2 figures are the core's comparison of these two models.
@@ -183,21 +187,31 @@ private slots:
                  QString::number(outCounts.withoutBox.surfaces));
         QCOMPARE(table->cellText(ComparisonTable::LinesRow, ComparisonTable::OutputColumn),
                  QString::number(outCounts.withoutBox.lines));
-        const double hausdorff = table->cellText(ComparisonTable::HausdorffRow, ComparisonTable::OutputColumn).toDouble();
+        const double hausdorff =
+            table->cellText(ComparisonTable::HausdorffRow, ComparisonTable::OutputColumn)
+                .toDouble();
         QVERIFY2(hausdorff > 0.0 && hausdorff < 10.0, qPrintable(QString::number(hausdorff)));
-        QCOMPARE(table->cellText(ComparisonTable::HausdorffRow, ComparisonTable::InputColumn), QStringLiteral("—"));
+        QCOMPARE(table->cellText(ComparisonTable::HausdorffRow, ComparisonTable::InputColumn),
+                 QStringLiteral("—"));
         // The histograms are the comparison's, bin by bin, in % of the triangles.
-        const Histogram &inQ = outcome->comparison.inputQuality, &outQ = outcome->comparison.outputQuality;
+        const Histogram &inQ = outcome->comparison.inputQuality,
+                        &outQ = outcome->comparison.outputQuality;
         QCOMPARE(table->qualityChart()->binCount(), int(inQ.binCount()));
-        QCOMPARE(table->minAngleChart()->binCount(), int(outcome->comparison.outputMinAngle.binCount()));
+        QCOMPARE(table->minAngleChart()->binCount(),
+                 int(outcome->comparison.outputMinAngle.binCount()));
         double inSum = 0.0, outSum = 0.0;
         for (int bin = 0; bin < table->qualityChart()->binCount(); ++bin) {
-            QVERIFY(qAbs(table->qualityChart()->inputPercent(bin) - 100.0 * inQ.fraction(std::size_t(bin))) < 1e-9);
-            QVERIFY(qAbs(table->qualityChart()->outputPercent(bin) - 100.0 * outQ.fraction(std::size_t(bin))) < 1e-9);
+            QVERIFY(qAbs(table->qualityChart()->inputPercent(bin)
+                         - 100.0 * inQ.fraction(std::size_t(bin)))
+                    < 1e-9);
+            QVERIFY(qAbs(table->qualityChart()->outputPercent(bin)
+                         - 100.0 * outQ.fraction(std::size_t(bin)))
+                    < 1e-9);
             inSum += table->qualityChart()->inputPercent(bin);
             outSum += table->qualityChart()->outputPercent(bin);
         }
-        QVERIFY2(qAbs(inSum - 100.0) < 1e-6 && qAbs(outSum - 100.0) < 1e-6, qPrintable(QStringLiteral("%1 %2").arg(inSum).arg(outSum)));
+        QVERIFY2(qAbs(inSum - 100.0) < 1e-6 && qAbs(outSum - 100.0) < 1e-6,
+                 qPrintable(QStringLiteral("%1 %2").arg(inSum).arg(outSum)));
 
         QVERIFY(m_window->saveRemeshedAction()->isEnabled());
         QVERIFY(m_window->remeshAction()->isEnabled());
@@ -214,7 +228,8 @@ private slots:
         ledger->setKindFilter(kind);
         QCOMPARE(ledger->visibleRowCount(), countKind(*outcome->ledger, kind));
         for (int row = 0; row < ledger->visibleRowCount(); ++row)
-            QCOMPARE((*outcome->ledger)[std::size_t(ledger->filter()->recordIndex(row))].kind, kind);
+            QCOMPARE((*outcome->ledger)[std::size_t(ledger->filter()->recordIndex(row))].kind,
+                     kind);
 
         // Selecting a row marks the record's position in the output view.
         const int last = ledger->visibleRowCount() - 1;
@@ -222,7 +237,10 @@ private slots:
         const QImage unmarked = m_window->outputView()->grabFramebuffer();
         ledger->selectRow(last);
         QVERIFY(m_window->marker()->isVisible());
-        QVERIFY((m_window->marker()->position() - (*outcome->ledger)[std::size_t(recordIndex)].position).norm() < 1e-12);
+        QVERIFY(
+            (m_window->marker()->position() - (*outcome->ledger)[std::size_t(recordIndex)].position)
+                .norm()
+            < 1e-12);
         const QImage marked = m_window->outputView()->grabFramebuffer();
         QVERIFY(test::differingPixels(marked, unmarked, 6) > 0);
         ledger->selectRow(-1);
@@ -237,7 +255,8 @@ private slots:
         const auto &outcome = m_window->remeshOutcome();
         QVERIFY(outcome);
         QTemporaryDir dir;
-        for (const QString &name : {QStringLiteral("remeshed.ml"), QStringLiteral("remeshed.ts"), QStringLiteral("remeshed.gm")}) {
+        for (const QString &name : {QStringLiteral("remeshed.ml"), QStringLiteral("remeshed.ts"),
+                                    QStringLiteral("remeshed.gm")}) {
             const QString path = dir.filePath(name);
             QVERIFY(m_window->saveRemeshedModel(path));
             const Model back = readModel(path.toStdString());

@@ -40,18 +40,24 @@ QList<TsMessage> readTs(const QString &path)
         if (xml.name() == QLatin1String("name"))
             context = xml.readElementText();
         else if (xml.name() == QLatin1String("message")) {
-            current = TsMessage{context, {}, {}, true,
-                                xml.attributes().value(QLatin1String("numerus")) == QLatin1String("yes"), 0};
+            current =
+                TsMessage{context,
+                          {},
+                          {},
+                          true,
+                          xml.attributes().value(QLatin1String("numerus")) == QLatin1String("yes"),
+                          0};
         } else if (xml.name() == QLatin1String("source"))
             current.source = xml.readElementText();
         else if (xml.name() == QLatin1String("translation")) {
             const auto type = xml.attributes().value(QLatin1String("type"));
             current.finished = type.isEmpty();
             if (current.numerus) {
-                while (!(xml.isEndElement() && xml.name() == QLatin1String("translation")) && !xml.atEnd()) {
+                while (!(xml.isEndElement() && xml.name() == QLatin1String("translation"))
+                       && !xml.atEnd()) {
                     xml.readNext();
-                    if (xml.isStartElement() && xml.name() == QLatin1String("numerusform") &&
-                        !xml.readElementText().isEmpty())
+                    if (xml.isStartElement() && xml.name() == QLatin1String("numerusform")
+                        && !xml.readElementText().isEmpty())
                         ++current.numerusForms;
                 }
             } else {
@@ -70,7 +76,8 @@ class TestGuiTranslations : public QObject {
 private slots:
     void everyStringIsTranslated()
     {
-        const QList<TsMessage> messages = readTs(QStringLiteral(STRATAMESH_TS_DIR "/stratamesh_fr.ts"));
+        const QList<TsMessage> messages =
+            readTs(QStringLiteral(STRATAMESH_TS_DIR "/stratamesh_fr.ts"));
         QVERIFY2(messages.size() > 40, qPrintable(QString::number(messages.size())));
         for (const TsMessage &m : messages) {
             QVERIFY2(m.finished, qPrintable(m.context + QLatin1String(": ") + m.source));
@@ -108,9 +115,11 @@ private slots:
         QProcess lupdate;
         lupdate.setProcessChannelMode(QProcess::MergedChannels);
         lupdate.start(QStringLiteral(STRATAMESH_LUPDATE),
-                      {QStringLiteral("-silent"), QStringLiteral("-no-obsolete"), QStringLiteral("-locations"),
-                       QStringLiteral("none"), QStringLiteral(STRATAMESH_GUI_SOURCE_DIR),
-                       QStringLiteral(STRATAMESH_WIDGETS_SOURCE_DIR), QStringLiteral("-ts"), fresh});
+                      {QStringLiteral("-silent"), QStringLiteral("-no-obsolete"),
+                       QStringLiteral("-locations"), QStringLiteral("none"),
+                       QStringLiteral(STRATAMESH_GUI_SOURCE_DIR),
+                       QStringLiteral(STRATAMESH_WIDGETS_SOURCE_DIR), QStringLiteral("-ts"),
+                       fresh});
         QVERIFY(lupdate.waitForFinished(60000));
         QVERIFY2(lupdate.exitCode() == 0, lupdate.readAll().constData());
         QSet<QString> expected, committed;
@@ -120,25 +129,32 @@ private slots:
             committed.insert(m.context + QLatin1Char('|') + m.source);
         QVERIFY(!expected.isEmpty());
         for (const QString &key : expected)
-            QVERIFY2(committed.contains(key), qPrintable(QLatin1String("not in the .ts (run the lupdate target): ") + key));
+            QVERIFY2(committed.contains(key),
+                     qPrintable(QLatin1String("not in the .ts (run the lupdate target): ") + key));
         for (const QString &key : committed)
-            QVERIFY2(expected.contains(key), qPrintable(QLatin1String("obsolete in the .ts: ") + key));
+            QVERIFY2(expected.contains(key),
+                     qPrintable(QLatin1String("obsolete in the .ts: ") + key));
     }
 
     void languageIsFoundBeforeTheFullParse()
     {
-        QCOMPARE(languageArgument({QStringLiteral("stratamesh"), QStringLiteral("--lang"), QStringLiteral("FR")}),
+        QCOMPARE(languageArgument({QStringLiteral("stratamesh"), QStringLiteral("--lang"),
+                                   QStringLiteral("FR")}),
                  QStringLiteral("fr"));
-        QCOMPARE(languageArgument({QStringLiteral("stratamesh"), QStringLiteral("x.ml"), QStringLiteral("--lang=en")}),
+        QCOMPARE(languageArgument({QStringLiteral("stratamesh"), QStringLiteral("x.ml"),
+                                   QStringLiteral("--lang=en")}),
                  QStringLiteral("en"));
-        QCOMPARE(languageArgument({QStringLiteral("stratamesh"), QStringLiteral("--lang")}), QString());
+        QCOMPARE(languageArgument({QStringLiteral("stratamesh"), QStringLiteral("--lang")}),
+                 QString());
         GuiOptions options;
         int exitCode = -1;
-        QVERIFY(!parseGuiOptions({QStringLiteral("stratamesh"), QStringLiteral("--lang"), QStringLiteral("de")}, options,
-                                 exitCode));
+        QVERIFY(!parseGuiOptions(
+            {QStringLiteral("stratamesh"), QStringLiteral("--lang"), QStringLiteral("de")}, options,
+            exitCode));
         QCOMPARE(exitCode, 2);
-        QVERIFY(parseGuiOptions({QStringLiteral("stratamesh"), QStringLiteral("--lang"), QStringLiteral("fr"),
-                                 QStringLiteral("--show-box"), QStringLiteral("m.ml")},
+        QVERIFY(parseGuiOptions({QStringLiteral("stratamesh"), QStringLiteral("--lang"),
+                                 QStringLiteral("fr"), QStringLiteral("--show-box"),
+                                 QStringLiteral("m.ml")},
                                 options, exitCode));
         QCOMPARE(options.language, QStringLiteral("fr"));
         QCOMPARE(options.openPath, QStringLiteral("m.ml"));
@@ -149,8 +165,11 @@ private slots:
     void englishPluralsAreLoaded()
     {
         QCOMPARE(installTranslations(QStringLiteral("en")), QStringLiteral("en"));
-        QCOMPARE(QCoreApplication::translate("stratamesh::MainWindow", "%n surface(s)", nullptr, 1), QStringLiteral("1 surface"));
-        QCOMPARE(QCoreApplication::translate("stratamesh::MainWindow", "%n surface(s)", nullptr, 31), QStringLiteral("31 surfaces"));
+        QCOMPARE(QCoreApplication::translate("stratamesh::MainWindow", "%n surface(s)", nullptr, 1),
+                 QStringLiteral("1 surface"));
+        QCOMPARE(
+            QCoreApplication::translate("stratamesh::MainWindow", "%n surface(s)", nullptr, 31),
+            QStringLiteral("31 surfaces"));
     }
 
     // Runs last: the translator stays installed.
@@ -158,13 +177,15 @@ private slots:
     {
         QCOMPARE(installTranslations(QStringLiteral("fr")), QStringLiteral("fr"));
         // French uses the singular for zero.
-        QCOMPARE(QCoreApplication::translate("stratamesh::MainWindow", "%n corner(s)", nullptr, 0), QStringLiteral("0 coin"));
+        QCOMPARE(QCoreApplication::translate("stratamesh::MainWindow", "%n corner(s)", nullptr, 0),
+                 QStringLiteral("0 coin"));
         MainWindow window;
         QStringList menus;
         for (QAction *action : window.menuBar()->actions())
             menus << action->text();
-        QCOMPARE(menus, (QStringList{QStringLiteral("&Fichier"), QStringLiteral("&Affichage"), QStringLiteral("&Maillage"),
-                                  QStringLiteral("A&nalyse"), QStringLiteral("&Aide")}));
+        QCOMPARE(menus, (QStringList{QStringLiteral("&Fichier"), QStringLiteral("&Affichage"),
+                                     QStringLiteral("&Maillage"), QStringLiteral("A&nalyse"),
+                                     QStringLiteral("&Aide")}));
         QCOMPARE(window.showBoxAction()->text(), QStringLiteral("Afficher la &boîte"));
     }
 };

@@ -17,8 +17,8 @@ namespace {
 std::string inputPath()
 {
     const char *dir = std::getenv("TMPDIR");
-    std::string path = std::string(dir && *dir ? dir : "/tmp") + "/stratamesh-fuzz-" + std::to_string(getpid()) +
-                       STRATAMESH_FUZZ_EXTENSION;
+    std::string path = std::string(dir && *dir ? dir : "/tmp") + "/stratamesh-fuzz-"
+                       + std::to_string(getpid()) + STRATAMESH_FUZZ_EXTENSION;
     return path;
 }
 

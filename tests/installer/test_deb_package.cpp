@@ -47,10 +47,11 @@ private slots:
     {
         QVERIFY(m_work.isValid());
         const QString packageDir = m_work.filePath(QStringLiteral("package"));
-        const Run cpack = run(QStringLiteral(STRATAMESH_CPACK),
-                              {QStringLiteral("-G"), QStringLiteral("DEB"), QStringLiteral("--config"),
-                               QStringLiteral(STRATAMESH_BINARY_DIR "/CPackConfig.cmake"),
-                               QStringLiteral("-B"), packageDir});
+        const Run cpack =
+            run(QStringLiteral(STRATAMESH_CPACK),
+                {QStringLiteral("-G"), QStringLiteral("DEB"), QStringLiteral("--config"),
+                 QStringLiteral(STRATAMESH_BINARY_DIR "/CPackConfig.cmake"), QStringLiteral("-B"),
+                 packageDir});
         QVERIFY2(cpack.exitCode == 0, qPrintable(cpack.out + cpack.err));
         const QStringList debs = QDir(packageDir).entryList({QStringLiteral("stratamesh_*.deb")});
         QVERIFY2(debs.size() == 1, qPrintable(debs.join(QLatin1Char(' '))));
@@ -79,12 +80,14 @@ private slots:
         for (const QString &file : expected)
             QVERIFY2(QFile::exists(QDir(m_root).filePath(file)), qPrintable(file));
         // A runtime package carries no development link (that belongs in a -dev package).
-        QVERIFY(!QFileInfo::exists(QDir(m_root).filePath(QStringLiteral("usr/lib/libstratamesh_core.so"))));
+        QVERIFY(!QFileInfo::exists(
+            QDir(m_root).filePath(QStringLiteral("usr/lib/libstratamesh_core.so"))));
 
         QFile license(QDir(m_root).filePath(QStringLiteral("usr/share/doc/stratamesh/copyright")));
         QVERIFY(license.open(QIODevice::ReadOnly));
         QVERIFY(license.readAll().contains("GNU AFFERO GENERAL PUBLIC LICENSE"));
-        QFile desktop(QDir(m_root).filePath(QStringLiteral("usr/share/applications/stratamesh.desktop")));
+        QFile desktop(
+            QDir(m_root).filePath(QStringLiteral("usr/share/applications/stratamesh.desktop")));
         QVERIFY(desktop.open(QIODevice::ReadOnly));
         const QByteArray entry = desktop.readAll();
         QVERIFY(entry.contains("\nExec=stratamesh "));

@@ -14,8 +14,9 @@ QString dataFile(const QString &name);
 } // namespace stratamesh::test
 
 // Skips the current test function when a real model is not available.
-#define STRATAMESH_REQUIRE_DATA(var, name)                                                       \
-    const QString var = stratamesh::test::dataFile(name);                                         \
-    if (var.isEmpty())                                                                            \
-        QSKIP(qPrintable(QStringLiteral("*** DATA MISSING: %1 not found in %2 (set STRATAMESH_DATA_DIR) ***") \
-                             .arg(name, stratamesh::test::dataDir())));
+#define STRATAMESH_REQUIRE_DATA(var, name)                                                         \
+    const QString var = stratamesh::test::dataFile(name);                                          \
+    if (var.isEmpty())                                                                             \
+        QSKIP(qPrintable(                                                                          \
+            QStringLiteral("*** DATA MISSING: %1 not found in %2 (set STRATAMESH_DATA_DIR) ***")   \
+                .arg(name, stratamesh::test::dataDir())));

@@ -36,8 +36,9 @@ inline Model sceneTestModel()
     m.name = "scene_test";
     m.surfaces.push_back(gridSurface("horizon", FeatureType::Horizon, 8,
                                      [](double u, double v) { return Vec3(2 * u, 2 * v, 0.5); }));
-    m.surfaces.push_back(gridSurface("fault", FeatureType::Fault, 4,
-                                     [](double u, double v) { return Vec3(1.2, 2 * u, 0.5 + 0.5 * v); }));
+    m.surfaces.push_back(gridSurface("fault", FeatureType::Fault, 4, [](double u, double v) {
+        return Vec3(1.2, 2 * u, 0.5 + 0.5 * v);
+    }));
     const auto box = [&](const char *name, std::function<Vec3(double, double)> at) {
         m.surfaces.push_back(gridSurface(name, FeatureType::Boundary, 2, at));
     };

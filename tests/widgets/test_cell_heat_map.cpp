@@ -23,7 +23,7 @@ std::shared_ptr<const std::vector<ConvexPolyhedron>> threeCells()
     auto cells = std::make_shared<std::vector<ConvexPolyhedron>>();
     ConvexPolyhedron left = ConvexPolyhedron::box(Box3(Vec3(0, 0, 0), Vec3(1, 1, 1)));
     ConvexPolyhedron right = left;
-    left.clip(HalfSpace{Vec3(1, 0, 0), 0.5, 1});   // x <= 0.5, across: cell 1
+    left.clip(HalfSpace{Vec3(1, 0, 0), 0.5, 1});    // x <= 0.5, across: cell 1
     right.clip(HalfSpace{Vec3(-1, 0, 0), -0.5, 0}); // x >= 0.5, across: cell 0
     cells->push_back(left);
     cells->push_back(right);

@@ -14,8 +14,8 @@ using namespace stratamesh;
 
 namespace {
 
-LedgerRecord record(LedgerKind kind, std::vector<EntityRef> inputs, std::vector<EntityRef> outputs, double size,
-                    const char *meaning, Vec3 position)
+LedgerRecord record(LedgerKind kind, std::vector<EntityRef> inputs, std::vector<EntityRef> outputs,
+                    double size, const char *meaning, Vec3 position)
 {
     LedgerRecord r;
     r.kind = kind;
@@ -28,23 +28,29 @@ LedgerRecord record(LedgerKind kind, std::vector<EntityRef> inputs, std::vector<
     return r;
 }
 
-EntityRef ref(EntityKind kind, int id, const char *name) { return EntityRef{kind, id, name}; }
+EntityRef ref(EntityKind kind, int id, const char *name)
+{
+    return EntityRef{kind, id, name};
+}
 
 // 5 records of 3 kinds, the kinds interleaved so that filtering has to skip rows.
 std::shared_ptr<const SimplificationLedger> makeLedger()
 {
     auto ledger = std::make_shared<SimplificationLedger>();
+    ledger->push_back(
+        record(LedgerKind::CornerMerge,
+               {ref(EntityKind::Corner, 3, "corner_3"), ref(EntityKind::Corner, 8, "corner_8")},
+               {ref(EntityKind::Vertex, 41, "")}, 12.5, "distance", Vec3(1.0, 2.0, 3.0)));
+    ledger->push_back(record(LedgerKind::LineLost, {ref(EntityKind::Line, 7, "line_7")}, {}, 80.0,
+                             "length", Vec3(10.0, 20.0, -30.0)));
     ledger->push_back(record(LedgerKind::CornerMerge,
-                             {ref(EntityKind::Corner, 3, "corner_3"), ref(EntityKind::Corner, 8, "corner_8")},
-                             {ref(EntityKind::Vertex, 41, "")}, 12.5, "distance", Vec3(1.0, 2.0, 3.0)));
-    ledger->push_back(record(LedgerKind::LineLost, {ref(EntityKind::Line, 7, "line_7")}, {}, 80.0, "length",
-                             Vec3(10.0, 20.0, -30.0)));
-    ledger->push_back(record(LedgerKind::CornerMerge, {ref(EntityKind::Surface, 0, "H1"), ref(EntityKind::Surface, 2, "F1")},
+                             {ref(EntityKind::Surface, 0, "H1"), ref(EntityKind::Surface, 2, "F1")},
                              {}, 4.0, "distance", Vec3(5.0, 5.0, 5.0)));
-    ledger->push_back(record(LedgerKind::DegenerateContactTriangle, {ref(EntityKind::Surface, 1, "H2")},
-                             {ref(EntityKind::Surface, 1, "H2")}, 0.25, "area", Vec3(-1.0, 0.0, 0.5)));
-    ledger->push_back(record(LedgerKind::LineLost, {ref(EntityKind::Line, 9, "")}, {}, 3.0, "length",
-                             Vec3(0.0, 0.0, 0.0)));
+    ledger->push_back(
+        record(LedgerKind::DegenerateContactTriangle, {ref(EntityKind::Surface, 1, "H2")},
+               {ref(EntityKind::Surface, 1, "H2")}, 0.25, "area", Vec3(-1.0, 0.0, 0.5)));
+    ledger->push_back(record(LedgerKind::LineLost, {ref(EntityKind::Line, 9, "")}, {}, 3.0,
+                             "length", Vec3(0.0, 0.0, 0.0)));
     return ledger;
 }
 
@@ -69,19 +75,24 @@ private slots:
         QCOMPARE(model.rowCount(), int(ledger->size()));
         QCOMPARE(model.columnCount(), int(LedgerTableModel::ColumnCount));
         QCOMPARE(cell(model, 0, LedgerTableModel::KindColumn), QStringLiteral("Corner merge"));
-        QCOMPARE(cell(model, 0, LedgerTableModel::InputsColumn), QStringLiteral("corner_3, corner_8"));
+        QCOMPARE(cell(model, 0, LedgerTableModel::InputsColumn),
+                 QStringLiteral("corner_3, corner_8"));
         QCOMPARE(cell(model, 0, LedgerTableModel::OutputsColumn), QStringLiteral("vertex 41"));
         QCOMPARE(cell(model, 0, LedgerTableModel::SizeColumn), QStringLiteral("12.5 (distance)"));
         QCOMPARE(cell(model, 0, LedgerTableModel::PositionColumn), QStringLiteral("1.0, 2.0, 3.0"));
-        QCOMPARE(cell(model, 0, LedgerTableModel::NoteColumn), QStringLiteral("note of corner_merge"));
+        QCOMPARE(cell(model, 0, LedgerTableModel::NoteColumn),
+                 QStringLiteral("note of corner_merge"));
         QCOMPARE(cell(model, 1, LedgerTableModel::SizeColumn), QStringLiteral("80 (length)"));
-        QCOMPARE(cell(model, 1, LedgerTableModel::PositionColumn), QStringLiteral("10.0, 20.0, -30.0"));
+        QCOMPARE(cell(model, 1, LedgerTableModel::PositionColumn),
+                 QStringLiteral("10.0, 20.0, -30.0"));
         QCOMPARE(cell(model, 3, LedgerTableModel::SizeColumn), QStringLiteral("0.25 (area)"));
-        QCOMPARE(cell(model, 3, LedgerTableModel::KindColumn), QStringLiteral("Degenerate contact triangle"));
+        QCOMPARE(cell(model, 3, LedgerTableModel::KindColumn),
+                 QStringLiteral("Degenerate contact triangle"));
         // A line without a name is still named.
         QCOMPARE(cell(model, 4, LedgerTableModel::InputsColumn), QStringLiteral("line 9"));
         for (int row = 0; row < model.rowCount(); ++row) {
-            QCOMPARE(model.index(row, 0).data(LedgerTableModel::KindRole).toInt(), int((*ledger)[row].kind));
+            QCOMPARE(model.index(row, 0).data(LedgerTableModel::KindRole).toInt(),
+                     int((*ledger)[row].kind));
             QCOMPARE(model.index(row, 0).data(LedgerTableModel::RecordIndexRole).toInt(), row);
             QCOMPARE(model.record(row), &(*ledger)[row]);
         }
@@ -103,8 +114,9 @@ private slots:
     void summaryCountsEachKind()
     {
         const auto ledger = makeLedger();
-        QCOMPARE(LedgerTableModel::summary(*ledger),
-                 QStringLiteral("Corner merge: 2  ·  Degenerate contact triangle: 1  ·  Line lost: 2"));
+        QCOMPARE(
+            LedgerTableModel::summary(*ledger),
+            QStringLiteral("Corner merge: 2  ·  Degenerate contact triangle: 1  ·  Line lost: 2"));
         QCOMPARE(LedgerTableModel::summary({}), QString());
     }
 
@@ -152,8 +164,9 @@ private slots:
 
         panel.setKindFilter(LedgerKind::DegenerateContactTriangle);
         QCOMPARE(panel.visibleRowCount(), 1);
-        QCOMPARE(panel.tableView()->model()->index(0, LedgerTableModel::KindColumn).data().toString(),
-                 QStringLiteral("Degenerate contact triangle"));
+        QCOMPARE(
+            panel.tableView()->model()->index(0, LedgerTableModel::KindColumn).data().toString(),
+            QStringLiteral("Degenerate contact triangle"));
         panel.setKindFilter(LedgerKind::SurfaceLost); // absent: nothing to show
         QCOMPARE(panel.visibleRowCount(), 0);
         panel.setKindFilter(std::nullopt);

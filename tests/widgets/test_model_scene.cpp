@@ -77,11 +77,12 @@ private slots:
         scene.setModel(std::make_shared<const Model>(model));
         const auto &colors = scene.surfaceColors();
         QCOMPARE(colors.size(), model.surfaces.size());
-        const QColor horizon = colors[0], fault = colors[1], patch2 = colors[8], otherHorizon = colors[9];
-        QVERIFY(hueDistance(horizon, fault) > 40);   // types look different
-        QVERIFY(horizon != patch2);                   // patches of one feature are told apart ...
-        QVERIFY(hueDistance(horizon, patch2) <= 3);   // ... but keep the feature's hue
-        QVERIFY(horizon != otherHorizon);             // two features differ
+        const QColor horizon = colors[0], fault = colors[1], patch2 = colors[8],
+                     otherHorizon = colors[9];
+        QVERIFY(hueDistance(horizon, fault) > 40);      // types look different
+        QVERIFY(horizon != patch2);                     // patches of one feature are told apart ...
+        QVERIFY(hueDistance(horizon, patch2) <= 3);     // ... but keep the feature's hue
+        QVERIFY(horizon != otherHorizon);               // two features differ
         QVERIFY(hueDistance(otherHorizon, fault) > 40); // and remain horizon-like
     }
 

@@ -37,7 +37,9 @@ private slots:
     {
         QVERIFY(m_view.context());
         const QSurfaceFormat f = m_view.context()->format();
-        QVERIFY2(f.version() >= qMakePair(3, 2), qPrintable(QStringLiteral("OpenGL %1.%2").arg(f.majorVersion()).arg(f.minorVersion())));
+        QVERIFY2(
+            f.version() >= qMakePair(3, 2),
+            qPrintable(QStringLiteral("OpenGL %1.%2").arg(f.majorVersion()).arg(f.minorVersion())));
         QCOMPARE(f.profile(), QSurfaceFormat::CoreProfile);
     }
 
@@ -80,18 +82,22 @@ private slots:
         const QPoint c = m_view.rect().center();
         QTest::mousePress(&m_view, Qt::LeftButton, Qt::NoModifier, c);
         for (int i = 1; i <= 5; ++i) {
-            QMouseEvent move(QEvent::MouseMove, QPointF(c + QPoint(12 * i, 0)), m_view.mapToGlobal(QPointF(c + QPoint(12 * i, 0))),
-                             Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+            QMouseEvent move(QEvent::MouseMove, QPointF(c + QPoint(12 * i, 0)),
+                             m_view.mapToGlobal(QPointF(c + QPoint(12 * i, 0))), Qt::NoButton,
+                             Qt::LeftButton, Qt::NoModifier);
             QApplication::sendEvent(&m_view, &move);
         }
         QTest::mouseRelease(&m_view, Qt::LeftButton, Qt::NoModifier, c + QPoint(60, 0));
         camera->GetPosition(after);
-        const double moved = std::hypot(after[0] - before[0], after[1] - before[1], after[2] - before[2]);
+        const double moved =
+            std::hypot(after[0] - before[0], after[1] - before[1], after[2] - before[2]);
         QVERIFY2(moved > 1e-3, qPrintable(QString::number(moved)));
         // An orbit keeps the distance to the focal point.
-        QVERIFY(std::abs(camera->GetDistance() - std::hypot(before[0] - camera->GetFocalPoint()[0],
-                                                            before[1] - camera->GetFocalPoint()[1],
-                                                            before[2] - camera->GetFocalPoint()[2])) < 1e-6 * camera->GetDistance());
+        QVERIFY(std::abs(camera->GetDistance()
+                         - std::hypot(before[0] - camera->GetFocalPoint()[0],
+                                      before[1] - camera->GetFocalPoint()[1],
+                                      before[2] - camera->GetFocalPoint()[2]))
+                < 1e-6 * camera->GetDistance());
     }
 
     void wheelZooms()
@@ -99,8 +105,8 @@ private slots:
         vtkCamera *camera = m_view.renderer()->GetActiveCamera();
         const double before = camera->GetDistance();
         const QPointF c = m_view.rect().center();
-        QWheelEvent wheel(c, m_view.mapToGlobal(c), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
-                          Qt::NoScrollPhase, false);
+        QWheelEvent wheel(c, m_view.mapToGlobal(c), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
         QApplication::sendEvent(&m_view, &wheel);
         QVERIFY2(camera->GetDistance() < before, "wheel forward must move the camera closer");
     }
@@ -112,7 +118,7 @@ private slots:
         double up[3], dir[3];
         camera->GetViewUp(up);
         camera->GetDirectionOfProjection(dir);
-        QVERIFY(up[2] > 0.8); // z stays up on screen
+        QVERIFY(up[2] > 0.8);   // z stays up on screen
         QVERIFY(dir[2] < -0.3); // looking down onto the model
     }
 

@@ -76,7 +76,8 @@ private slots:
     void badInput()
     {
         const Box3 box(Vec3(0, 0, 0), Vec3(1, 1, 1));
-        QVERIFY_THROWS_EXCEPTION(InputError, clippedVoronoiCells({Vec3(0.5, 0.5, 0.5), Vec3(0.5, 0.5, 0.5)}, box));
+        QVERIFY_THROWS_EXCEPTION(
+            InputError, clippedVoronoiCells({Vec3(0.5, 0.5, 0.5), Vec3(0.5, 0.5, 0.5)}, box));
         BoxCvtParams params;
         params.sites = 0;
         QVERIFY_THROWS_EXCEPTION(InputError, runBoxCvt(box, params));

@@ -1,7 +1,7 @@
 // VTK export of complexity cells (core/io/cells_vtu_writer): read back with VTK's own reader.
 #include "common/error.h"
-#include "complexity/clipped_voronoi.h"
 #include "complexity/box_cvt.h"
+#include "complexity/clipped_voronoi.h"
 #include "io/cells_vtu_writer.h"
 
 #include <QTemporaryDir>
@@ -64,17 +64,19 @@ private slots:
                     volume += point(0).dot(point(i).cross(point(i + 1))) / 6.0;
                 k += n + 1;
             }
-            QVERIFY2(std::abs(volume - cells[id].volume()) < 1e-6 * cells[id].volume(), qPrintable(QString("%1 vs %2").arg(volume).arg(cells[id].volume())));
+            QVERIFY2(std::abs(volume - cells[id].volume()) < 1e-6 * cells[id].volume(),
+                     qPrintable(QString("%1 vs %2").arg(volume).arg(cells[id].volume())));
         }
     }
 
     void badArrays()
     {
         const Box3 box(Vec3(0, 0, 0), Vec3(1, 1, 1));
-        const std::vector<ConvexPolyhedron> cells = clippedVoronoiCells(randomSitesInBox(box, 4, 1), box);
+        const std::vector<ConvexPolyhedron> cells =
+            clippedVoronoiCells(randomSitesInBox(box, 4, 1), box);
         QTemporaryDir dir;
-        QVERIFY_THROWS_EXCEPTION(InputError,
-                                 writeCellsVtu(dir.filePath("x.vtu").toStdString(), cells, {{"n", {1, 2}}}));
+        QVERIFY_THROWS_EXCEPTION(
+            InputError, writeCellsVtu(dir.filePath("x.vtu").toStdString(), cells, {{"n", {1, 2}}}));
         QVERIFY_THROWS_EXCEPTION(FileError, writeCellsVtu("/nonexistent-folder/x.vtu", cells, {}));
     }
 };

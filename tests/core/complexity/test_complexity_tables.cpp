@@ -14,10 +14,16 @@
 using namespace stratamesh;
 
 namespace {
-Model load(const QString &path) { return recoverTopology(readModel(path.toStdString())); }
+Model load(const QString &path)
+{
+    return recoverTopology(readModel(path.toStdString()));
+}
 
 // Two decimals as printed in the thesis.
-bool sameTo2Decimals(double value, double printed) { return std::abs(value - printed) <= 0.005 + 1e-12; }
+bool sameTo2Decimals(double value, double printed)
+{
+    return std::abs(value - printed) <= 0.005 + 1e-12;
+}
 } // namespace
 
 class TestComplexityTables : public QObject {

@@ -11,7 +11,10 @@ using namespace stratamesh;
 
 namespace {
 
-ConvexPolyhedron unitCube() { return ConvexPolyhedron::box(Box3(Vec3(0, 0, 0), Vec3(1, 1, 1))); }
+ConvexPolyhedron unitCube()
+{
+    return ConvexPolyhedron::box(Box3(Vec3(0, 0, 0), Vec3(1, 1, 1)));
+}
 
 // Every edge is used once in each direction and every face is planar on its own plane.
 bool isClosedAndPlanar(const ConvexPolyhedron &p)
@@ -123,13 +126,15 @@ private slots:
         QVERIFY(!triangleMeetsCell(Vec3(0.7, 0.7, 0.9), Vec3(1, 0.7, 0.9), Vec3(0.7, 1, 0.9), p));
         // On the cube's top face, where the cell still reaches (x + y <= 0.5): touching counts.
         QVERIFY(triangleMeetsCell(Vec3(-5, -5, 1.0), Vec3(5, -5, 1.0), Vec3(0.8, 0.8, 1.0), p));
-        const std::vector<Vec3> piece =
-            clipPolygonToCell({Vec3(-1, -1, 0.25), Vec3(2, -1, 0.25), Vec3(2, 2, 0.25), Vec3(-1, 2, 0.25)}, p);
-        // The square section z = 0.25 of the cube, cut by x + y <= 1.25: a pentagon of area 1 − 0.5·0.75².
+        const std::vector<Vec3> piece = clipPolygonToCell(
+            {Vec3(-1, -1, 0.25), Vec3(2, -1, 0.25), Vec3(2, 2, 0.25), Vec3(-1, 2, 0.25)}, p);
+        // The square section z = 0.25 of the cube, cut by x + y <= 1.25: a pentagon of area 1 −
+        // 0.5·0.75².
         double area = 0.0;
         for (std::size_t i = 1; i + 1 < piece.size(); ++i)
             area += 0.5 * (piece[i] - piece[0]).cross(piece[i + 1] - piece[0]).norm();
-        QVERIFY(std::abs(area - (1.0 - 0.5 * 0.75 * 0.75)) < 1e-8); // planes pushed out by the tolerance
+        QVERIFY(std::abs(area - (1.0 - 0.5 * 0.75 * 0.75))
+                < 1e-8); // planes pushed out by the tolerance
     }
 };
 

@@ -48,7 +48,7 @@ private slots:
         QCOMPARE(g.surfaces.size(), std::size_t(1));
         const ElementMeasures &h = g.surfaces.front();
         QVERIFY(std::abs(h.shape) < 1e-12); // C_f
-        QCOMPARE(h.angle, 0.0);              // C_a: four right-angled corners
+        QCOMPARE(h.angle, 0.0);             // C_a: four right-angled corners
         QCOMPARE(h.size, 0.0);
         QCOMPARE(h.thickness, 0.0);
         QCOMPARE(g.lines.size(), std::size_t(0));
@@ -58,7 +58,8 @@ private slots:
             // A 1000 × 600 × 200 layer is within h = 100 of another of its sides on a 100 m strip
             // along the edges of its top and bottom (2 × 280 000 m²) and all over its 200 m high
             // sides (640 000 m²), out of 1 840 000 m².
-            QVERIFY2(std::abs(r.thickness - 1200000.0 / 1840000.0) < 0.01, qPrintable(QString::number(r.thickness)));
+            QVERIFY2(std::abs(r.thickness - 1200000.0 / 1840000.0) < 0.01,
+                     qPrintable(QString::number(r.thickness)));
         }
         // The same regions are below h³ when h is large.
         GeometricParams big;
@@ -75,7 +76,8 @@ private slots:
         p.thinLayerThickness = 30.0;
         const Model model = recoverTopology(layeredBox(p));
         const std::vector<double> volumes = regionVolumes(model);
-        const int thin = static_cast<int>(std::min_element(volumes.begin(), volumes.end()) - volumes.begin());
+        const int thin =
+            static_cast<int>(std::min_element(volumes.begin(), volumes.end()) - volumes.begin());
         const auto areas = regionSideThinAreas(model, 100.0);
         int horizonSides = 0;
         for (const SideThinArea &a : areas[thin]) {
@@ -126,7 +128,8 @@ private slots:
         // A 60° fault stays blunt at α = 20°.
         p.size = Vec3(1000.0, 600.0, 400.0);
         p.faultDipDegrees = 60.0;
-        const GeometricComplexity g3 = geometricComplexity(recoverTopology(layeredBox(p)), GeometricParams{});
+        const GeometricComplexity g3 =
+            geometricComplexity(recoverTopology(layeredBox(p)), GeometricParams{});
         for (const ElementMeasures &r : g3.regions)
             QCOMPARE(r.angle, 0.0);
     }

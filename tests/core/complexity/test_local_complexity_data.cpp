@@ -46,10 +46,11 @@ private slots:
             corners += c.corners;
         }
         QCOMPARE(corners, static_cast<int>(boxElements(model).innerCorners().size()));
-        qInfo("%s 10000 cells: Q10 %d Q50 %d Q90 %d max %d mean %.3f var %.3f (CVT %.1f s, counts %.1f s)",
+        qInfo("%s 10000 cells: Q10 %d Q50 %d Q90 %d max %d mean %.3f var %.3f (CVT %.1f s, counts "
+              "%.1f s)",
               qPrintable(file), local.statistics.q10, local.statistics.q50, local.statistics.q90,
-              local.statistics.max, local.statistics.mean, local.statistics.varCoeff, local.cvtSeconds,
-              local.countSeconds);
+              local.statistics.max, local.statistics.mean, local.statistics.varCoeff,
+              local.cvtSeconds, local.countSeconds);
     }
 };
 

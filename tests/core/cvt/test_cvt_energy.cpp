@@ -18,8 +18,8 @@ double energyAt(const RestrictionDomain &d, const std::vector<Vec3> &sites, doub
 }
 
 // Largest relative error of the analytic gradient over a few random coordinates.
-double worstRelativeError(const RestrictionDomain &d, const std::vector<Vec3> &sites, double alpha, unsigned seed,
-                          double scale)
+double worstRelativeError(const RestrictionDomain &d, const std::vector<Vec3> &sites, double alpha,
+                          unsigned seed, double scale)
 {
     CellIntegralsWorkspace ws;
     const CvtEvaluation e = evaluateCvtEnergy(d, sites, alpha, ws);
@@ -31,7 +31,7 @@ double worstRelativeError(const RestrictionDomain &d, const std::vector<Vec3> &s
         const int c = static_cast<int>(rng() % 3);
         const double g = e.gradient[i][c];
         if (std::abs(g) < 1e-3 * e.gradientNorm() / std::sqrt(double(sites.size())))
-            continue; // relative error of a near-zero component says nothing
+            continue;                  // relative error of a near-zero component says nothing
         const double h = 1e-7 * scale; // central differences: truncation ∝ h², rounding ∝ 1/h
         std::vector<Vec3> plus = sites, minus = sites;
         plus[i][c] += h;
@@ -54,7 +54,8 @@ private slots:
     {
         const RestrictionDomain d = test::sphereDomain(3);
         for (unsigned seed : {1u, 2u}) {
-            const auto sites = test::randomPointsInBox(60, Vec3(-1.1, -1.1, -1.1), Vec3(1.1, 1.1, 1.1), seed);
+            const auto sites =
+                test::randomPointsInBox(60, Vec3(-1.1, -1.1, -1.1), Vec3(1.1, 1.1, 1.1), seed);
             const double err = worstRelativeError(d, sites, 0.0, seed, 1.0);
             qInfo("F_CVT gradient: worst relative error %.3g", err);
             QVERIFY(err < 1e-5);
@@ -77,10 +78,12 @@ private slots:
     {
         const RestrictionDomain d = test::squareDomain(10);
         for (unsigned seed : {3u, 4u}) {
-            const auto sites = test::randomPointsInBox(40, Vec3(-0.1, -0.1, -0.2), Vec3(1.1, 1.1, 0.2), seed);
+            const auto sites =
+                test::randomPointsInBox(40, Vec3(-0.1, -0.1, -0.2), Vec3(1.1, 1.1, 0.2), seed);
             const double pure = worstRelativeError(d, sites, 1.0, seed, 1.0);
             const double blend = worstRelativeError(d, sites, 0.4, seed + 10, 1.0);
-            qInfo("F_B gradient: worst relative error %.3g (alpha 1), %.3g (alpha 0.4)", pure, blend);
+            qInfo("F_B gradient: worst relative error %.3g (alpha 1), %.3g (alpha 0.4)", pure,
+                  blend);
             QVERIFY(pure < 1e-5);
             QVERIFY(blend < 1e-5);
         }
@@ -93,7 +96,8 @@ private slots:
         CellIntegralsWorkspace ws;
         const CvtEvaluation e = evaluateCvtEnergy(d, sites, 0.25, ws);
         QVERIFY(e.cvtEnergy > 0 && e.boundaryEnergy > 0);
-        QVERIFY(std::abs(e.energy - (0.75 * e.cvtEnergy + 0.25 * e.boundaryEnergy)) <= 1e-15 * e.energy);
+        QVERIFY(std::abs(e.energy - (0.75 * e.cvtEnergy + 0.25 * e.boundaryEnergy))
+                <= 1e-15 * e.energy);
     }
 
     // Evaluations reuse the neighbour lists while the sites move little; the diagram must stay
@@ -102,9 +106,9 @@ private slots:
     {
         for (int shape = 0; shape < 2; ++shape) {
             const RestrictionDomain d = shape == 0 ? test::sphereDomain(3) : test::squareDomain(12);
-            std::vector<Vec3> sites = shape == 0
-                                          ? test::randomPointsInBox(300, Vec3(-1, -1, -1), Vec3(1, 1, 1), 8)
-                                          : test::randomPointsInBox(150, Vec3(0, 0, -0.05), Vec3(1, 1, 0.05), 9);
+            std::vector<Vec3> sites =
+                shape == 0 ? test::randomPointsInBox(300, Vec3(-1, -1, -1), Vec3(1, 1, 1), 8)
+                           : test::randomPointsInBox(150, Vec3(0, 0, -0.05), Vec3(1, 1, 0.05), 9);
             const double alpha = shape == 0 ? 0.0 : 0.3;
             CellIntegralsWorkspace shared;
             std::mt19937 rng(10 + shape);

@@ -44,7 +44,8 @@ LineDistances lineDistances(const RestrictionDomain &domain, const RestrictedVor
             const int line = rvd.lineComponents[c].line;
             for (int k = domain.lineOffsets[line]; k < domain.lineOffsets[line + 1]; ++k) {
                 const auto &seg = domain.segments[domain.lineSegments[k]];
-                best = std::min(best, segmentDistance(rvd.sites[s], domain.points[seg[0]], domain.points[seg[1]]));
+                best = std::min(best, segmentDistance(rvd.sites[s], domain.points[seg[0]],
+                                                      domain.points[seg[1]]));
             }
         }
         r.mean += best;
@@ -88,12 +89,15 @@ void checkModel(const QString &path, int siteCount)
             corners.insert(corners.end(), c.corners.begin(), c.corners.end());
         QCOMPARE(corners.size(), domain.corners.size());
         distances[run] = lineDistances(domain, rvd);
-        const RestrictedDelaunayQuality q = restrictedDelaunayQuality(restrictedDelaunay(domain, rvd));
-        qInfo("%s, %d sites, alpha %.1f: %d iterations, %.2f s (RVD %.2f s, Delaunay %.2f s); RDT mean Q %.3f, "
+        const RestrictedDelaunayQuality q =
+            restrictedDelaunayQuality(restrictedDelaunay(domain, rvd));
+        qInfo("%s, %d sites, alpha %.1f: %d iterations, %.2f s (RVD %.2f s, Delaunay %.2f s); RDT "
+              "mean Q %.3f, "
               "%.2f %% below 30 deg; line sites %d, mean distance %.4g, length-weighted %.4g",
               qPrintable(QFileInfo(path).fileName()), siteCount, params.alpha, result.iterations,
-              result.totalSeconds, result.rvdSeconds, result.delaunaySeconds, q.meanQuality, q.percentAngleBelow30,
-              distances[run].sites, distances[run].mean, distances[run].weighted);
+              result.totalSeconds, result.rvdSeconds, result.delaunaySeconds, q.meanQuality,
+              q.percentAngleBelow30, distances[run].sites, distances[run].mean,
+              distances[run].weighted);
     }
     QVERIFY(distances[1].mean < distances[0].mean);
     QVERIFY(distances[1].weighted < distances[0].weighted);

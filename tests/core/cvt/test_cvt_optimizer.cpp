@@ -32,7 +32,8 @@ LineDistance distanceToLines(const RestrictionDomain &d, const std::vector<Vec3>
         double best = 1e300;
         for (const auto &s : d.segments) {
             const Vec3 a = d.points[s[0]], b = d.points[s[1]];
-            const double t = std::clamp((sites[i] - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+            const double t =
+                std::clamp((sites[i] - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
             best = std::min(best, (a + t * (b - a) - sites[i]).norm());
         }
         sum += best;
@@ -48,7 +49,10 @@ void verifyDecreasing(const CvtResult &r)
     QVERIFY(!r.energy.empty());
     QVERIFY(r.energy.front() < r.initialEnergy);
     for (std::size_t k = 1; k < r.energy.size(); ++k)
-        QVERIFY2(r.energy[k] <= r.energy[k - 1], qPrintable(QString("iteration %1: %2 > %3").arg(k + 1).arg(r.energy[k]).arg(r.energy[k - 1])));
+        QVERIFY2(
+            r.energy[k] <= r.energy[k - 1],
+            qPrintable(
+                QString("iteration %1: %2 > %3").arg(k + 1).arg(r.energy[k]).arg(r.energy[k - 1])));
 }
 
 } // namespace
@@ -73,8 +77,8 @@ private slots:
 
         const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(d, r.sites);
         const RestrictedDelaunayQuality q = restrictedDelaunayQuality(restrictedDelaunay(d, rvd));
-        qInfo("sphere: %d iterations (%s), RDT %d triangles, mean Q %.4f, min angle %.2f deg", r.iterations,
-              r.stopReason.c_str(), q.triangles, q.meanQuality, q.minAngleDeg);
+        qInfo("sphere: %d iterations (%s), RDT %d triangles, mean Q %.4f, min angle %.2f deg",
+              r.iterations, r.stopReason.c_str(), q.triangles, q.meanQuality, q.minAngleDeg);
         QCOMPARE(q.triangles, 2 * 100 - 4); // a closed sphere: Euler
         QVERIFY(q.meanQuality >= 0.9);
         QVERIFY(q.minAngleDeg >= 30.0);
@@ -151,7 +155,8 @@ private slots:
             if (r.iteration == 3)
                 progress.cancel();
         };
-        QVERIFY_THROWS_EXCEPTION(Cancelled, optimizeCvt(d, sampleSurfaces(d, 40, 3), params, progress));
+        QVERIFY_THROWS_EXCEPTION(Cancelled,
+                                 optimizeCvt(d, sampleSurfaces(d, 40, 3), params, progress));
     }
 
     void boundaryTermPullsSitesOntoLines()
@@ -166,9 +171,11 @@ private slots:
         params.alpha = 0.8;
         const CvtResult pulled = optimizeCvt(d, initial, params);
         verifyDecreasing(pulled);
-        const LineDistance before = distanceToLines(d, plain.sites), after = distanceToLines(d, pulled.sites);
-        qInfo("distance of line sites to the border: mean %.4g -> %.4g, length-weighted %.4g -> %.4g", before.mean,
-              after.mean, before.weighted, after.weighted);
+        const LineDistance before = distanceToLines(d, plain.sites),
+                           after = distanceToLines(d, pulled.sites);
+        qInfo(
+            "distance of line sites to the border: mean %.4g -> %.4g, length-weighted %.4g -> %.4g",
+            before.mean, after.mean, before.weighted, after.weighted);
         QVERIFY(after.mean < before.mean);
         QVERIFY(after.weighted < 0.5 * before.weighted);
     }

@@ -134,11 +134,13 @@ private slots:
     void unwritableFolderIsAClearError()
     {
         if (::geteuid() == 0)
-            QSKIP("running as root: permissions do not stop writes (the tmpfs test covers failures)");
+            QSKIP(
+                "running as root: permissions do not stop writes (the tmpfs test covers failures)");
         QTemporaryDir dir;
         QVERIFY(QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::ExeOwner));
         const std::string error = failureOf([&] { writeText(dir.filePath("x.msh"), "x"); });
-        QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+        QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner
+                                              | QFileDevice::ExeOwner);
         QVERIFY2(error.find("Permission denied") != std::string::npos, error.c_str());
     }
 
@@ -154,9 +156,7 @@ private slots:
         struct rlimit small = old;
         small.rlim_cur = 64 * 1024;
         QCOMPARE(::setrlimit(RLIMIT_FSIZE, &small), 0);
-        const std::string error = failureOf([&] {
-            writeGmsh(bigMesh(), path.toStdString());
-        });
+        const std::string error = failureOf([&] { writeGmsh(bigMesh(), path.toStdString()); });
         ::setrlimit(RLIMIT_FSIZE, &old);
         std::signal(SIGXFSZ, previousHandler);
         QVERIFY2(error.find("File too large") != std::string::npos, error.c_str());
@@ -169,14 +169,19 @@ private slots:
     {
         QTemporaryDir dir;
         const QByteArray mountPoint = dir.path().toLocal8Bit();
-        if (::geteuid() != 0 || ::mount("tmpfs", mountPoint.constData(), "tmpfs", 0, "size=256k") != 0)
-            QSKIP("*** cannot mount a small tmpfs (needs root): full-disk test SKIPPED; the file size "
+        if (::geteuid() != 0
+            || ::mount("tmpfs", mountPoint.constData(), "tmpfs", 0, "size=256k") != 0)
+            QSKIP("*** cannot mount a small tmpfs (needs root): full-disk test SKIPPED; the file "
+                  "size "
                   "limit test covers the same code path ***");
         const VolumeMesh mesh = bigMesh();
-        const std::string gmsh = failureOf([&] { writeGmsh(mesh, dir.filePath("full.msh").toStdString()); });
-        const std::string vtk =
-            failureOf([&] { writeVtk(mesh, dir.filePath("full.vtk").toStdString(), VtkFileKind::LegacyVtk); });
-        const std::string text = failureOf([&] { writeText(dir.filePath("full.txt"), std::string(1 << 20, 'x')); });
+        const std::string gmsh =
+            failureOf([&] { writeGmsh(mesh, dir.filePath("full.msh").toStdString()); });
+        const std::string vtk = failureOf([&] {
+            writeVtk(mesh, dir.filePath("full.vtk").toStdString(), VtkFileKind::LegacyVtk);
+        });
+        const std::string text =
+            failureOf([&] { writeText(dir.filePath("full.txt"), std::string(1 << 20, 'x')); });
         const QStringList left = entries(dir.path());
         ::umount(mountPoint.constData());
         QVERIFY2(gmsh.find("No space left on device") != std::string::npos, gmsh.c_str());

@@ -91,8 +91,8 @@ private slots:
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QByteArray text = f.readAll();
         QVERIFY(text.startsWith("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n"));
-        for (const char *name : {"3 1 \"lower\"", "3 2 \"upper\"", "2 1 \"bottom\"", "2 2 \"interface\"",
-                                 "1 1 \"contact\"", "0 1 \"corners\""})
+        for (const char *name : {"3 1 \"lower\"", "3 2 \"upper\"", "2 1 \"bottom\"",
+                                 "2 2 \"interface\"", "1 1 \"contact\"", "0 1 \"corners\""})
             QVERIFY2(text.contains(name), name);
         QVERIFY(text.contains("$Entities\n4 1 2 2\n"));
         // 17 significant digits where needed: 1 + 1e-9/3 is not representable in fewer.
@@ -148,9 +148,11 @@ private slots:
         // No physical groups: each elementary entity is a group.
         QTemporaryDir dir;
         const QString path = dir.filePath("plain.msh");
-        writeFile(path, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n"
-                        "4 0 0 1\n7 1 1 1\n$EndNodes\n$Elements\n3\n1 4 2 0 5 1 2 3 4\n2 4 2 0 6 2 3 4 7\n"
-                        "3 2 2 0 9 1 3 2\n$EndElements\n");
+        writeFile(
+            path,
+            "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n"
+            "4 0 0 1\n7 1 1 1\n$EndNodes\n$Elements\n3\n1 4 2 0 5 1 2 3 4\n2 4 2 0 6 2 3 4 7\n"
+            "3 2 2 0 9 1 3 2\n$EndElements\n");
         const VolumeMesh m = readGmsh(path.toStdString());
         QCOMPARE(m.regionNames, (std::vector<std::string>{"region_5", "region_6"}));
         QCOMPARE(m.cellRegion, (std::vector<int>{0, 1}));
@@ -162,16 +164,21 @@ private slots:
     {
         QTest::addColumn<QByteArray>("text");
         QTest::addColumn<QString>("expected");
-        const QByteArray head = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n"
-                                "4 0 0 1\n$EndNodes\n";
-        QTest::newRow("binary") << QByteArray("$MeshFormat\n4.1 1 8\n$EndMeshFormat\n") << "x.msh:2: binary";
-        QTest::newRow("version") << QByteArray("$MeshFormat\n3.0 0 8\n$EndMeshFormat\n") << "x.msh:2: MSH version 3.0";
-        QTest::newRow("hexahedron") << head + "$Elements\n1\n1 5 2 0 1 1 2 3 4 1 2 3 4\n$EndElements\n"
-                                    << "x.msh:13: element type 5 (hexahedron) is not supported";
+        const QByteArray head =
+            "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n"
+            "4 0 0 1\n$EndNodes\n";
+        QTest::newRow("binary") << QByteArray("$MeshFormat\n4.1 1 8\n$EndMeshFormat\n")
+                                << "x.msh:2: binary";
+        QTest::newRow("version") << QByteArray("$MeshFormat\n3.0 0 8\n$EndMeshFormat\n")
+                                 << "x.msh:2: MSH version 3.0";
+        QTest::newRow("hexahedron")
+            << head + "$Elements\n1\n1 5 2 0 1 1 2 3 4 1 2 3 4\n$EndElements\n"
+            << "x.msh:13: element type 5 (hexahedron) is not supported";
         QTest::newRow("unknown node") << head + "$Elements\n1\n1 4 2 0 1 1 2 3 9\n$EndElements\n"
                                       << "x.msh:13: element uses node 9";
-        QTest::newRow("bad number") << QByteArray("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 zero 0\n")
-                                    << "x.msh:6: expected y";
+        QTest::newRow("bad number")
+            << QByteArray("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 zero 0\n")
+            << "x.msh:6: expected y";
         QTest::newRow("truncated") << head + "$Elements\n2\n1 4 2 0 1 1 2 3 4\n"
                                    << "x.msh:14: unexpected end of file";
         QTest::newRow("not gmsh") << QByteArray("hello\n") << "x.msh:1: unexpected text";
@@ -203,7 +210,8 @@ private slots:
         QFETCH(bool, saveAll);
         const QString gmsh = QStandardPaths::findExecutable("gmsh");
         if (gmsh.isEmpty())
-            QSKIP("*** gmsh is not installed (apt-get install gmsh): independent reader check SKIPPED ***");
+            QSKIP("*** gmsh is not installed (apt-get install gmsh): independent reader check "
+                  "SKIPPED ***");
         QTemporaryDir dir;
         VolumeMesh m = test::hybridMesh();
         if (saveAll)
@@ -213,13 +221,15 @@ private slots:
         o.saveAll = saveAll;
         const QString in = dir.filePath("in.msh"), out = dir.filePath("out.msh");
         writeGmsh(m, in.toStdString(), o);
-        QStringList args{in, "-0", "-o", out, "-format", version == int(Version::V41) ? "msh41" : "msh22"};
+        QStringList args{in,  "-0",      "-o",
+                         out, "-format", version == int(Version::V41) ? "msh41" : "msh22"};
         if (saveAll)
             args << "-save_all";
         QProcess p;
         p.start(gmsh, args);
         QVERIFY(p.waitForFinished(120000));
-        QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0, p.readAllStandardError().constData());
+        QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0,
+                 p.readAllStandardError().constData());
         const VolumeMesh back = readGmsh(out.toStdString());
         for (CellType t : {CellType::Tet, CellType::Pyramid, CellType::Prism})
             QCOMPARE(back.countCells(t), m.countCells(t));
@@ -260,14 +270,15 @@ private slots:
         o.version = Version(version);
         writeGmsh(test::hybridMesh(), path.toStdString(), o);
         QProcess p;
-        p.start(python, {"-c",
-                         "import sys, meshio\n"
-                         "m = meshio.read(sys.argv[1])\n"
-                         "c = {}\n"
-                         "for b in m.cells: c[b.type] = c.get(b.type, 0) + len(b.data)\n"
-                         "print(len(m.points), c.get('tetra',0), c.get('pyramid',0), c.get('wedge',0),"
-                         " c.get('triangle',0), c.get('line',0), c.get('vertex',0))\n",
-                         path});
+        p.start(python,
+                {"-c",
+                 "import sys, meshio\n"
+                 "m = meshio.read(sys.argv[1])\n"
+                 "c = {}\n"
+                 "for b in m.cells: c[b.type] = c.get(b.type, 0) + len(b.data)\n"
+                 "print(len(m.points), c.get('tetra',0), c.get('pyramid',0), c.get('wedge',0),"
+                 " c.get('triangle',0), c.get('line',0), c.get('vertex',0))\n",
+                 path});
         QVERIFY(p.waitForFinished(120000));
         QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
         QCOMPARE(QString(p.readAllStandardOutput()).trimmed(), QStringLiteral("13 2 5 2 4 4 4"));

@@ -29,7 +29,7 @@ std::string lines(std::initializer_list<const char *> ls)
 std::string tsurf(const char *line4 = "VRTX 1 0 0 0", const char *line5 = "VRTX 2 1 0 0",
                   const char *line7 = "TRGL 1 2 3", const char *line8 = "END")
 {
-    return lines({"GOCAD TSurf 1",  // 1
+    return lines({"GOCAD TSurf 1",   // 1
                   "HEADER {name:s}", // 2
                   "TFACE",           // 3
                   line4,             // 4
@@ -42,18 +42,18 @@ std::string tsurf(const char *line4 = "VRTX 1 0 0 0", const char *line5 = "VRTX 
 // Model3d header declaring TSURF s with one TFACE (key = the TSurf's triangle), lines 1-12.
 std::string model3dHeader(const char *line11 = "  +1 0")
 {
-    return lines({"GOCAD Model3d 1", // 1
-                  "TSURF s",         // 2
-                  "TFACE 1 top s",   // 3
-                  "  0 0 0",         // 4
-                  "  1 0 0",         // 5
-                  "  0 1 0",         // 6
+    return lines({"GOCAD Model3d 1",   // 1
+                  "TSURF s",           // 2
+                  "TFACE 1 top s",     // 3
+                  "  0 0 0",           // 4
+                  "  1 0 0",           // 5
+                  "  0 1 0",           // 6
                   "REGION 2 Universe", // 7
-                  "  -1 0",          // 8
-                  "REGION 3 R",      // 9
-                  "  +1",            // 10
-                  line11,            // 11
-                  "END"});           // 12
+                  "  -1 0",            // 8
+                  "REGION 3 R",        // 9
+                  "  +1",              // 10
+                  line11,              // 11
+                  "END"});             // 12
 }
 
 void expectError(const std::string &text, int line, const std::string &cause)
@@ -64,10 +64,13 @@ void expectError(const std::string &text, int line, const std::string &cause)
     } catch (const FileError &e) {
         const std::string what = e.what();
         QVERIFY2(e.file() == kFile, what.c_str());
-        QVERIFY2(e.line() == line, (what + "  (expected line " + std::to_string(line) + ")").c_str());
-        const std::string prefix = line > 0 ? kFile + ":" + std::to_string(line) + ": " : kFile + ": ";
+        QVERIFY2(e.line() == line,
+                 (what + "  (expected line " + std::to_string(line) + ")").c_str());
+        const std::string prefix =
+            line > 0 ? kFile + ":" + std::to_string(line) + ": " : kFile + ": ";
         QVERIFY2(what.rfind(prefix, 0) == 0, what.c_str());
-        QVERIFY2(what.find(cause) != std::string::npos, (what + "  (expected: " + cause + ")").c_str());
+        QVERIFY2(what.find(cause) != std::string::npos,
+                 (what + "  (expected: " + cause + ")").c_str());
         return;
     } catch (const std::exception &e) {
         QFAIL((std::string("not a FileError: ") + e.what()).c_str());
@@ -105,13 +108,15 @@ private slots:
 
     void truncatedRegionList()
     {
-        expectError(lines({"GOCAD Model3d 1", "TSURF s", "TFACE 1 top s", "REGION 2 Universe", "  -1 +1"}), 5,
-                    "file ends inside the list of ids of REGION 'Universe'");
+        expectError(
+            lines({"GOCAD Model3d 1", "TSURF s", "TFACE 1 top s", "REGION 2 Universe", "  -1 +1"}),
+            5, "file ends inside the list of ids of REGION 'Universe'");
     }
 
     void truncatedHeaderBlock()
     {
-        expectError(lines({"GOCAD TSurf 1", "HEADER {", "name: s"}), 3, "file ends inside the HEADER block");
+        expectError(lines({"GOCAD TSurf 1", "HEADER {", "name: s"}), 3,
+                    "file ends inside the HEADER block");
     }
 
     void regionListNotEndedByZero()
@@ -121,12 +126,14 @@ private slots:
 
     void triangleWithUnknownVertex()
     {
-        expectError(tsurf("VRTX 1 0 0 0", "VRTX 2 1 0 0", "TRGL 1 2 9"), 7, "TRGL refers to vertex 9");
+        expectError(tsurf("VRTX 1 0 0 0", "VRTX 2 1 0 0", "TRGL 1 2 9"), 7,
+                    "TRGL refers to vertex 9");
     }
 
     void coordinateNotANumber()
     {
-        expectError(tsurf("VRTX 1 0 0 0", "VRTX 2 1 abc 0"), 5, "y coordinate 'abc' is not a number");
+        expectError(tsurf("VRTX 1 0 0 0", "VRTX 2 1 abc 0"), 5,
+                    "y coordinate 'abc' is not a number");
     }
 
     void vertexIdNotAnInteger()
@@ -136,8 +143,8 @@ private slots:
 
     void missingEndBeforeNextObject()
     {
-        expectError(tsurf("VRTX 1 0 0 0", "VRTX 2 1 0 0", "TRGL 1 2 3", "GOCAD TSurf 1") + tsurf(), 8,
-                    "missing END of TSurf 's'");
+        expectError(tsurf("VRTX 1 0 0 0", "VRTX 2 1 0 0", "TRGL 1 2 3", "GOCAD TSurf 1") + tsurf(),
+                    8, "missing END of TSurf 's'");
     }
 
     void missingEndAtEndOfFile()
@@ -148,8 +155,9 @@ private slots:
 
     void emptySurface()
     {
-        expectError(tsurf("VRTX 1 0 0 0", "VRTX 2 1 0 0", "TRGL 1 2 3", "TFACE") + "VRTX 4 0 0 1\nEND\n", 8,
-                    "has no triangle (empty surface)");
+        expectError(tsurf("VRTX 1 0 0 0", "VRTX 2 1 0 0", "TRGL 1 2 3", "TFACE")
+                        + "VRTX 4 0 0 1\nEND\n",
+                    8, "has no triangle (empty surface)");
     }
 
     void nanCoordinate()
@@ -159,7 +167,8 @@ private slots:
 
     void infiniteCoordinate()
     {
-        expectError(tsurf("VRTX 1 0 0 0", "VRTX 2 1 -inf 0"), 5, "y coordinate '-inf' is not finite");
+        expectError(tsurf("VRTX 1 0 0 0", "VRTX 2 1 -inf 0"), 5,
+                    "y coordinate '-inf' is not finite");
     }
 
     void nanInKeyTriangle()
@@ -181,7 +190,8 @@ private slots:
 
     void duplicateVertexId()
     {
-        expectError(tsurf("VRTX 1 0 0 0", "VRTX 1 1 0 0"), 5, "vertex id 1 is already defined at line 4");
+        expectError(tsurf("VRTX 1 0 0 0", "VRTX 1 1 0 0"), 5,
+                    "vertex id 1 is already defined at line 4");
     }
 
     void triangleRepeatsAVertex()
@@ -239,10 +249,7 @@ private slots:
         expectError("\nsolid ascii stl\nfacet normal 0 0 1\n", 2, "not a Gocad file");
     }
 
-    void emptyFile()
-    {
-        expectError("# only a comment\n", 0, "empty file");
-    }
+    void emptyFile() { expectError("# only a comment\n", 0, "empty file"); }
 
     void fileNotFound()
     {
@@ -255,7 +262,9 @@ private slots:
             } catch (const FileError &e) {
                 QCOMPARE(e.file(), path);
                 QCOMPARE(e.line(), 0);
-                QVERIFY2(std::string(e.what()).find("missing_model.ml: cannot open") != std::string::npos, e.what());
+                QVERIFY2(std::string(e.what()).find("missing_model.ml: cannot open")
+                             != std::string::npos,
+                         e.what());
             }
         }
     }
@@ -267,7 +276,8 @@ private slots:
             QFAIL("no error raised");
         } catch (const FileError &e) {
             QCOMPARE(e.file(), std::string("/tmp/model.xyz"));
-            QVERIFY2(std::string(e.what()).find("unknown model file extension '.xyz'") != std::string::npos,
+            QVERIFY2(std::string(e.what()).find("unknown model file extension '.xyz'")
+                         != std::string::npos,
                      e.what());
         }
     }

@@ -54,24 +54,24 @@ std::string twoTSurfModel(const ModelOptions &o = {})
                                "  0 0 5\n  1 0 5\n  1 1 5\n"
                                "TFACE 2  top horizon\n"
                                "  1 0 5\n  2 0 5\n  2 1 5\n"
-                               "TFACE 3  fault \"fault one\"\n" +
-                               faultKey +
-                               "REGION 4  Universe\n"
-                               "  -1  +3  0\n"
-                               "REGION 5  \"upper block\"\n"
-                               "  +1  -2  0\n"
-                               "REGION 6  lower\n"
-                               "  +2  +3\n"
-                               "  -3  0\n"
-                               "SURFACE \"horizon feature\"\n"
-                               "  1  2  0\n"
-                               "LAYER L1\n"
-                               "  5  4  99  0\n"
-                               "LAYER L2\n"
-                               "  6  0\n"
-                               "FAULT_BLOCK B\n"
-                               "  5  6  0\n"
-                               "END\n";
+                               "TFACE 3  fault \"fault one\"\n"
+                               + faultKey
+                               + "REGION 4  Universe\n"
+                                 "  -1  +3  0\n"
+                                 "REGION 5  \"upper block\"\n"
+                                 "  +1  -2  0\n"
+                                 "REGION 6  lower\n"
+                                 "  +2  +3\n"
+                                 "  -3  0\n"
+                                 "SURFACE \"horizon feature\"\n"
+                                 "  1  2  0\n"
+                                 "LAYER L1\n"
+                                 "  5  4  99  0\n"
+                                 "LAYER L2\n"
+                                 "  6  0\n"
+                                 "FAULT_BLOCK B\n"
+                                 "  5  6  0\n"
+                                 "END\n";
     const std::string face1 = "TFACE\n"
                               "VRTX 10 0 0 5\n"
                               "VRTX 11 1 0 5 CNXYZ\n"
@@ -107,11 +107,11 @@ std::string twoTSurfModel(const ModelOptions &o = {})
                                 "ESIZES 1\n"
                                 "PROPERTY_CLASS_HEADER Z {\n"
                                 "is_z: on\n"
-                                "}\n" +
-                                (o.swapHorizonFaces ? face2 + face1 : face1 + face2) +
-                                "BSTONE 10\n"
-                                "BORDER 18 10 11\n"
-                                "END\n";
+                                "}\n"
+                                + (o.swapHorizonFaces ? face2 + face1 : face1 + face2)
+                                + "BSTONE 10\n"
+                                  "BORDER 18 10 11\n"
+                                  "END\n";
     const std::string fault = "GOCAD TSurf 1\n"
                               "HEADER {name:fault one}\n"
                               "GOCAD_ORIGINAL_COORDINATE_SYSTEM\n"
@@ -192,7 +192,8 @@ private slots:
         QCOMPARE(m.regions[0].name, std::string("upper block"));
         QCOMPARE(m.regions[0].boundaries, (std::vector<RegionSide>{{0, true}, {1, false}}));
         QCOMPARE(m.regions[1].name, std::string("lower"));
-        QCOMPARE(m.regions[1].boundaries, (std::vector<RegionSide>{{1, true}, {2, true}, {2, false}}));
+        QCOMPARE(m.regions[1].boundaries,
+                 (std::vector<RegionSide>{{1, true}, {2, true}, {2, false}}));
         // LAYER lists REGION ids: the Universe (4) and an unknown id (99) are ignored.
         QCOMPARE(m.layers.size(), std::size_t(2));
         QCOMPARE(m.layers[0].name, std::string("L1"));
@@ -219,7 +220,8 @@ private slots:
         const Model m = readText(twoTSurfModel(o));
         // The file's signs for TFACE 3 refer to its key triangle, opposite to the stored TRGLs.
         QCOMPARE(m.universe, (std::vector<RegionSide>{{0, false}, {2, false}}));
-        QCOMPARE(m.regions[1].boundaries, (std::vector<RegionSide>{{1, true}, {2, false}, {2, true}}));
+        QCOMPARE(m.regions[1].boundaries,
+                 (std::vector<RegionSide>{{1, true}, {2, false}, {2, true}}));
         QCOMPARE(m.surfaces[2].triangles[0], (Triangle{0, 1, 2})); // triangles untouched
     }
 
@@ -259,7 +261,7 @@ private slots:
                                  "ATOM 5 3\n"
                                  "TRGL 1 2 3\nTRGL 1 5 4\n"
                                  "TFACE\n"
-                                 "ATOM 6 5\n"  // an ATOM of an ATOM of face 1
+                                 "ATOM 6 5\n" // an ATOM of an ATOM of face 1
                                  "VRTX 7 2 1 0\n"
                                  "TRGL 6 2 7\n" // 2 belongs to face 1: copied once
                                  "TRGL 2 6 7\n"
@@ -305,26 +307,27 @@ private slots:
 
     void tsFileWithSeveralObjects()
     {
-        const std::string text = "# written by hand\n"
-                                 "GOCAD PLine 1\nHEADER {name:line}\nILINE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\n"
-                                 "SEG 1 2\nEND\n"
-                                 "gocad TSURF 1\n"
-                                 "HEADER {\nname:h\n}\n"
-                                 "GEOLOGICAL_TYPE top\n"
-                                 "STRATIGRAPHIC_POSITION x 1\n"
-                                 "SOME_NEW_KEYWORD a b c\n"
-                                 "\n"
-                                 "TFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\n"
-                                 "TFACE\nVRTX 4 5 0 0\nVRTX 5 6 0 0\nVRTX 6 5 1 0\nTRGL 4 5 6\nTRGL 6 5 4\n"
-                                 "END\n"
-                                 "GOCAD TSurf 1\n"
-                                 "HEADER {\nname: \"my fault\"\n}\n"
-                                 "GEOLOGICAL_FEATURE big_fault\n"
-                                 "GEOLOGICAL_TYPE normal_fault\n"
-                                 "VRTX 1 0 0 1\nVRTX 2 1 0 1\nVRTX 3 0 1 1\nTRGL 1 2 3\n" // no TFACE
-                                 "END\n"
-                                 "GOCAD TSurf 1\nHEADER {name:h_1}\n"
-                                 "TFACE\nVRTX 1 0 0 2\nVRTX 2 1 0 2\nVRTX 3 0 1 2\nTRGL 1 2 3\nEND\n";
+        const std::string text =
+            "# written by hand\n"
+            "GOCAD PLine 1\nHEADER {name:line}\nILINE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\n"
+            "SEG 1 2\nEND\n"
+            "gocad TSURF 1\n"
+            "HEADER {\nname:h\n}\n"
+            "GEOLOGICAL_TYPE top\n"
+            "STRATIGRAPHIC_POSITION x 1\n"
+            "SOME_NEW_KEYWORD a b c\n"
+            "\n"
+            "TFACE\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\n"
+            "TFACE\nVRTX 4 5 0 0\nVRTX 5 6 0 0\nVRTX 6 5 1 0\nTRGL 4 5 6\nTRGL 6 5 4\n"
+            "END\n"
+            "GOCAD TSurf 1\n"
+            "HEADER {\nname: \"my fault\"\n}\n"
+            "GEOLOGICAL_FEATURE big_fault\n"
+            "GEOLOGICAL_TYPE normal_fault\n"
+            "VRTX 1 0 0 1\nVRTX 2 1 0 1\nVRTX 3 0 1 1\nTRGL 1 2 3\n" // no TFACE
+            "END\n"
+            "GOCAD TSurf 1\nHEADER {name:h_1}\n"
+            "TFACE\nVRTX 1 0 0 2\nVRTX 2 1 0 2\nVRTX 3 0 1 2\nTRGL 1 2 3\nEND\n";
         const Model m = readText(text, "/some/dir/several.ts");
         QCOMPARE(m.name, std::string("several"));
         QVERIFY(m.regions.empty());
@@ -347,8 +350,9 @@ private slots:
 
     void lonelyTSurfWithoutNameTakesTheFileStem()
     {
-        const Model m = readText("GOCAD TSurf 1\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n",
-                                 "C:\\data\\lonely.ts");
+        const Model m =
+            readText("GOCAD TSurf 1\nVRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n",
+                     "C:\\data\\lonely.ts");
         QCOMPARE(m.surfaces[0].name, std::string("lonely"));
         QCOMPARE(m.surfaces[0].featureName, std::string("lonely"));
     }

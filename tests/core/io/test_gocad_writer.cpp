@@ -188,7 +188,8 @@ private slots:
 
     void surfaceGroupsKeepNames()
     {
-        // Patches of one object named like a reader names them share one TSurf; others get their own.
+        // Patches of one object named like a reader names them share one TSurf; others get their
+        // own.
         Model model;
         model.name = "groups";
         for (const char *name : {"fault_1", "fault_2", "lonely"}) {
@@ -204,7 +205,8 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath("g.ml");
         writeGocadModel3d(model, path.toStdString());
-        QCOMPARE(linesStartingWith(path, "TSURF "), (QList<QByteArray>{"TSURF fault", "TSURF lonely"}));
+        QCOMPARE(linesStartingWith(path, "TSURF "),
+                 (QList<QByteArray>{"TSURF fault", "TSURF lonely"}));
         test::ModelCompare c;
         const std::string diff = test::compareModels(model, readModel(path.toStdString()), c);
         QVERIFY2(diff.empty(), diff.c_str()); // including type Unknown, not read back as a horizon
@@ -233,10 +235,12 @@ private slots:
             writeGocadModel3d(model, path.toStdString());
             QFAIL("wrote an empty surface");
         } catch (const InputError &e) {
-            QVERIFY2(std::string(e.what()).find(model.surfaces[2].name) != std::string::npos, e.what());
+            QVERIFY2(std::string(e.what()).find(model.surfaces[2].name) != std::string::npos,
+                     e.what());
         }
         QVERIFY(!QFile::exists(path));
-        QVERIFY_THROWS_EXCEPTION(InputError, writeGocadTSurf(faultedBox(), path.toStdString(), 999));
+        QVERIFY_THROWS_EXCEPTION(InputError,
+                                 writeGocadTSurf(faultedBox(), path.toStdString(), 999));
     }
 };
 

@@ -40,9 +40,8 @@ private slots:
         QTest::addColumn<int>("line");
         QTest::addColumn<QString>("cause");
         // Before: info exited 0 with area and quality null.
-        QTest::newRow("ts 1e200")
-            << "big.ts" << tsurfWith("VRTX 2 1e200 0 0") << 6
-            << "x coordinate '1e200' is beyond the bound of 1e15";
+        QTest::newRow("ts 1e200") << "big.ts" << tsurfWith("VRTX 2 1e200 0 0") << 6
+                                  << "x coordinate '1e200' is beyond the bound of 1e15";
         QTest::newRow("ts just beyond")
             << "big.ts" << tsurfWith("VRTX 2 0 0 -1.0000001e15") << 6 << "beyond the bound";
         QTest::newRow("ts inf") << "inf.ts" << tsurfWith("VRTX 2 0 inf 0") << 6 << "is not finite";

@@ -30,10 +30,10 @@ inline VolumeMesh hybridMesh()
     m.name = "hybrid test";
     const double e = 1e-9 / 3.0; // breaks float round trips
     m.points = {
-        {0, 0, 0},     {1 + e, 0, 0},     {1 + e, 1, 0},     {0, 1 - e, 0},     // 0-3 bottom
-        {0, 0, 1},     {1 + e, 0, 1},     {1 + e, 1, 1},     {0, 1 - e, 1},     // 4-7 interface
-        {0, 0, 2},     {1 + e, 0, 2},     {1 + e, 1, 2},     {0, 1 - e, 2},     // 8-11 top
-        {0.5, 0.5, 1.5 + e},                                                   // 12 centre
+        {0, 0, 0},           {1 + e, 0, 0}, {1 + e, 1, 0}, {0, 1 - e, 0}, // 0-3 bottom
+        {0, 0, 1},           {1 + e, 0, 1}, {1 + e, 1, 1}, {0, 1 - e, 1}, // 4-7 interface
+        {0, 0, 2},           {1 + e, 0, 2}, {1 + e, 1, 2}, {0, 1 - e, 2}, // 8-11 top
+        {0.5, 0.5, 1.5 + e},                                              // 12 centre
     };
     m.regionNames = {"lower", "upper"};
     // Prisms: bottom triangle normal points up, towards the top triangle (Gmsh order).
@@ -51,7 +51,8 @@ inline VolumeMesh hybridMesh()
     m.cellRegion = {0, 0, 1, 1, 1, 1, 1, 1, 1};
     m.cellQuality = {0.5, 0.25, 1.0 / 3.0, 0.7, 0.71, 0.72, 0.9, 1e-12, 0.125};
     m.qualityName = "scaled jacobian";
-    m.surfaces = {{"bottom", "box", FeatureType::Boundary}, {"interface", "H1", FeatureType::Horizon}};
+    m.surfaces = {{"bottom", "box", FeatureType::Boundary},
+                  {"interface", "H1", FeatureType::Horizon}};
     m.triangles = {{0, 3, 1}, {1, 3, 2}, {4, 5, 7}, {5, 6, 7}};
     m.triangleSurface = {0, 0, 1, 1};
     m.lineNames = {"contact"};
@@ -94,7 +95,8 @@ inline std::multiset<Element> cellsOf(const VolumeMesh &m, CellType type)
     std::multiset<Element> out;
     for (std::size_t c = 0; c < m.cells.size(); ++c)
         if (m.cells[c].type == type)
-            out.insert(element(m, groupName(m.regionNames, m.cellRegion[c]), m.cells[c].nodes, m.cells[c].size()));
+            out.insert(element(m, groupName(m.regionNames, m.cellRegion[c]), m.cells[c].nodes,
+                               m.cells[c].size()));
     return out;
 }
 
@@ -119,7 +121,8 @@ inline std::multiset<Element> edgesOf(const VolumeMesh &m)
 
 // Region sides by names: region -> {(surface name, positive)}.
 inline std::map<std::string, std::set<std::pair<std::string, bool>>>
-namedSides(const std::vector<std::string> &regions, const std::vector<std::vector<RegionSide>> &sides,
+namedSides(const std::vector<std::string> &regions,
+           const std::vector<std::vector<RegionSide>> &sides,
            const std::vector<std::string> &surfaces)
 {
     std::map<std::string, std::set<std::pair<std::string, bool>>> out;
@@ -138,28 +141,34 @@ struct MeshCompare {
 };
 
 // Empty when b holds the same mesh as a; otherwise the first difference.
-inline std::string compareMeshes(const VolumeMesh &a, const VolumeMesh &b, const MeshCompare &what = {})
+inline std::string compareMeshes(const VolumeMesh &a, const VolumeMesh &b,
+                                 const MeshCompare &what = {})
 {
     if (what.pointCount && a.points.size() != b.points.size())
-        return "point count " + std::to_string(a.points.size()) + " vs " + std::to_string(b.points.size());
+        return "point count " + std::to_string(a.points.size()) + " vs "
+               + std::to_string(b.points.size());
     if (a.regionNames != b.regionNames)
         return "region names differ";
     for (CellType t : {CellType::Tet, CellType::Pyramid, CellType::Prism})
         if (cellsOf(a, t) != cellsOf(b, t))
-            return std::string(cellTypeName(t)) + "s differ (count " + std::to_string(a.countCells(t)) + " vs " +
-                   std::to_string(b.countCells(t)) + ", or coordinates, node order or regions)";
+            return std::string(cellTypeName(t)) + "s differ (count "
+                   + std::to_string(a.countCells(t)) + " vs " + std::to_string(b.countCells(t))
+                   + ", or coordinates, node order or regions)";
     if (a.surfaces.size() != b.surfaces.size())
-        return "surface count " + std::to_string(a.surfaces.size()) + " vs " + std::to_string(b.surfaces.size());
+        return "surface count " + std::to_string(a.surfaces.size()) + " vs "
+               + std::to_string(b.surfaces.size());
     for (std::size_t s = 0; s < a.surfaces.size(); ++s) {
         if (a.surfaces[s].name != b.surfaces[s].name)
-            return "surface " + std::to_string(s) + " named " + a.surfaces[s].name + " vs " + b.surfaces[s].name;
-        if (what.surfaceMetadata && (a.surfaces[s].featureName != b.surfaces[s].featureName ||
-                                     a.surfaces[s].type != b.surfaces[s].type))
+            return "surface " + std::to_string(s) + " named " + a.surfaces[s].name + " vs "
+                   + b.surfaces[s].name;
+        if (what.surfaceMetadata
+            && (a.surfaces[s].featureName != b.surfaces[s].featureName
+                || a.surfaces[s].type != b.surfaces[s].type))
             return "surface " + a.surfaces[s].name + ": feature name or type differs";
     }
     if (trianglesOf(a) != trianglesOf(b))
-        return "triangles differ (count " + std::to_string(a.triangles.size()) + " vs " +
-               std::to_string(b.triangles.size()) + ", or coordinates, order or surfaces)";
+        return "triangles differ (count " + std::to_string(a.triangles.size()) + " vs "
+               + std::to_string(b.triangles.size()) + ", or coordinates, order or surfaces)";
     if (what.lines) {
         if (a.lineNames != b.lineNames)
             return "line names differ";
@@ -179,7 +188,8 @@ inline std::string compareMeshes(const VolumeMesh &a, const VolumeMesh &b, const
             sa.push_back(s.name);
         for (const MeshSurface &s : b.surfaces)
             sb.push_back(s.name);
-        if (namedSides(a.regionNames, a.regionBoundaries, sa) != namedSides(b.regionNames, b.regionBoundaries, sb))
+        if (namedSides(a.regionNames, a.regionBoundaries, sa)
+            != namedSides(b.regionNames, b.regionBoundaries, sb))
             return "region sides differ";
     }
     if (what.quality) {
@@ -204,7 +214,8 @@ struct ModelCompare {
 inline std::string compareModels(const Model &a, const Model &b, const ModelCompare &what = {})
 {
     if (a.surfaces.size() != b.surfaces.size())
-        return "surface count " + std::to_string(a.surfaces.size()) + " vs " + std::to_string(b.surfaces.size());
+        return "surface count " + std::to_string(a.surfaces.size()) + " vs "
+               + std::to_string(b.surfaces.size());
     std::map<std::string, const Surface *> byName;
     for (const Surface &s : b.surfaces)
         byName[s.name] = &s;
@@ -218,16 +229,17 @@ inline std::string compareModels(const Model &a, const Model &b, const ModelComp
         if (what.types && sa.type != sb.type)
             return "surface " + sa.name + ": type differs";
         if (sa.vertices.size() != sb.vertices.size())
-            return "surface " + sa.name + ": vertex count " + std::to_string(sa.vertices.size()) + " vs " +
-                   std::to_string(sb.vertices.size());
+            return "surface " + sa.name + ": vertex count " + std::to_string(sa.vertices.size())
+                   + " vs " + std::to_string(sb.vertices.size());
         if (sa.triangles.size() != sb.triangles.size())
             return "surface " + sa.name + ": triangle count differs";
         for (std::size_t t = 0; t < sa.triangles.size(); ++t)
             for (int k = 0; k < 3; ++k) {
-                const Vec3 &pa = sa.vertices[sa.triangles[t][k]], &pb = sb.vertices[sb.triangles[t][k]];
+                const Vec3 &pa = sa.vertices[sa.triangles[t][k]],
+                           &pb = sb.vertices[sb.triangles[t][k]];
                 if (!(pa == pb))
-                    return "surface " + sa.name + ", triangle " + std::to_string(t) + ": " + text(pa) + " vs " +
-                           text(pb);
+                    return "surface " + sa.name + ", triangle " + std::to_string(t) + ": "
+                           + text(pa) + " vs " + text(pb);
             }
     }
     if (what.regions) {
@@ -247,7 +259,8 @@ inline std::string compareModels(const Model &a, const Model &b, const ModelComp
             return namedSides(regionNames, list, names(m));
         };
         if (a.regions.size() != b.regions.size())
-            return "region count " + std::to_string(a.regions.size()) + " vs " + std::to_string(b.regions.size());
+            return "region count " + std::to_string(a.regions.size()) + " vs "
+                   + std::to_string(b.regions.size());
         if (sides(a) != sides(b))
             return "region names or sides differ";
     }
@@ -257,7 +270,8 @@ inline std::string compareModels(const Model &a, const Model &b, const ModelComp
 // /usr/bin/python3 first: a pyenv python on PATH may not see Debian's python3-meshio.
 inline QString pythonWithMeshio()
 {
-    for (const QString &candidate : {QStringLiteral("/usr/bin/python3"), QStandardPaths::findExecutable("python3")}) {
+    for (const QString &candidate :
+         {QStringLiteral("/usr/bin/python3"), QStandardPaths::findExecutable("python3")}) {
         if (candidate.isEmpty())
             continue;
         QProcess p;

@@ -42,9 +42,10 @@ const std::vector<Format> &meshFormats()
 
 QString label(const Format &f)
 {
-    return QString(f.extension) + (QString(f.extension) == "msh"
-                                       ? (f.gmsh == GmshWriteOptions::Version::V41 ? " 4.1" : " 2.2")
-                                       : QString());
+    return QString(f.extension)
+           + (QString(f.extension) == "msh"
+                  ? (f.gmsh == GmshWriteOptions::Version::V41 ? " 4.1" : " 2.2")
+                  : QString());
 }
 
 } // namespace
@@ -118,7 +119,8 @@ private slots:
             mc.featureNames = mc.types = f.featureMetadata;
             mc.regions = f.regionSides;
             diff = test::compareModels(model, modelFromMesh(back), mc);
-            QVERIFY2(diff.empty(), qPrintable(label(f) + " as model: " + QString::fromStdString(diff)));
+            QVERIFY2(diff.empty(),
+                     qPrintable(label(f) + " as model: " + QString::fromStdString(diff)));
         }
     }
 
@@ -183,23 +185,28 @@ private slots:
             QSKIP("*** python3-meshio is not installed: its check is SKIPPED ***");
         for (const QString &file : {msh, vtu}) {
             QProcess p;
-            p.start(python, {"-c",
-                             "import sys, meshio\n"
-                             "m = meshio.read(sys.argv[1])\n"
-                             "c = {}\n"
-                             "for b in m.cells: c[b.type] = c.get(b.type, 0) + len(b.data)\n"
-                             "print(len(m.points), c.get('triangle',0), c.get('line',0), c.get('vertex',0))\n",
-                             file});
+            p.start(
+                python,
+                {"-c",
+                 "import sys, meshio\n"
+                 "m = meshio.read(sys.argv[1])\n"
+                 "c = {}\n"
+                 "for b in m.cells: c[b.type] = c.get(b.type, 0) + len(b.data)\n"
+                 "print(len(m.points), c.get('triangle',0), c.get('line',0), c.get('vertex',0))\n",
+                 file});
             QVERIFY(p.waitForFinished(120000));
             QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
-            QCOMPARE(QString(p.readAllStandardOutput()).trimmed(),
-                     QString("%1 %2 %3 %4").arg(mesh.points.size()).arg(mesh.triangles.size())
-                         .arg(mesh.edges.size()).arg(mesh.corners.size()));
+            QCOMPARE(QString(p.readAllStandardOutput()).trimmed(), QString("%1 %2 %3 %4")
+                                                                       .arg(mesh.points.size())
+                                                                       .arg(mesh.triangles.size())
+                                                                       .arg(mesh.edges.size())
+                                                                       .arg(mesh.corners.size()));
         }
     }
 
 private:
-    void diff(const VolumeMesh &a, const VolumeMesh &b, const test::MeshCompare &c, const QString &what)
+    void diff(const VolumeMesh &a, const VolumeMesh &b, const test::MeshCompare &c,
+              const QString &what)
     {
         const std::string d = test::compareMeshes(a, b, c);
         QVERIFY2(d.empty(), qPrintable(what + ": " + QString::fromStdString(d)));

@@ -98,14 +98,16 @@ private slots:
     void fileWithoutTriangles()
     {
         QTemporaryDir dir;
-        expectFileError(writeFile(dir, "points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"), "no triangle");
+        expectFileError(writeFile(dir, "points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"),
+                        "no triangle");
     }
 
     void nonFiniteCoordinate()
     {
         QTemporaryDir dir;
         // OpenMesh alone would skip this line and shift the later vertex indices.
-        expectFileError(writeFile(dir, "nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n"), "non-finite");
+        expectFileError(writeFile(dir, "nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n"),
+                        "non-finite");
         try {
             readModel(writeFile(dir, "inf.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 inf 0\n3 0 1 2\n"));
             QFAIL("no FileError raised");
@@ -117,8 +119,9 @@ private slots:
     void facesOpenMeshWouldDrop()
     {
         QTemporaryDir dir;
-        expectFileError(writeFile(dir, "degenerate.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 2\n"),
-                        "could not be added");
+        expectFileError(
+            writeFile(dir, "degenerate.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 2\n"),
+            "could not be added");
         // Three triangles on one edge: OpenMesh would duplicate vertices (a silent cut).
         expectFileError(writeFile(dir, "fin.obj",
                                   "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n"
@@ -129,8 +132,10 @@ private slots:
     void unreadableContent()
     {
         QTemporaryDir dir;
-        expectFileError(writeFile(dir, "garbage.off", "this is not an OFF file\n"), "not an OFF file");
-        expectFileError(writeFile(dir, "short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"), "file ends after 2 of 3 vertices");
+        expectFileError(writeFile(dir, "garbage.off", "this is not an OFF file\n"),
+                        "not an OFF file");
+        expectFileError(writeFile(dir, "short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"),
+                        "file ends after 2 of 3 vertices");
     }
 
     void missingFile()
@@ -148,9 +153,10 @@ private slots:
     void dispatchesGocadByExtension()
     {
         QTemporaryDir dir;
-        const std::string path = writeFile(dir, "one.TS",
-                                           "GOCAD TSurf 1\nHEADER {name:one}\nTFACE\n"
-                                           "VRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n");
+        const std::string path =
+            writeFile(dir, "one.TS",
+                      "GOCAD TSurf 1\nHEADER {name:one}\nTFACE\n"
+                      "VRTX 1 0 0 0\nVRTX 2 1 0 0\nVRTX 3 0 1 0\nTRGL 1 2 3\nEND\n");
         const Model m = readModel(path);
         QCOMPARE(m.surfaces.size(), std::size_t(1));
         QCOMPARE(m.surfaces[0].name, std::string("one"));

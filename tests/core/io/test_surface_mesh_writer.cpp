@@ -35,7 +35,8 @@ Model wavySurface()
     const int n = 6;
     for (int j = 0; j <= n; ++j)
         for (int i = 0; i <= n; ++i)
-            s.vertices.push_back({1600649.31 + i / 3.0, 720000.1 + j / 7.0, std::sin(i * 0.7) * std::cos(j * 1.3)});
+            s.vertices.push_back(
+                {1600649.31 + i / 3.0, 720000.1 + j / 7.0, std::sin(i * 0.7) * std::cos(j * 1.3)});
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const int a = j * (n + 1) + i;
@@ -59,7 +60,8 @@ std::vector<Vec3> coordinatesInText(const QString &path, const QString &extensio
         for (const QByteArray &l : lines)
             if (l.startsWith("v ")) {
                 const QList<QByteArray> t = l.split(' ');
-                out.push_back({std::strtod(t[1].constData(), nullptr), std::strtod(t[2].constData(), nullptr),
+                out.push_back({std::strtod(t[1].constData(), nullptr),
+                               std::strtod(t[2].constData(), nullptr),
                                std::strtod(t[3].constData(), nullptr)});
             }
         return out;
@@ -77,7 +79,8 @@ std::vector<Vec3> coordinatesInText(const QString &path, const QString &extensio
     }
     for (int i = first; i < first + count; ++i) {
         const QList<QByteArray> t = lines[i].split(' ');
-        out.push_back({std::strtod(t[0].constData(), nullptr), std::strtod(t[1].constData(), nullptr),
+        out.push_back({std::strtod(t[0].constData(), nullptr),
+                       std::strtod(t[1].constData(), nullptr),
                        std::strtod(t[2].constData(), nullptr)});
     }
     return out;
@@ -132,12 +135,14 @@ private slots:
                 ids.push_back(vh.idx());
             const Triangle &t = s.triangles[f++];
             // Same cycle (OpenMesh may start the face at another corner).
-            const bool same = (ids[0] == t[0] && ids[1] == t[1]) || (ids[0] == t[1] && ids[1] == t[2]) ||
-                              (ids[0] == t[2] && ids[1] == t[0]);
+            const bool same = (ids[0] == t[0] && ids[1] == t[1])
+                              || (ids[0] == t[1] && ids[1] == t[2])
+                              || (ids[0] == t[2] && ids[1] == t[0]);
             QVERIFY(same);
         }
         // And our own reading paths give everything back exactly.
-        const Model back = extension == "ply" ? readMeshAsModel(path.toStdString()) : readModel(path.toStdString());
+        const Model back = extension == "ply" ? readMeshAsModel(path.toStdString())
+                                              : readModel(path.toStdString());
         QCOMPARE(back.surfaces.at(0).vertices, s.vertices);
         QCOMPARE(back.surfaces.at(0).triangles, s.triangles);
     }
@@ -148,7 +153,8 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath("s.stl");
         writeSurfaceMesh(model, path.toStdString());
-        QCOMPARE(QFileInfo(path).size(), qint64(84 + 50 * model.surfaces[0].triangles.size())); // binary STL
+        QCOMPARE(QFileInfo(path).size(),
+                 qint64(84 + 50 * model.surfaces[0].triangles.size())); // binary STL
         const Mesh mesh = readBack(path);
         QCOMPARE(int(mesh.n_faces()), int(model.surfaces[0].triangles.size()));
         QCOMPARE(int(mesh.n_vertices()), int(model.surfaces[0].vertices.size()));
@@ -193,8 +199,10 @@ private slots:
         s.triangles.push_back({0, 1, int(s.vertices.size()) - 1});
         s.vertices.push_back({0, 0, -5});
         s.triangles.push_back({1, 0, int(s.vertices.size()) - 1});
-        QVERIFY_THROWS_EXCEPTION(InputError, writeSurfaceMesh(model, dir.filePath("x.stl").toStdString()));
-        QVERIFY_THROWS_EXCEPTION(FileError, writeSurfaceMesh(wavySurface(), dir.filePath("x.xyz").toStdString()));
+        QVERIFY_THROWS_EXCEPTION(InputError,
+                                 writeSurfaceMesh(model, dir.filePath("x.stl").toStdString()));
+        QVERIFY_THROWS_EXCEPTION(
+            FileError, writeSurfaceMesh(wavySurface(), dir.filePath("x.xyz").toStdString()));
         QVERIFY(QDir(dir.path()).isEmpty());
     }
 };

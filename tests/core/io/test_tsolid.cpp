@@ -44,7 +44,8 @@ VolumeMesh tetMesh()
             m.cellRegion.push_back(z);
         }
     }
-    m.surfaces = {{"base", "box", FeatureType::Boundary}, {"middle_1", "middle", FeatureType::Horizon}};
+    m.surfaces = {{"base", "box", FeatureType::Boundary},
+                  {"middle_1", "middle", FeatureType::Horizon}};
     // Diagonal (0,0)-(1,1) as in the Kuhn split.
     for (int z = 0; z < 2; ++z) {
         m.triangles.push_back({id(0, 0, z), id(1, 0, z), id(1, 1, z)});
@@ -128,7 +129,8 @@ private slots:
             writeGocadTSolid(test::hybridMesh(), dir.filePath("h.so").toStdString());
             QFAIL("wrote prisms into a TSolid");
         } catch (const InputError &e) {
-            QVERIFY2(std::string(e.what()).find("2 prisms and 5 pyramids") != std::string::npos, e.what());
+            QVERIFY2(std::string(e.what()).find("2 prisms and 5 pyramids") != std::string::npos,
+                     e.what());
         }
         QVERIFY(!QFile::exists(dir.filePath("h.so")));
     }
@@ -148,7 +150,7 @@ private slots:
         QCOMPARE(int(m.points.size()), 6); // 4 + crack copy + (1,1,1); ATOMs 6-8 share points
         QCOMPARE(m.regionNames, (std::vector<std::string>{"A", "B side"}));
         QCOMPARE(m.cellRegion, (std::vector<int>{0, 0, 1}));
-        QCOMPARE(m.cells[1].nodes[2], 4);                  // the crack copy
+        QCOMPARE(m.cells[1].nodes[2], 4);                   // the crack copy
         QCOMPARE(m.cells[2].nodes[0], m.cells[0].nodes[1]); // ATOM 6 -> vertex 2
         QCOMPARE(m.name, std::string("atoms"));
         QCOMPARE(m.surfaces.front().name, std::string("wall"));
@@ -162,10 +164,11 @@ private slots:
     {
         QTemporaryDir dir;
         const QString path = dir.filePath("light.so");
-        writeFile(path, "GOCAD LightTSolid 1\nVRTX 1 0 0 0 XYZ\nVRTX 2 1 0 0 XYZ\nVRTX 3 0 1 0 XYZ\n"
-                        "VRTX 4 0 0 1 XYZ\nVRTX 5 1 1 1 XYZ\nSHAREDVRTX 6 2\n"
-                        "TETRA 1 2 3 4\n# CTETRA north none none none none\n"
-                        "TETRA 6 5 3 4\n# CTETRA \"south rock\" none none none none\nEND\n");
+        writeFile(path,
+                  "GOCAD LightTSolid 1\nVRTX 1 0 0 0 XYZ\nVRTX 2 1 0 0 XYZ\nVRTX 3 0 1 0 XYZ\n"
+                  "VRTX 4 0 0 1 XYZ\nVRTX 5 1 1 1 XYZ\nSHAREDVRTX 6 2\n"
+                  "TETRA 1 2 3 4\n# CTETRA north none none none none\n"
+                  "TETRA 6 5 3 4\n# CTETRA \"south rock\" none none none none\nEND\n");
         const VolumeMesh m = readGocadTSolid(path.toStdString());
         QCOMPARE(m.regionNames, (std::vector<std::string>{"north", "south rock"}));
         QCOMPARE(m.cellRegion, (std::vector<int>{0, 1}));
@@ -177,14 +180,16 @@ private slots:
         QTest::addColumn<QByteArray>("text");
         QTest::addColumn<QString>("expected");
         QTest::newRow("not tsolid") << QByteArray("GOCAD TSurf 1\n") << "x.so:1: expected a TSolid";
-        QTest::newRow("unknown vertex") << QByteArray("GOCAD TSolid 1\nTVOLUME a\nVRTX 1 0 0 0\nTETRA 1 2 3 4\n")
-                                        << "x.so:4: vertex 2 is not defined";
-        QTest::newRow("bad coordinate") << QByteArray("GOCAD TSolid 1\nTVOLUME a\nVRTX 1 0 north 0\n")
-                                        << "x.so:3: expected y";
+        QTest::newRow("unknown vertex")
+            << QByteArray("GOCAD TSolid 1\nTVOLUME a\nVRTX 1 0 0 0\nTETRA 1 2 3 4\n")
+            << "x.so:4: vertex 2 is not defined";
+        QTest::newRow("bad coordinate")
+            << QByteArray("GOCAD TSolid 1\nTVOLUME a\nVRTX 1 0 north 0\n") << "x.so:3: expected y";
         QTest::newRow("bad atom") << QByteArray("GOCAD TSolid 1\nTVOLUME a\nATOM 3 1\n")
                                   << "x.so:3: ATOM 3 refers to vertex 1";
-        QTest::newRow("duplicate id") << QByteArray("GOCAD TSolid 1\nTVOLUME a\nVRTX 1 0 0 0\nVRTX 1 1 0 0\n")
-                                      << "x.so:4: vertex id 1 is used twice";
+        QTest::newRow("duplicate id")
+            << QByteArray("GOCAD TSolid 1\nTVOLUME a\nVRTX 1 0 0 0\nVRTX 1 1 0 0\n")
+            << "x.so:4: vertex id 1 is used twice";
     }
     void errorsNameTheLine()
     {
@@ -197,7 +202,8 @@ private slots:
             readGocadTSolid(path.toStdString());
             QFAIL("accepted a bad file");
         } catch (const FileError &e) {
-            QVERIFY2(std::string(e.what()).find(expected.toStdString()) != std::string::npos, e.what());
+            QVERIFY2(std::string(e.what()).find(expected.toStdString()) != std::string::npos,
+                     e.what());
         }
     }
 };

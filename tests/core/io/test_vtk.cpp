@@ -128,7 +128,8 @@ private slots:
             tets += type == VTK_TETRA;
             pyramids += type == VTK_PYRAMID;
             wedges += type == VTK_WEDGE;
-            QVERIFY2(volume > 0, qPrintable(QString("VTK type %1 volume %2").arg(type).arg(volume)));
+            QVERIFY2(volume > 0,
+                     qPrintable(QString("VTK type %1 volume %2").arg(type).arg(volume)));
             total += volume;
         }
         QCOMPARE(tets, 2);
@@ -151,7 +152,8 @@ private slots:
             writeVtk(mesh, path.toStdString(), kind);
             const VolumeMesh back = readVtk(path.toStdString());
             const std::string diff = test::compareMeshes(mesh, back);
-            QVERIFY2(diff.empty(), qPrintable(extensionOf(kind) + ": " + QString::fromStdString(diff)));
+            QVERIFY2(diff.empty(),
+                     qPrintable(extensionOf(kind) + ": " + QString::fromStdString(diff)));
             const std::string modelDiff = test::compareModels(model, modelFromMesh(back));
             QVERIFY2(modelDiff.empty(), modelDiff.c_str());
         }
@@ -160,8 +162,9 @@ private slots:
     void polyDataRefusesCells()
     {
         QTemporaryDir dir;
-        QVERIFY_THROWS_EXCEPTION(InputError,
-                                 writeVtk(test::hybridMesh(), dir.filePath("x.vtp").toStdString(), VtkFileKind::Vtp));
+        QVERIFY_THROWS_EXCEPTION(
+            InputError,
+            writeVtk(test::hybridMesh(), dir.filePath("x.vtp").toStdString(), VtkFileKind::Vtp));
         QVERIFY(!QFile::exists(dir.filePath("x.vtp")));
     }
 
@@ -198,15 +201,17 @@ private slots:
         const QString path = dir.filePath("m." + extensionOf(VtkFileKind(kind)));
         writeVtk(test::hybridMesh(), path.toStdString(), VtkFileKind(kind));
         QProcess p;
-        p.start(python, {"-c",
-                         "import sys, meshio\n"
-                         "m = meshio.read(sys.argv[1])\n"
-                         "c = {}\n"
-                         "for b in m.cells: c[b.type] = c.get(b.type, 0) + len(b.data)\n"
-                         "r = [int(v) for a in m.cell_data['RegionId'] for v in a]\n"
-                         "print(len(m.points), c.get('tetra',0), c.get('pyramid',0), c.get('wedge',0),"
-                         " c.get('triangle',0), c.get('line',0), c.get('vertex',0), sum(1 for v in r if v == 1))\n",
-                         path});
+        p.start(python,
+                {"-c",
+                 "import sys, meshio\n"
+                 "m = meshio.read(sys.argv[1])\n"
+                 "c = {}\n"
+                 "for b in m.cells: c[b.type] = c.get(b.type, 0) + len(b.data)\n"
+                 "r = [int(v) for a in m.cell_data['RegionId'] for v in a]\n"
+                 "print(len(m.points), c.get('tetra',0), c.get('pyramid',0), c.get('wedge',0),"
+                 " c.get('triangle',0), c.get('line',0), c.get('vertex',0), sum(1 for v in r if v "
+                 "== 1))\n",
+                 path});
         QVERIFY(p.waitForFinished(120000));
         QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
         QCOMPARE(QString(p.readAllStandardOutput()).trimmed(), QStringLiteral("13 2 5 2 4 4 4 7"));

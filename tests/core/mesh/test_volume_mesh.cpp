@@ -21,10 +21,14 @@ VolumeMesh referenceCells()
 {
     // Gmsh reference elements (formats.md §2.5).
     VolumeMesh m;
-    m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};                                   // tet 0-3
-    m.points.insert(m.points.end(), {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, 0, 1}}); // pyramid 4-8
-    m.points.insert(m.points.end(), {{0, 0, -1}, {1, 0, -1}, {0, 1, -1}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}}); // prism 9-14
-    m.cells = {Cell::tet(0, 1, 2, 3), Cell::pyramid(4, 5, 6, 7, 8), Cell::prism(9, 10, 11, 12, 13, 14)};
+    m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}; // tet 0-3
+    m.points.insert(m.points.end(),
+                    {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, 0, 1}}); // pyramid 4-8
+    m.points.insert(
+        m.points.end(),
+        {{0, 0, -1}, {1, 0, -1}, {0, 1, -1}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}}); // prism 9-14
+    m.cells = {Cell::tet(0, 1, 2, 3), Cell::pyramid(4, 5, 6, 7, 8),
+               Cell::prism(9, 10, 11, 12, 13, 14)};
     m.cellRegion = {-1, -1, -1};
     return m;
 }
@@ -92,7 +96,8 @@ private slots:
             validateMesh(m);
             QFAIL("accepted a cell using a missing point");
         } catch (const InputError &e) {
-            QVERIFY2(std::string(e.what()).find("pyramid 3 uses point 99") != std::string::npos, e.what());
+            QVERIFY2(std::string(e.what()).find("pyramid 3 uses point 99") != std::string::npos,
+                     e.what());
         }
         m = test::hybridMesh();
         m.triangleSurface[1] = 7;

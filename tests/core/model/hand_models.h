@@ -9,7 +9,8 @@
 namespace stratamesh::test {
 
 inline Surface makeSurface(const std::string &name, std::initializer_list<Vec3> vertices,
-                           std::initializer_list<Triangle> triangles, FeatureType type = FeatureType::Horizon)
+                           std::initializer_list<Triangle> triangles,
+                           FeatureType type = FeatureType::Horizon)
 {
     Surface s;
     s.name = name;

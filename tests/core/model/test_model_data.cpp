@@ -60,7 +60,8 @@ private slots:
             sum += v;
         }
         const double box = boxEnclosedVolume(m);
-        QVERIFY2(std::abs(sum - box) <= 1e-9 * box, qPrintable(QStringLiteral("%1 vs %2").arg(sum, 0, 'g', 17).arg(box, 0, 'g', 17)));
+        QVERIFY2(std::abs(sum - box) <= 1e-9 * box,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(sum, 0, 'g', 17).arg(box, 0, 'g', 17)));
         // formats.md §1.6: A1/A2/A4/A5 share one box of volume 7.76229e11.
         QVERIFY(std::abs(box - 7.76229e11) < 1e-5 * box);
         QVERIFY(std::abs(universeVolume(m) + sum) <= 1e-9 * sum);

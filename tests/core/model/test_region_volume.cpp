@@ -15,7 +15,10 @@ using namespace stratamesh::test;
 
 namespace {
 
-bool close(double a, double b, double relative) { return std::abs(a - b) <= relative * std::max(std::abs(a), std::abs(b)); }
+bool close(double a, double b, double relative)
+{
+    return std::abs(a - b) <= relative * std::max(std::abs(a), std::abs(b));
+}
 
 } // namespace
 
@@ -34,7 +37,8 @@ private slots:
         const std::vector<double> v = regionVolumes(m);
         QCOMPARE(v.size(), std::size_t(3));
         for (double x : v)
-            QVERIFY2(close(x, 300.0 * 200.0 * 30.0, 1e-12), qPrintable(QString::number(x, 'g', 17)));
+            QVERIFY2(close(x, 300.0 * 200.0 * 30.0, 1e-12),
+                     qPrintable(QString::number(x, 'g', 17)));
         QVERIFY(close(universeVolume(m), -300.0 * 200.0 * 90.0, 1e-12));
     }
 
@@ -52,7 +56,8 @@ private slots:
         const Model m = recoverTopology(layeredBox(p));
         const std::vector<double> v = regionVolumes(m);
         QCOMPARE(v.size(), std::size_t(4));
-        const double expected[] = {120 * 200 * 55.0, 120 * 200 * 35.0, 180 * 200 * 35.0, 180 * 200 * 55.0};
+        const double expected[] = {120 * 200 * 55.0, 120 * 200 * 35.0, 180 * 200 * 35.0,
+                                   180 * 200 * 55.0};
         for (int i = 0; i < 4; ++i)
             QVERIFY2(close(v[i], expected[i], 1e-12), qPrintable(QString::number(v[i], 'g', 17)));
     }
@@ -60,16 +65,16 @@ private slots:
     void foldedFaultedBoxVolumesArePositiveAndSumToTheBox()
     {
         for (const Model &raw : {sampleModel(), [] {
-                 LayeredBoxParams p;
-                 p.horizons = 3;
-                 p.fault = true;
-                 p.faultDipDegrees = 50.0;
-                 p.faultThrow = 35.0;
-                 p.foldAmplitude = 70.0;
-                 p.thinLayerThickness = 4.0;
-                 p.edgeLength = 40.0;
-                 return layeredBox(p);
-             }()}) {
+                                     LayeredBoxParams p;
+                                     p.horizons = 3;
+                                     p.fault = true;
+                                     p.faultDipDegrees = 50.0;
+                                     p.faultThrow = 35.0;
+                                     p.foldAmplitude = 70.0;
+                                     p.thinLayerThickness = 4.0;
+                                     p.edgeLength = 40.0;
+                                     return layeredBox(p);
+                                 }()}) {
             const Model m = recoverTopology(raw);
             double sum = 0.0;
             for (double v : regionVolumes(m)) {
@@ -77,9 +82,12 @@ private slots:
                 sum += v;
             }
             const double box = boxEnclosedVolume(m);
-            QVERIFY2(close(sum, box, 1e-9), qPrintable(QStringLiteral("%1 vs %2").arg(sum, 0, 'g', 17).arg(box, 0, 'g', 17)));
+            QVERIFY2(
+                close(sum, box, 1e-9),
+                qPrintable(QStringLiteral("%1 vs %2").arg(sum, 0, 'g', 17).arg(box, 0, 'g', 17)));
             // The box is a cuboid whatever its patches: its volume is known without the mesh.
-            QVERIFY(close(box, m.name == "sample" ? 1600.0 * 930.0 * 500.0 : 1000.0 * 600.0 * 400.0, 1e-12));
+            QVERIFY(close(box, m.name == "sample" ? 1600.0 * 930.0 * 500.0 : 1000.0 * 600.0 * 400.0,
+                          1e-12));
             QVERIFY(close(universeVolume(m), -sum, 1e-9));
         }
     }
@@ -114,7 +122,8 @@ private slots:
         const Model open = recoverTopology(modelOf({square("a")}));
         QVERIFY_THROWS_EXCEPTION(InputError, enclosedVolume(open, {0}));
         QVERIFY_THROWS_EXCEPTION(InputError, boxEnclosedVolume(open)); // no box at all
-        QVERIFY_THROWS_EXCEPTION(InputError, enclosedVolume(modelOf({square("a")}), {0})); // no topology
+        QVERIFY_THROWS_EXCEPTION(InputError,
+                                 enclosedVolume(modelOf({square("a")}), {0})); // no topology
     }
 
     // Far from the origin (Gocad coordinates like 1.6e6) the reference point keeps precision.

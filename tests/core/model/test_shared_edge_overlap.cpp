@@ -17,8 +17,8 @@ bool exactOverlap(const Vec3 &u, const Vec3 &v, const Vec3 &a, const Vec3 &b)
 {
     const Kernel::Point_3 pu(u.x(), u.y(), u.z()), pv(v.x(), v.y(), v.z()), pa(a.x(), a.y(), a.z()),
         pb(b.x(), b.y(), b.z());
-    return CGAL::orientation(pu, pv, pa, pb) == CGAL::COPLANAR &&
-           CGAL::coplanar_orientation(pu, pv, pa, pb) == CGAL::POSITIVE;
+    return CGAL::orientation(pu, pv, pa, pb) == CGAL::COPLANAR
+           && CGAL::coplanar_orientation(pu, pv, pa, pb) == CGAL::POSITIVE;
 }
 
 } // namespace
@@ -29,10 +29,11 @@ private slots:
     void simpleCases()
     {
         const Vec3 u(0, 0, 0), v(2, 0, 0);
-        QVERIFY(!sharedEdgeTrianglesOverlap(u, v, Vec3(1, 1, 0), Vec3(1, -1, 0)));  // unfolded
-        QVERIFY(sharedEdgeTrianglesOverlap(u, v, Vec3(1, 1, 0), Vec3(1, 2, 0)));    // folded
-        QVERIFY(!sharedEdgeTrianglesOverlap(u, v, Vec3(1, 1, 0), Vec3(1, 1, 1e-9))); // bent a little
-        QVERIFY(!sharedEdgeTrianglesOverlap(u, v, Vec3(1, 1, 0), Vec3(1, 0, 1)));   // at right angle
+        QVERIFY(!sharedEdgeTrianglesOverlap(u, v, Vec3(1, 1, 0), Vec3(1, -1, 0))); // unfolded
+        QVERIFY(sharedEdgeTrianglesOverlap(u, v, Vec3(1, 1, 0), Vec3(1, 2, 0)));   // folded
+        QVERIFY(
+            !sharedEdgeTrianglesOverlap(u, v, Vec3(1, 1, 0), Vec3(1, 1, 1e-9)));  // bent a little
+        QVERIFY(!sharedEdgeTrianglesOverlap(u, v, Vec3(1, 1, 0), Vec3(1, 0, 1))); // at right angle
         // A needle apex on the edge's line: the exact predicates decide.
         QVERIFY(!sharedEdgeTrianglesOverlap(u, v, Vec3(1, 1, 0), Vec3(3, 0, 0)));
     }

@@ -19,7 +19,10 @@ using namespace stratamesh::test;
 
 namespace {
 
-EntityCounts counts(int r, int s, int l, int c) { return {r, s, l, c}; }
+EntityCounts counts(int r, int s, int l, int c)
+{
+    return {r, s, l, c};
+}
 
 QString text(const EntityCounts &c)
 {
@@ -83,7 +86,8 @@ void checkConsistency(const Model &m)
             QVERIFY2(lineOfEdge.count(key), "a contact or border edge is on no line");
     for (std::size_t c = 0; c < m.corners.size(); ++c)
         for (int l : m.corners[c].lines)
-            QVERIFY(m.lines[l].corners[0] == static_cast<int>(c) || m.lines[l].corners[1] == static_cast<int>(c));
+            QVERIFY(m.lines[l].corners[0] == static_cast<int>(c)
+                    || m.lines[l].corners[1] == static_cast<int>(c));
     for (std::size_t r = 0; r < m.regions.size(); ++r)
         for (const RegionSide &side : m.regions[r].boundaries) {
             const std::vector<int> &sr = m.surfaces[side.surface].regions;
@@ -114,8 +118,9 @@ private slots:
     // the diagonal is a cut (an internal line), ending at two corners.
     void duplicatesInsideOneSurfaceAreNotMerged()
     {
-        const Surface cut = makeSurface("cut", {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}},
-                                        {{0, 1, 2}, {3, 4, 5}});
+        const Surface cut =
+            makeSurface("cut", {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+                        {{0, 1, 2}, {3, 4, 5}});
         const Model m = recoverTopology(modelOf({cut}));
         QCOMPARE(m.vertices.size(), std::size_t(4));
         QCOMPARE(m.surfaceVertexToGlobal[0][3], m.surfaceVertexToGlobal[0][0]);
@@ -160,12 +165,15 @@ private slots:
                 h.triangles.push_back({a, a + 1, a + 4});
                 h.triangles.push_back({a, a + 4, a + 3});
             }
-        Surface f = makeSurface("f", {{1, 0, 0}, {1, 1, 0}, {1, 2, 0}, {1, 0, 1}, {1, 1, 1}, {1, 2, 1}},
-                                {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}}, FeatureType::Fault);
+        Surface f =
+            makeSurface("f", {{1, 0, 0}, {1, 1, 0}, {1, 2, 0}, {1, 0, 1}, {1, 1, 1}, {1, 2, 1}},
+                        {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}}, FeatureType::Fault);
         const Model m = recoverTopology(modelOf({h, f}));
         QCOMPARE(m.vertices.size(), std::size_t(12));
-        QCOMPARE(m.corners.size(), std::size_t(2));  // where the fault's foot meets the horizon border
-        QCOMPARE(m.lines.size(), std::size_t(4));    // contact, fault border, two horizon border halves
+        QCOMPARE(m.corners.size(),
+                 std::size_t(2)); // where the fault's foot meets the horizon border
+        QCOMPARE(m.lines.size(),
+                 std::size_t(4)); // contact, fault border, two horizon border halves
         const int contact = lineWithSurfaces(m, {0, 1});
         QVERIFY(contact >= 0);
         QCOMPARE(m.lines[contact].vertices.size(), std::size_t(3));
@@ -188,15 +196,16 @@ private slots:
                 h.triangles.push_back({a, a + 1, a + 5});
                 h.triangles.push_back({a, a + 5, a + 4});
             }
-        const Surface f = makeSurface("f", {{1, 1, 0}, {1, 2, 0}, {1, 1, 1}, {1, 2, 1}}, {{0, 1, 3}, {0, 3, 2}},
-                                      FeatureType::Fault);
+        const Surface f = makeSurface("f", {{1, 1, 0}, {1, 2, 0}, {1, 1, 1}, {1, 2, 1}},
+                                      {{0, 1, 3}, {0, 3, 2}}, FeatureType::Fault);
         const Model m = recoverTopology(modelOf({h, f}));
         QCOMPARE(m.corners.size(), std::size_t(2));
         for (const Corner &c : m.corners) {
             QCOMPARE(m.vertices[c.vertex].z(), 0.0);
             QCOMPARE(c.lines.size(), std::size_t(2));
         }
-        QCOMPARE(m.lines.size(), std::size_t(3)); // horizon border (closed), fault foot, rest of the fault border
+        QCOMPARE(m.lines.size(),
+                 std::size_t(3)); // horizon border (closed), fault foot, rest of the fault border
         const int border = lineWithSurfaces(m, {0});
         QVERIFY(border >= 0 && m.lines[border].closed);
         QCOMPARE(m.lines[border].vertices.size(), std::size_t(12));
@@ -290,7 +299,8 @@ private slots:
 
     void badInputIsRejected()
     {
-        Model outOfRange = modelOf({makeSurface("bad", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 3}})});
+        Model outOfRange =
+            modelOf({makeSurface("bad", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 3}})});
         QVERIFY_THROWS_EXCEPTION(InputError, recoverTopology(outOfRange));
         Model nan = modelOf({square("nan")});
         nan.surfaces[0].vertices[2].z() = std::numeric_limits<double>::quiet_NaN();

@@ -120,7 +120,8 @@ private slots:
     void boxWithAHoleIsNotSealed()
     {
         const Model full = layeredBox(smallBox());
-        const ValidityReport r = checkValidity(withoutSurface(full, static_cast<int>(full.surfaces.size()) - 1));
+        const ValidityReport r =
+            checkValidity(withoutSurface(full, static_cast<int>(full.surfaces.size()) - 1));
         QVERIFY(r.count(check::notSealed) >= 1);
         QVERIFY(r.count(check::regionBoundary) >= 1); // the region lost part of its boundary
     }
@@ -143,21 +144,26 @@ private slots:
 
     void nonManifoldEdge()
     {
-        const Surface fan = makeSurface("fan", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}},
-                                        {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+        const Surface fan =
+            makeSurface("fan", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}},
+                        {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
         const ValidityReport r = checkValidity(modelOf({fan}));
         QCOMPARE(r.count(check::nonManifoldEdge), std::size_t(1));
-        QCOMPARE(r.count(check::notSealed), std::size_t(3)); // three border lines between the edge's ends
+        QCOMPARE(r.count(check::notSealed),
+                 std::size_t(3)); // three border lines between the edge's ends
     }
 
     void degenerateTriangles()
     {
-        const Surface repeated = makeSurface("repeated", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 1}});
+        const Surface repeated =
+            makeSurface("repeated", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 1}});
         const Surface collinear = triangle("collinear", {0, 0, 5}, {1, 1, 5}, {3, 3, 5});
-        const Surface samePlace = makeSurface("samePlace", {{0, 0, 9}, {1, 0, 9}, {0, 0, 9}}, {{0, 1, 2}});
+        const Surface samePlace =
+            makeSurface("samePlace", {{0, 0, 9}, {1, 0, 9}, {0, 0, 9}}, {{0, 1, 2}});
         const ValidityReport r = checkValidity(modelOf({repeated, collinear, samePlace}));
         QCOMPARE(r.count(check::degenerateTriangle), std::size_t(3));
-        QCOMPARE(r.count(check::surfaceIntersection), std::size_t(0)); // degenerate ones are skipped
+        QCOMPARE(r.count(check::surfaceIntersection),
+                 std::size_t(0)); // degenerate ones are skipped
         // A nearly flat but non-degenerate triangle is fine.
         const Surface needle = triangle("needle", {0, 0, 0}, {1, 0, 0}, {2, 1e-12, 0});
         QCOMPARE(checkValidity(modelOf({needle})).count(check::degenerateTriangle), std::size_t(0));
@@ -167,7 +173,8 @@ private slots:
     {
         const ValidityReport across = checkValidity(modelOf({square("a"), square("b")}));
         QCOMPARE(across.count(check::duplicateTriangle), std::size_t(2));
-        const Surface twice = makeSurface("twice", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {1, 2, 0}});
+        const Surface twice =
+            makeSurface("twice", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {1, 2, 0}});
         QCOMPARE(checkValidity(modelOf({twice})).count(check::duplicateTriangle), std::size_t(1));
     }
 
@@ -195,13 +202,15 @@ private slots:
                                             {{0, 1, 2}, {0, 3, 2}});
         const ValidityReport r = checkValidity(modelOf({flipped}));
         QCOMPARE(r.count(check::inconsistentOrientation), std::size_t(1));
-        QCOMPARE(checkValidity(modelOf({square("fine")})).count(check::inconsistentOrientation), std::size_t(0));
+        QCOMPARE(checkValidity(modelOf({square("fine")})).count(check::inconsistentOrientation),
+                 std::size_t(0));
     }
 
     void crossingSurfacesIntersect()
     {
-        const Surface wall = makeSurface("wall", {{0.5, -1, -1}, {0.5, 2, -1}, {0.5, 2, 1}, {0.5, -1, 1}},
-                                         {{0, 1, 2}, {0, 2, 3}});
+        const Surface wall =
+            makeSurface("wall", {{0.5, -1, -1}, {0.5, 2, -1}, {0.5, 2, 1}, {0.5, -1, 1}},
+                        {{0, 1, 2}, {0, 2, 3}});
         const ValidityReport r = checkValidity(modelOf({square("floor"), wall}));
         QVERIFY(r.count(check::surfaceIntersection) >= 1);
         for (const ValidityProblem &p : r.problems)
@@ -218,7 +227,8 @@ private slots:
         QTest::addColumn<Vec3>("c");
         QTest::addColumn<Vec3>("d");
         QTest::addColumn<bool>("intersects");
-        // First triangle: (0,0,0), (2,0,0), (0,2,0). Second: (0,0,0), c, d — or (0,0,0), (2,0,0), d.
+        // First triangle: (0,0,0), (2,0,0), (0,2,0). Second: (0,0,0), c, d — or (0,0,0), (2,0,0),
+        // d.
         QTest::newRow("vertex, opposite quadrant") << Vec3(-1, 0, 0) << Vec3(0, -1, 0) << false;
         QTest::newRow("vertex, coplanar inside") << Vec3(1, 0.2, 0) << Vec3(0.2, 1, 0) << true;
         QTest::newRow("vertex, coplanar along an edge") << Vec3(1, 0, 0) << Vec3(1, -1, 0) << true;
@@ -253,10 +263,13 @@ private slots:
     void edgeInTheOtherPlaneIsReportedWithoutCrashing()
     {
         const Vec3 f0(8049.6775117088682, -3279.8963082757773, 1009.9222794748259),
-            f1(8199.3095703125, -3582.5927734375, 979.3951416015625), f2(7607.73681640625, -3582.5927734375, 1096.326171875);
+            f1(8199.3095703125, -3582.5927734375, 979.3951416015625),
+            f2(7607.73681640625, -3582.5927734375, 1096.326171875);
         const Vec3 g0(7667.48681640625, -3582.5927734375, 1084.5301513671875),
-            g1(8199.677734375, -3582.5927734375, 779.33453369140625), g2(7608.26220703125, -3582.5927734375, 896.2364501953125);
-        const ValidityReport r = checkValidity(modelOf({triangle("fault", f0, f1, f2), triangle("box", g0, g1, g2)}));
+            g1(8199.677734375, -3582.5927734375, 779.33453369140625),
+            g2(7608.26220703125, -3582.5927734375, 896.2364501953125);
+        const ValidityReport r =
+            checkValidity(modelOf({triangle("fault", f0, f1, f2), triangle("box", g0, g1, g2)}));
         QCOMPARE(r.count(check::surfaceIntersection), std::size_t(1));
         for (const ValidityProblem &p : r.problems)
             if (p.check == check::surfaceIntersection) {
@@ -268,8 +281,9 @@ private slots:
 
     void selfIntersectionOfOneSurface()
     {
-        const Surface folded = makeSurface("folded", {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}, {3, 3, 0}},
-                                           {{0, 1, 2}, {3, 4, 5}});
+        const Surface folded = makeSurface(
+            "folded", {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}, {3, 3, 0}},
+            {{0, 1, 2}, {3, 4, 5}});
         const ValidityReport r = checkValidity(modelOf({folded}));
         QCOMPARE(r.count(check::surfaceIntersection), std::size_t(1));
         QCOMPARE(r.problems.back().entities, std::vector<std::string>{"folded"});
@@ -282,11 +296,13 @@ private slots:
             if (m.surfaces[side.surface].type == FeatureType::Horizon)
                 side.positive = !side.positive;
         const ValidityReport r = checkValidity(m);
-        QVERIFY(r.count(check::regionBoundary) >= 1); // inconsistent in region 0 and side claimed twice
+        QVERIFY(r.count(check::regionBoundary)
+                >= 1); // inconsistent in region 0 and side claimed twice
         bool inconsistent = false;
         for (const ValidityProblem &p : r.problems)
-            inconsistent = inconsistent || (p.check == check::regionBoundary && p.entities.front() == "layer1"
-                                            && p.message.find("inconsistent") != std::string::npos);
+            inconsistent = inconsistent
+                           || (p.check == check::regionBoundary && p.entities.front() == "layer1"
+                               && p.message.find("inconsistent") != std::string::npos);
         QVERIFY2(inconsistent, qPrintable(summary(r)));
     }
 

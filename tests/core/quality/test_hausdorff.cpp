@@ -1,7 +1,7 @@
 // Hausdorff distance (thesis Table 4.2) on shapes whose distance is known exactly.
+#include "model/topology.h"
 #include "quality/hausdorff.h"
 #include "quality/model_comparison.h"
-#include "model/topology.h"
 
 #include "common/error.h"
 
@@ -79,7 +79,8 @@ private slots:
         const Model a = recoverTopology(modelOf({rectangle(0, 2, 0, 2, 0)}));
         Surface fine;
         fine.name = "rect";
-        fine.vertices = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 2, 0), Vec3(0, 2, 0), Vec3(1, 1, 0.1)};
+        fine.vertices = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 2, 0), Vec3(0, 2, 0),
+                         Vec3(1, 1, 0.1)};
         fine.triangles = {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
         const Model b = recoverTopology(modelOf({fine}));
         const ModelComparison c = compareModels(a, b, HausdorffParams{4000});

@@ -58,9 +58,10 @@ double totalArea(const OutputMesh &m, int surface)
     double a = 0;
     for (const OutputTriangle &t : m.triangles)
         if (t.surface == surface)
-            a += 0.5 * (m.points[t.v[1]].position - m.points[t.v[0]].position)
-                           .cross(m.points[t.v[2]].position - m.points[t.v[0]].position)
-                           .norm();
+            a += 0.5
+                 * (m.points[t.v[1]].position - m.points[t.v[0]].position)
+                       .cross(m.points[t.v[2]].position - m.points[t.v[0]].position)
+                       .norm();
     return a;
 }
 
@@ -69,8 +70,8 @@ bool contactSealed(const OutputMesh &m)
 {
     for (const auto &[edge, bySurface] : edgeUse(m)) {
         const Vec3 &a = m.points[edge.first].position, &b = m.points[edge.second].position;
-        const bool onContact = std::abs(a.y()) < 1e-12 && std::abs(b.y()) < 1e-12 &&
-                               std::abs(a.z()) < 1e-12 && std::abs(b.z()) < 1e-12;
+        const bool onContact = std::abs(a.y()) < 1e-12 && std::abs(b.y()) < 1e-12
+                               && std::abs(a.z()) < 1e-12 && std::abs(b.z()) < 1e-12;
         if (onContact && bySurface.size() != 2)
             return false;
         if (!onContact && bySurface.size() != 1)
@@ -250,7 +251,8 @@ private slots:
         for (const OutputTriangle &t : out.triangles) // orientation kept (+z)
             QVERIFY((out.points[t.v[1]].position - out.points[t.v[0]].position)
                         .cross(out.points[t.v[2]].position - out.points[t.v[0]].position)
-                        .z() > 0);
+                        .z()
+                    > 0);
     }
 };
 

@@ -27,9 +27,11 @@ private slots:
         const bool full = qEnvironmentVariableIsSet("STRATAMESH_FULL_REMESH_TESTS");
         for (const char *m : {"modelA1", "modelA2", "modelA5"})
             for (int sites : {1000, 5000, 10000})
-                if (full || sites == 1000 || (sites == 5000 && QLatin1String(m) != QLatin1String("modelA1")) ||
-                    (sites == 10000 && QLatin1String(m) == QLatin1String("modelA2")))
-                    QTest::newRow(qPrintable(QStringLiteral("%1-%2").arg(m).arg(sites))) << QString(m) << sites;
+                if (full || sites == 1000
+                    || (sites == 5000 && QLatin1String(m) != QLatin1String("modelA1"))
+                    || (sites == 10000 && QLatin1String(m) == QLatin1String("modelA2")))
+                    QTest::newRow(qPrintable(QStringLiteral("%1-%2").arg(m).arg(sites)))
+                        << QString(m) << sites;
     }
 
     void remesh()
@@ -43,23 +45,29 @@ private slots:
         const RemeshResult r = remeshModel(input, params);
 
         const ValidityReport v = checkValidity(r.model);
-        QVERIFY2(v.valid, v.problems.empty() ? "" : (v.problems.front().check + ": " + v.problems.front().message).c_str());
+        QVERIFY2(v.valid,
+                 v.problems.empty()
+                     ? ""
+                     : (v.problems.front().check + ": " + v.problems.front().message).c_str());
         QCOMPARE(r.model.regions.size(), input.regions.size());
         for (const Surface &s : r.model.surfaces) {
             bool found = false;
             for (const Surface &i : input.surfaces)
-                found = found || (i.name == s.name && i.featureName == s.featureName && i.type == s.type);
+                found = found
+                        || (i.name == s.name && i.featureName == s.featureName && i.type == s.type);
             QVERIFY2(found, s.name.c_str());
         }
         const MeshStatistics stats = computeMeshStatistics(r.model);
         const double hausdorff = hausdorffDistance(input, r.model).symmetricPctBbox;
-        qInfo("%s %d sites: %zu vertices, %zu triangles, mean Q %.3f, %.2f %% < 30°, Hausdorff %.3f %%, %zu records",
+        qInfo("%s %d sites: %zu vertices, %zu triangles, mean Q %.3f, %.2f %% < 30°, Hausdorff "
+              "%.3f %%, %zu records",
               qPrintable(model), sites, stats.vertices, stats.triangles, stats.meanQuality,
               stats.pctTrianglesAngleBelow30, hausdorff, r.ledger.size());
         QVERIFY(std::abs(stats.area - computeMeshStatistics(input).area) < 0.01 * stats.area);
         if (sites < 5000)
             return;
-        QVERIFY2(stats.pctTrianglesAngleBelow30 <= 2.0, qPrintable(QString::number(stats.pctTrianglesAngleBelow30)));
+        QVERIFY2(stats.pctTrianglesAngleBelow30 <= 2.0,
+                 qPrintable(QString::number(stats.pctTrianglesAngleBelow30)));
         QVERIFY2(stats.meanQuality >= 0.85, qPrintable(QString::number(stats.meanQuality)));
         QVERIFY2(hausdorff <= 0.5, qPrintable(QString::number(hausdorff)));
     }

@@ -2,11 +2,11 @@
 // corners and contacts, and the d_resolution simplification (Fig 4.3, 4.5, 4.7).
 #include "remesh/surface_remesher.h"
 
+#include "common/error.h"
 #include "model/model_counts.h"
 #include "model/synthetic_models.h"
 #include "model/topology.h"
 #include "model/validity.h"
-#include "common/error.h"
 #include "remesh/output_model_builder.h"
 #include "support/model_lines.h"
 
@@ -34,7 +34,8 @@ int eulerCharacteristic(const Surface &s)
             vertices.insert(t[k]);
             edges.insert({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
         }
-    return static_cast<int>(vertices.size()) - static_cast<int>(edges.size()) + static_cast<int>(s.triangles.size());
+    return static_cast<int>(vertices.size()) - static_cast<int>(edges.size())
+           + static_cast<int>(s.triangles.size());
 }
 
 // Edge → number of triangles of the surface around it.
@@ -59,7 +60,10 @@ double area(const Surface &s)
 {
     double a = 0;
     for (const Triangle &t : s.triangles)
-        a += 0.5 * (s.vertices[t[1]] - s.vertices[t[0]]).cross(s.vertices[t[2]] - s.vertices[t[0]]).norm();
+        a += 0.5
+             * (s.vertices[t[1]] - s.vertices[t[0]])
+                   .cross(s.vertices[t[2]] - s.vertices[t[0]])
+                   .norm();
     return a;
 }
 
@@ -167,7 +171,13 @@ private slots:
                 for (int v : {e.first, e.second}) {
                     const Vec3 &p = s.vertices[v];
                     const double d = std::min({p.x(), 10.0 - p.x(), p.y(), 10.0 - p.y()});
-                    QVERIFY2(std::abs(d) < 1e-9, qPrintable(QStringLiteral("border vertex off the input border: %1 %2 %3 d=%4").arg(p.x()).arg(p.y()).arg(p.z()).arg(d)));
+                    QVERIFY2(std::abs(d) < 1e-9,
+                             qPrintable(
+                                 QStringLiteral("border vertex off the input border: %1 %2 %3 d=%4")
+                                     .arg(p.x())
+                                     .arg(p.y())
+                                     .arg(p.z())
+                                     .arg(d)));
                 }
         QCOMPARE(r.model.lines.size(), input.lines.size());
         // A lone square is open like its input (not sealed); everything else must be clean.
@@ -267,7 +277,9 @@ private slots:
             return n;
         };
         QVERIFY2(nearCorners(adaptive.model) > 2 * nearCorners(uniform.model),
-                 qPrintable(QStringLiteral("%1 vs %2").arg(nearCorners(adaptive.model)).arg(nearCorners(uniform.model))));
+                 qPrintable(QStringLiteral("%1 vs %2")
+                                .arg(nearCorners(adaptive.model))
+                                .arg(nearCorners(uniform.model))));
     }
 
     void smallThrowCancelledByDResolution()
@@ -286,7 +298,8 @@ private slots:
 
         // Lines along the fault that both fault blocks of the horizon share.
         auto joinedLines = [](const Model &m) {
-            return test::countLines(m, [](int horizons, int faults) { return horizons >= 2 && faults >= 1; });
+            return test::countLines(
+                m, [](int horizons, int faults) { return horizons >= 2 && faults >= 1; });
         };
         QCOMPARE(joinedLines(input), 0);
 
@@ -301,8 +314,9 @@ private slots:
         const RemeshResult merged = remeshModel(input, params);
         int namingBoth = 0;
         for (const LedgerRecord &rec : merged.ledger)
-            if (rec.kind == LedgerKind::CloseFeatureMerge && mentions(rec, FeatureType::Fault, input) &&
-                mentions(rec, FeatureType::Horizon, input))
+            if (rec.kind == LedgerKind::CloseFeatureMerge
+                && mentions(rec, FeatureType::Fault, input)
+                && mentions(rec, FeatureType::Horizon, input))
                 ++namingBoth;
         QVERIFY(namingBoth > 0);
         QVERIFY(joinedLines(merged.model) > 0);
@@ -339,18 +353,25 @@ private slots:
         const Model input = recoverTopology(layeredBox(bp));
         QVERIFY(checkValidity(input).valid);
         auto crossingLines = [](const Model &m) {
-            return test::countLines(m, [](int horizons, int faults) { return horizons == 2 && faults == 2; });
+            return test::countLines(
+                m, [](int horizons, int faults) { return horizons == 2 && faults == 2; });
         };
         QCOMPARE(crossingLines(input), 2);
-        for (const auto &[edge, seed] : {std::pair{150.0, 2u}, std::pair{90.0, 1u}, std::pair{60.0, 1u}}) {
+        for (const auto &[edge, seed] :
+             {std::pair{150.0, 2u}, std::pair{90.0, 1u}, std::pair{60.0, 1u}}) {
             RemeshParams params;
             params.edgeLength = edge;
             params.iterations = 40;
             params.seed = seed;
             const RemeshResult result = remeshModel(input, params);
             const ValidityReport validity = checkValidity(result.model);
-            QVERIFY2(validity.valid, qPrintable(QStringLiteral("edge %1: %2").arg(edge).arg(
-                                         validity.problems.empty() ? QString() : QString::fromStdString(validity.problems.front().message))));
+            QVERIFY2(validity.valid,
+                     qPrintable(QStringLiteral("edge %1: %2")
+                                    .arg(edge)
+                                    .arg(validity.problems.empty()
+                                             ? QString()
+                                             : QString::fromStdString(
+                                                 validity.problems.front().message))));
             QVERIFY(result.cleanup.lineFins > 0);
             QVERIFY(crossingLines(result.model) >= 2); // a corner may cut one
         }

@@ -32,7 +32,8 @@ Model faultedBox(double faultThrow)
 // Lines where the horizon's two fault blocks meet the fault together (the throw is cancelled).
 int joinedLines(const Model &m)
 {
-    return test::countLines(m, [](int horizons, int faults) { return horizons >= 2 && faults >= 1; });
+    return test::countLines(m,
+                            [](int horizons, int faults) { return horizons >= 2 && faults >= 1; });
 }
 
 } // namespace
@@ -50,8 +51,9 @@ private slots:
         QVERIFY2(s.width >= 15 - 1e-6 && s.width < 40, qPrintable(QString::number(s.width)));
         QVERIFY(s.length > 500);
         for (int l : s.lines)
-            QVERIFY(std::find(input.surfaces[s.surface].lines.begin(), input.surfaces[s.surface].lines.end(), l) !=
-                    input.surfaces[s.surface].lines.end());
+            QVERIFY(std::find(input.surfaces[s.surface].lines.begin(),
+                              input.surfaces[s.surface].lines.end(), l)
+                    != input.surfaces[s.surface].lines.end());
         QVERIFY(findThinStrips(input, 10).empty());
         QVERIFY(findThinStrips(faultedBox(80), 40).empty());
     }
@@ -68,14 +70,16 @@ private slots:
         QCOMPARE(out.surfaces.size(), input.surfaces.size() - 1);
         QCOMPARE(out.regions.size(), input.regions.size());
         const ValidityReport validity = checkValidity(out);
-        QVERIFY2(validity.valid, validity.problems.empty() ? "" : validity.problems.front().message.c_str());
+        QVERIFY2(validity.valid,
+                 validity.problems.empty() ? "" : validity.problems.front().message.c_str());
         QVERIFY(joinedLines(out) >= 1);
         // The strip had no volume of its own: the regions still fill the box.
         const std::vector<double> volumes = regionVolumes(out);
         for (double v : volumes)
             QVERIFY(v > 0);
         const double total = std::accumulate(volumes.begin(), volumes.end(), 0.0);
-        QVERIFY2(std::abs(total - boxEnclosedVolume(out)) <= 1e-9 * total, qPrintable(QString::number(total)));
+        QVERIFY2(std::abs(total - boxEnclosedVolume(out)) <= 1e-9 * total,
+                 qPrintable(QString::number(total)));
         // Names kept, the strip's gone, and the ledger says so.
         const std::string gone = input.surfaces[collapsed.removed.front().surface].name;
         for (std::size_t s = 0; s < out.surfaces.size(); ++s) {
@@ -87,12 +91,15 @@ private slots:
         for (const LedgerRecord &r : ledger)
             QCOMPARE(r.inputs.front().name, gone);
         // The merge names the strip's two long lines, as the input numbers them.
-        const LedgerRecord &merge = ledger.front().kind == LedgerKind::CloseFeatureMerge ? ledger.front() : ledger.back();
+        const LedgerRecord &merge =
+            ledger.front().kind == LedgerKind::CloseFeatureMerge ? ledger.front() : ledger.back();
         QCOMPARE(merge.inputs.size(), std::size_t(3));
-        const std::vector<int> &stripLines = input.surfaces[collapsed.removed.front().surface].lines;
+        const std::vector<int> &stripLines =
+            input.surfaces[collapsed.removed.front().surface].lines;
         for (std::size_t k = 1; k < 3; ++k) {
             QCOMPARE(merge.inputs[k].kind, EntityKind::Line);
-            QVERIFY(std::find(stripLines.begin(), stripLines.end(), merge.inputs[k].id) != stripLines.end());
+            QVERIFY(std::find(stripLines.begin(), stripLines.end(), merge.inputs[k].id)
+                    != stripLines.end());
         }
     }
 
@@ -102,7 +109,8 @@ private slots:
         SimplificationLedger ledger;
         Progress progress;
         int ticks = 0;
-        Progress counting([&](double, const std::string &stage) { ticks += stage == "thin strips" ? 1 : 0; });
+        Progress counting(
+            [&](double, const std::string &stage) { ticks += stage == "thin strips" ? 1 : 0; });
         removeThinStrips(input, 40, ledger, counting);
         QVERIFY(ticks >= 2); // one per strip tried, one to find none left
         progress.cancel();
@@ -121,7 +129,8 @@ private slots:
         const RemeshResult result = remeshModel(input, params);
         QCOMPARE(result.strips.size(), std::size_t(1));
         const ValidityReport validity = checkValidity(result.model);
-        QVERIFY2(validity.valid, validity.problems.empty() ? "" : validity.problems.front().message.c_str());
+        QVERIFY2(validity.valid,
+                 validity.problems.empty() ? "" : validity.problems.front().message.c_str());
         QVERIFY(joinedLines(result.model) >= 1);
         QCOMPARE(countEntities(result.model).all.surfaces, countEntities(input).all.surfaces - 1);
         params.stripWidthFactor = 0.1; // 9 m: kept

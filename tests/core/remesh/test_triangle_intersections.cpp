@@ -46,21 +46,24 @@ class TestTriangleIntersections : public QObject {
 private slots:
     void pairs()
     {
-        const std::vector<Vec3> p{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),   // 0-2 flat
-                                  Vec3(0.2, 0.2, -1), Vec3(0.2, 0.2, 1), Vec3(0.3, 0.3, 1), // 3-5 crossing
-                                  Vec3(5, 5, 5), Vec3(6, 5, 5), Vec3(5, 6, 5),   // 6-8 far away
-                                  Vec3(1, 1, 0), Vec3(0.5, -0.5, 0), Vec3(1, 1, 1)};
+        const std::vector<Vec3> p{
+            Vec3(0, 0, 0),      Vec3(1, 0, 0),      Vec3(0, 1, 0),     // 0-2 flat
+            Vec3(0.2, 0.2, -1), Vec3(0.2, 0.2, 1),  Vec3(0.3, 0.3, 1), // 3-5 crossing
+            Vec3(5, 5, 5),      Vec3(6, 5, 5),      Vec3(5, 6, 5),     // 6-8 far away
+            Vec3(1, 1, 0),      Vec3(0.5, -0.5, 0), Vec3(1, 1, 1)};
         QVERIFY(trianglesIntersect(p, {0, 1, 2}, {3, 4, 5}));
         QVERIFY(!trianglesIntersect(p, {0, 1, 2}, {6, 7, 8}));
         // Sharing an edge: unfolded (other side) no, folded onto the same side yes, bent no.
         QVERIFY(!trianglesIntersect(p, {0, 1, 2}, {1, 0, 10}));
-        QVERIFY(trianglesIntersect(p, {0, 1, 2}, {1, 0, 9})); // 9 on 2's side of edge 0-1: folded
+        QVERIFY(trianglesIntersect(p, {0, 1, 2}, {1, 0, 9}));  // 9 on 2's side of edge 0-1: folded
         QVERIFY(!trianglesIntersect(p, {1, 2, 0}, {2, 1, 9})); // 9 across edge 1-2 from 0
         QVERIFY(!trianglesIntersect(p, {0, 1, 2}, {1, 2, 11}));
         // Sharing a vertex: a triangle through the other one.
-        const std::vector<Vec3> q{Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), Vec3(1, 0.2, -1), Vec3(1, 0.2, 1)};
+        const std::vector<Vec3> q{Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), Vec3(1, 0.2, -1),
+                                  Vec3(1, 0.2, 1)};
         QVERIFY(trianglesIntersect(q, {0, 1, 2}, {0, 3, 4}));
-        const std::vector<Vec3> r{Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), Vec3(-1, -0.2, -1), Vec3(-1, -0.2, 1)};
+        const std::vector<Vec3> r{Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), Vec3(-1, -0.2, -1),
+                                  Vec3(-1, -0.2, 1)};
         QVERIFY(!trianglesIntersect(r, {0, 1, 2}, {0, 3, 4}));
         // Folded: same edge, apexes on the same side in the same plane.
         const std::vector<Vec3> f{Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, 1, 0), Vec3(1, 2, 0)};

@@ -13,7 +13,10 @@ Q_DECLARE_METATYPE(std::vector<stratamesh::Vec3>)
 
 namespace {
 
-double sum(const std::vector<double> &v) { return std::accumulate(v.begin(), v.end(), 0.0); }
+double sum(const std::vector<double> &v)
+{
+    return std::accumulate(v.begin(), v.end(), 0.0);
+}
 
 CellIntegrals integrate(const RestrictionDomain &d, const std::vector<Vec3> &sites)
 {
@@ -41,7 +44,8 @@ private slots:
     {
         const RestrictionDomain d = test::sphereDomain(3);
         for (unsigned seed : {1u, 2u, 3u}) {
-            const auto sites = test::randomPointsInBox(200, Vec3(-1.2, -1.2, -1.2), Vec3(1.2, 1.2, 1.2), seed);
+            const auto sites =
+                test::randomPointsInBox(200, Vec3(-1.2, -1.2, -1.2), Vec3(1.2, 1.2, 1.2), seed);
             const CellIntegrals ci = integrate(d, sites);
             QVERIFY(std::abs(sum(ci.area) - d.surfaceArea()) <= 1e-9 * d.surfaceArea());
             QVERIFY(std::abs(sum(ci.mass) - d.surfaceArea()) <= 1e-9 * d.surfaceArea());
@@ -68,7 +72,8 @@ private slots:
         const CellIntegrals ci = integrate(d, sites);
         QVERIFY(std::abs(sum(ci.area) - 1.0) <= 1e-12);
         for (int i = 0; i < m * m; ++i) {
-            QVERIFY2(std::abs(ci.area[i] - 1.0 / (m * m)) <= 1e-12, qPrintable(QString::number(ci.area[i])));
+            QVERIFY2(std::abs(ci.area[i] - 1.0 / (m * m)) <= 1e-12,
+                     qPrintable(QString::number(ci.area[i])));
             // Centroid at the site's projection: the moment about the site has no x, y part.
             QVERIFY(std::abs(ci.moment[i].x()) <= 1e-14 && std::abs(ci.moment[i].y()) <= 1e-14);
             QVERIFY(std::abs(ci.moment[i].z() + z * ci.mass[i]) <= 1e-14);
@@ -104,8 +109,10 @@ private slots:
         QTest::addColumn<std::vector<Vec3>>("sites");
         QTest::newRow("one site") << std::vector<Vec3>{{0.3, 0.2, 0.1}};
         QTest::newRow("two sites") << std::vector<Vec3>{{0.3, 0.2, 0.1}, {-0.5, 0.1, 0.0}};
-        QTest::newRow("collinear") << std::vector<Vec3>{{-0.5, 0, 0}, {0, 0, 0}, {0.5, 0, 0}, {0.9, 0, 0}};
-        QTest::newRow("coplanar") << std::vector<Vec3>{{-0.5, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}, {0, -0.5, 0}, {0.1, 0.1, 0}};
+        QTest::newRow("collinear")
+            << std::vector<Vec3>{{-0.5, 0, 0}, {0, 0, 0}, {0.5, 0, 0}, {0.9, 0, 0}};
+        QTest::newRow("coplanar") << std::vector<Vec3>{
+            {-0.5, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}, {0, -0.5, 0}, {0.1, 0.1, 0}};
     }
     void fewSitesInLowDimensions()
     {
@@ -131,13 +138,15 @@ private slots:
         QCOMPARE(ci.area[39], 0.0);
         QVERIFY(ci.area[4] > 0 && ci.area[2] > 0);
         const VoronoiNeighbours dt(sites);
-        QVERIFY(dt.isHidden(31) && dt.isHidden(17) && dt.isHidden(39) && !dt.isHidden(4) && !dt.isHidden(2));
+        QVERIFY(dt.isHidden(31) && dt.isHidden(17) && dt.isHidden(39) && !dt.isHidden(4)
+                && !dt.isHidden(2));
     }
 
     void lineLengthIsPartitioned()
     {
         const RestrictionDomain d = test::squareDomain(16);
-        const auto sites = test::randomPointsInBox(60, Vec3(-0.1, -0.1, -0.3), Vec3(1.1, 1.1, 0.3), 7);
+        const auto sites =
+            test::randomPointsInBox(60, Vec3(-0.1, -0.1, -0.3), Vec3(1.1, 1.1, 0.3), 7);
         const CellIntegrals ci = integrate(d, sites);
         QVERIFY(std::abs(sum(ci.length) - 4.0) <= 1e-12);
         QVERIFY(std::abs(sum(ci.area) - 1.0) <= 1e-12);

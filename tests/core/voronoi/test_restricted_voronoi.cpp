@@ -70,8 +70,9 @@ void verifyConsistentSymbols(const RestrictionDomain &d, const RestrictedVoronoi
             const int j = rvd.polygonSupportsBegin(int(p))[k];
             if (j < 0)
                 continue;
-            const auto it = edges.find({poly.triangle, rvd.polygonVerticesBegin(int(p))[(k + 1) % poly.count],
-                                        rvd.polygonVerticesBegin(int(p))[k]});
+            const auto it =
+                edges.find({poly.triangle, rvd.polygonVerticesBegin(int(p))[(k + 1) % poly.count],
+                            rvd.polygonVerticesBegin(int(p))[k]});
             QVERIFY(it != edges.end());
             QCOMPARE(rvd.polygons[it->second].site, j);
         }
@@ -95,7 +96,8 @@ private slots:
     void partitionAndSymbols()
     {
         const RestrictionDomain d = test::sphereDomain(3);
-        const auto sites = test::randomPointsInBox(150, Vec3(-1.1, -1.1, -1.1), Vec3(1.1, 1.1, 1.1), 4);
+        const auto sites =
+            test::randomPointsInBox(150, Vec3(-1.1, -1.1, -1.1), Vec3(1.1, 1.1, 1.1), 4);
         const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(d, sites);
         QVERIFY(std::abs(polygonArea(rvd) - d.surfaceArea()) <= 1e-9 * d.surfaceArea());
         verifyConsistentSymbols(d, rvd);
@@ -148,13 +150,14 @@ private slots:
         // Thesis Fig 4.3: sites between two close parallel surfaces.
         const double gap = 0.05;
         const RestrictionDomain d = test::parallelPlanesDomain(20, gap);
-        auto sites = test::randomPointsInBox(40, Vec3(0.05, 0.05, 0.4 * gap), Vec3(0.95, 0.95, 0.6 * gap), 8);
+        auto sites = test::randomPointsInBox(40, Vec3(0.05, 0.05, 0.4 * gap),
+                                             Vec3(0.95, 0.95, 0.6 * gap), 8);
         const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(d, sites);
         verifyConsistentSymbols(d, rvd);
         for (const RestrictedCell &cell : rvd.cells) {
             QCOMPARE(cell.surfaceComponents.size(), std::size_t(2));
-            QVERIFY(rvd.surfaceComponents[cell.surfaceComponents[0]].surface !=
-                    rvd.surfaceComponents[cell.surfaceComponents[1]].surface);
+            QVERIFY(rvd.surfaceComponents[cell.surfaceComponents[0]].surface
+                    != rvd.surfaceComponents[cell.surfaceComponents[1]].surface);
         }
         QVERIFY(std::abs(polygonArea(rvd) - 2.0) <= 1e-12);
     }
@@ -163,12 +166,14 @@ private slots:
     {
         // Thesis Fig 4.4: sites between two nested spheres.
         const RestrictionDomain d = test::nestedSpheresDomain(3, 0.95, 1.0);
-        const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(d, fibonacciSphere(80, 0.975));
+        const RestrictedVoronoiDiagram rvd =
+            computeRestrictedVoronoi(d, fibonacciSphere(80, 0.975));
         verifyConsistentSymbols(d, rvd);
         for (const RestrictedCell &cell : rvd.cells)
             QCOMPARE(cell.surfaceComponents.size(), std::size_t(2));
         // Two far sites split both spheres into caps: still one component per sphere and cell.
-        const RestrictedVoronoiDiagram far = computeRestrictedVoronoi(d, {Vec3(0, 0, 3), Vec3(0, 0, -3)});
+        const RestrictedVoronoiDiagram far =
+            computeRestrictedVoronoi(d, {Vec3(0, 0, 3), Vec3(0, 0, -3)});
         QCOMPARE(far.cells[0].surfaceComponents.size(), std::size_t(2));
         QCOMPARE(far.cells[1].surfaceComponents.size(), std::size_t(2));
     }
@@ -187,7 +192,8 @@ private slots:
         // Pieces of a component chain: each ends where the next starts.
         for (const RvdLineComponent &c : rvd.lineComponents)
             for (std::size_t k = 1; k < c.pieces.size(); ++k)
-                QCOMPARE(rvd.linePieces[c.pieces[k]].vertices[0], rvd.linePieces[c.pieces[k - 1]].vertices[1]);
+                QCOMPARE(rvd.linePieces[c.pieces[k]].vertices[0],
+                         rvd.linePieces[c.pieces[k - 1]].vertices[1]);
         // Corners belong to the cell of their nearest site.
         for (std::size_t c = 0; c < d.corners.size(); ++c) {
             const Vec3 &x = d.points[d.corners[c]];
@@ -257,9 +263,10 @@ private slots:
             d = test::parallelPlanesDomain(12, 0.05);
             sites = test::randomPointsInBox(80, Vec3(0, 0, 0.02), Vec3(1, 1, 0.03), 33);
         }
-        const RestrictedVoronoiDiagram a = computeRestrictedVoronoi(d, sites, Progress::none(), NeighbourSearch::Delaunay);
-        const RestrictedVoronoiDiagram b =
-            computeRestrictedVoronoi(d, sites, Progress::none(), NeighbourSearch::NearestNeighbours);
+        const RestrictedVoronoiDiagram a =
+            computeRestrictedVoronoi(d, sites, Progress::none(), NeighbourSearch::Delaunay);
+        const RestrictedVoronoiDiagram b = computeRestrictedVoronoi(
+            d, sites, Progress::none(), NeighbourSearch::NearestNeighbours);
         QCOMPARE(a.vertices.size(), b.vertices.size());
         for (std::size_t v = 0; v < a.vertices.size(); ++v) {
             QVERIFY(a.vertices[v].symbol == b.vertices[v].symbol);
@@ -270,7 +277,8 @@ private slots:
         QCOMPARE(a.linePieces.size(), b.linePieces.size());
         QCOMPARE(a.surfaceComponents.size(), b.surfaceComponents.size());
         for (std::size_t p = 0; p < a.polygons.size(); ++p)
-            QVERIFY(std::abs(a.polygons[p].area - b.polygons[p].area) <= 1e-12 * (1 + a.polygons[p].area));
+            QVERIFY(std::abs(a.polygons[p].area - b.polygons[p].area)
+                    <= 1e-12 * (1 + a.polygons[p].area));
         QVERIFY(std::abs(polygonArea(b) - d.surfaceArea()) <= 1e-9 * d.surfaceArea());
         verifyConsistentSymbols(d, b);
     }
@@ -325,7 +333,9 @@ private slots:
         QCOMPARE(reuse.searches, 1);
         QVERIFY(reuse.maxDrift > 0);
         for (std::size_t i = 0; i < sites.size(); ++i)
-            sites[i] += 0.5 * reuse.maxDrift * Vec3(std::sin(3.0 * i), std::cos(5.0 * i), 0.3 * std::sin(7.0 * i)).normalized();
+            sites[i] +=
+                0.5 * reuse.maxDrift
+                * Vec3(std::sin(3.0 * i), std::cos(5.0 * i), 0.3 * std::sin(7.0 * i)).normalized();
         const VoronoiNeighbours reused(sites, reuse);
         QCOMPARE(reuse.reuses, 1);
         const VoronoiNeighbours fresh(sites, NeighbourSearch::NearestNeighbours);
@@ -351,8 +361,9 @@ private slots:
             reused.sitesBeyondList(i, fresh.completeRadius(i), beyond);
             for (int k = prefix; k < fresh.neighbourCount(i); ++k)
                 QVERIFY(std::find(beyond.begin(), beyond.end(),
-                                  std::make_pair(fresh.neighbourDistances(i)[k], fresh.neighboursBegin(i)[k])) !=
-                        beyond.end());
+                                  std::make_pair(fresh.neighbourDistances(i)[k],
+                                                 fresh.neighboursBegin(i)[k]))
+                        != beyond.end());
         }
         QVERIFY(shorter > 0); // the cut happened somewhere
         // A site moving farther than the drift allowed: searched again.
@@ -378,9 +389,12 @@ private slots:
             tiled[p.triangle] += p.area;
         for (std::size_t t = 0; t < d.triangles.size(); ++t) {
             const Triangle &tri = d.triangles[t];
-            const double area =
-                0.5 * (d.points[tri[1]] - d.points[tri[0]]).cross(d.points[tri[2]] - d.points[tri[0]]).norm();
-            QVERIFY2(std::abs(tiled[t] - area) <= 1e-12 * area, qPrintable(QString("triangle %1").arg(t)));
+            const double area = 0.5
+                                * (d.points[tri[1]] - d.points[tri[0]])
+                                      .cross(d.points[tri[2]] - d.points[tri[0]])
+                                      .norm();
+            QVERIFY2(std::abs(tiled[t] - area) <= 1e-12 * area,
+                     qPrintable(QString("triangle %1").arg(t)));
         }
         verifyConsistentSymbols(d, rvd);
     }

@@ -21,7 +21,10 @@ Vec3 randomVec(std::mt19937_64 &rng)
 }
 
 // π_l(x) − π_i(x) without perturbation, from a computed point.
-double directSide(const Vec3 &x, const Vec3 &pi, const Vec3 &pl) { return (x - pl).squaredNorm() - (x - pi).squaredNorm(); }
+double directSide(const Vec3 &x, const Vec3 &pi, const Vec3 &pl)
+{
+    return (x - pl).squaredNorm() - (x - pi).squaredNorm();
+}
 
 } // namespace
 
@@ -49,14 +52,15 @@ private slots:
         std::mt19937_64 rng(2);
         int checked = 0;
         for (int n = 0; n < 3000; ++n) {
-            const Vec3 q0 = randomVec(rng), q1 = randomVec(rng), pi = randomVec(rng), pj = randomVec(rng),
-                       pl = randomVec(rng);
+            const Vec3 q0 = randomVec(rng), q1 = randomVec(rng), pi = randomVec(rng),
+                       pj = randomVec(rng), pl = randomVec(rng);
             const double g0 = directSide(q0, pi, pj), g1 = directSide(q1, pi, pj);
             if (g0 * g1 >= 0)
                 continue; // the segment must cross the bisector
             const Vec3 x = q0 + g0 / (g0 - g1) * (q1 - q0);
             const int fromI = sideOfEdgeVertex(q0, q1, pi, 0, pj, 1, pl, 2);
-            QCOMPARE(sideOfEdgeVertex(q1, q0, pj, 1, pi, 0, pl, 2), fromI); // from cell j, edge reversed
+            QCOMPARE(sideOfEdgeVertex(q1, q0, pj, 1, pi, 0, pl, 2),
+                     fromI); // from cell j, edge reversed
             const double direct = directSide(x, pi, pl);
             if (std::abs(direct) > 1e-9) {
                 QCOMPARE(fromI, direct > 0 ? 1 : -1);
@@ -101,8 +105,8 @@ private slots:
             m.row(0) = (p[1] - p[0]).transpose();
             m.row(1) = (p[2] - p[0]).transpose();
             m.row(2) = (q1 - q0).cross(q2 - q0).transpose();
-            rhs << 0.5 * (p[1].squaredNorm() - p[0].squaredNorm()), 0.5 * (p[2].squaredNorm() - p[0].squaredNorm()),
-                (q1 - q0).cross(q2 - q0).dot(q0);
+            rhs << 0.5 * (p[1].squaredNorm() - p[0].squaredNorm()),
+                0.5 * (p[2].squaredNorm() - p[0].squaredNorm()), (q1 - q0).cross(q2 - q0).dot(q0);
             const Vec3 x = m.fullPivLu().solve(rhs);
             const double direct = directSide(x, p[0], p[3]);
             if (std::abs(direct) > 1e-8 && m.determinant() > 1e-3) {
@@ -126,9 +130,14 @@ private slots:
             for (int k = 0; k < 4; ++k)
                 if (k != l)
                     t[n++] = k;
-            const int a = sideOfFaceVertex(q0, q1, q2, p[t[0]], t[0], p[t[1]], t[1], p[t[2]], t[2], p[l], l);
-            QCOMPARE(sideOfFaceVertex(q0, q1, q2, p[t[1]], t[1], p[t[0]], t[0], p[t[2]], t[2], p[l], l), a);
-            QCOMPARE(sideOfFaceVertex(q0, q1, q2, p[t[2]], t[2], p[t[1]], t[1], p[t[0]], t[0], p[l], l), a);
+            const int a =
+                sideOfFaceVertex(q0, q1, q2, p[t[0]], t[0], p[t[1]], t[1], p[t[2]], t[2], p[l], l);
+            QCOMPARE(
+                sideOfFaceVertex(q0, q1, q2, p[t[1]], t[1], p[t[0]], t[0], p[t[2]], t[2], p[l], l),
+                a);
+            QCOMPARE(
+                sideOfFaceVertex(q0, q1, q2, p[t[2]], t[2], p[t[1]], t[1], p[t[0]], t[0], p[l], l),
+                a);
             crossings += a > 0;
         }
         QVERIFY(crossings >= 1 && crossings <= 3);

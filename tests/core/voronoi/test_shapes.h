@@ -11,7 +11,8 @@
 namespace stratamesh::test {
 
 // Appends a triangulated surface to the domain (points are not shared with other surfaces).
-inline void appendSurface(RestrictionDomain &d, const std::vector<Vec3> &points, const std::vector<Triangle> &tris)
+inline void appendSurface(RestrictionDomain &d, const std::vector<Vec3> &points,
+                          const std::vector<Triangle> &tris)
 {
     const int offset = static_cast<int>(d.points.size());
     const int surface = d.surfaceCount++;
@@ -23,14 +24,15 @@ inline void appendSurface(RestrictionDomain &d, const std::vector<Vec3> &points,
 }
 
 // Icosahedron subdivided `level` times and projected on the sphere.
-inline void icosphere(int level, double radius, const Vec3 &center, std::vector<Vec3> &pts, std::vector<Triangle> &tris)
+inline void icosphere(int level, double radius, const Vec3 &center, std::vector<Vec3> &pts,
+                      std::vector<Triangle> &tris)
 {
     const double g = (1.0 + std::sqrt(5.0)) / 2.0;
-    pts = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-           {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-    tris = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-            {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-            {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    pts = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+           {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+    tris = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+            {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+            {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
     for (Vec3 &p : pts)
         p.normalize();
     for (int l = 0; l < level; ++l) {
@@ -69,8 +71,8 @@ inline RestrictionDomain sphereDomain(int level, double radius = 1.0)
 }
 
 // n×n squares of [x0, x0 + size]² at height z, two triangles each (alternating diagonals).
-inline void gridSquare(int n, double size, double z, std::vector<Vec3> &pts, std::vector<Triangle> &tris,
-                       double x0 = 0.0)
+inline void gridSquare(int n, double size, double z, std::vector<Vec3> &pts,
+                       std::vector<Triangle> &tris, double x0 = 0.0)
 {
     pts.clear();
     tris.clear();
@@ -101,13 +103,13 @@ inline RestrictionDomain squareDomain(int n, bool withBorder = true)
     if (withBorder) {
         std::vector<int> loop;
         for (int i = 0; i < n; ++i)
-            loop.push_back(i);                       // bottom, left to right
+            loop.push_back(i); // bottom, left to right
         for (int j = 0; j < n; ++j)
-            loop.push_back(j * (n + 1) + n);         // right, upwards
+            loop.push_back(j * (n + 1) + n); // right, upwards
         for (int i = n; i > 0; --i)
-            loop.push_back(n * (n + 1) + i);         // top, right to left
+            loop.push_back(n * (n + 1) + i); // top, right to left
         for (int j = n; j > 0; --j)
-            loop.push_back(j * (n + 1));             // left, downwards
+            loop.push_back(j * (n + 1)); // left, downwards
         for (std::size_t k = 0; k < loop.size(); ++k) {
             d.segments.push_back({loop[k], loop[(k + 1) % loop.size()]});
             d.segmentLine.push_back(0);
