@@ -22,4 +22,10 @@ QString dataFile(const QString &name)
     return {};
 }
 
+bool runningInCi()
+{
+    const QByteArray env = qgetenv("CI").trimmed().toLower();
+    return env == "true" || env == "1" || env == "yes";
+}
+
 } // namespace stratamesh::test
