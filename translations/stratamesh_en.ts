@@ -1093,6 +1093,68 @@ angle (°)</source>
     </message>
 </context>
 <context>
+    <name>stratamesh::StudyWindow</name>
+    <message>
+        <source>Task</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sites asked</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mean triangle quality Q against the resolution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mean Q</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output triangles against the resolution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Task %1 — %2: input (left), remesh (right)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot open the task</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Study</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Study %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Filter the rows (model, status, error…)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quality</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Element counts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n task(s), %1 ok; double-click a row to see its input and output</source>
+        <translation>
+            <numerusform>%n task, %1 ok; double-click a row to see its input and output</numerusform>
+            <numerusform>%n tasks, %1 ok; double-click a row to see its input and output</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::TetmeshController</name>
     <message>
         <source>Tetrahedralising the input</source>

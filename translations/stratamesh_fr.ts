@@ -1095,6 +1095,68 @@ min. (°)</translation>
     </message>
 </context>
 <context>
+    <name>stratamesh::StudyWindow</name>
+    <message>
+        <source>Task</source>
+        <translation>Tâche</translation>
+    </message>
+    <message>
+        <source>Sites asked</source>
+        <translation>Sites demandés</translation>
+    </message>
+    <message>
+        <source>Mean triangle quality Q against the resolution</source>
+        <translation>Qualité moyenne Q des triangles selon la résolution</translation>
+    </message>
+    <message>
+        <source>Mean Q</source>
+        <translation>Q moyen</translation>
+    </message>
+    <message>
+        <source>Output triangles against the resolution</source>
+        <translation>Triangles produits selon la résolution</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Triangles</translation>
+    </message>
+    <message>
+        <source>Task %1 — %2: input (left), remesh (right)</source>
+        <translation>Tâche %1 — %2 : entrée (à gauche), remaillage (à droite)</translation>
+    </message>
+    <message>
+        <source>Cannot open the task</source>
+        <translation>Impossible d’ouvrir la tâche</translation>
+    </message>
+    <message>
+        <source>Study</source>
+        <translation>Étude</translation>
+    </message>
+    <message>
+        <source>Study %1</source>
+        <translation>Étude %1</translation>
+    </message>
+    <message>
+        <source>Filter the rows (model, status, error…)</source>
+        <translation>Filtrer les lignes (modèle, état, erreur…)</translation>
+    </message>
+    <message>
+        <source>Quality</source>
+        <translation>Qualité</translation>
+    </message>
+    <message>
+        <source>Element counts</source>
+        <translation>Nombres d’éléments</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n task(s), %1 ok; double-click a row to see its input and output</source>
+        <translation>
+            <numerusform>%n tâche, %1 réussie ; double-cliquer sur une ligne pour voir son entrée et sa sortie</numerusform>
+            <numerusform>%n tâches, %1 réussies ; double-cliquer sur une ligne pour voir son entrée et sa sortie</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::TetmeshController</name>
     <message>
         <source>Tetrahedralising the input</source>
