@@ -63,15 +63,15 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>--remesh-sites needs a number of sites of at least 4, not &apos;%1&apos;.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Measure the complexity of the model with &lt;n&gt; cells once it is open (with --screenshot, the picture shows the heat map and the Complexity dock).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>--complexity-cells needs a number of cells of at least 1, not &apos;%1&apos;.</source>
+        <source>--remesh-sites needs a number of sites in [%1, %2], not &apos;%3&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--complexity-cells needs a number of cells in [%1, %2], not &apos;%3&apos;.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -168,42 +168,6 @@
     <name>stratamesh::ComplexityDialog</name>
     <message>
         <source>Complexity Analysis</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> m</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Characteristic size: elements smaller than h (h² for surfaces, h³ for regions) are complex (thesis Table 3.2).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Angles between elements smaller than α are complex (thesis Table 3.2).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cells of the volumetric Voronoi diagram in which model elements are counted (thesis Table 3.4: 100, 1000, 10000).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Seed of the initial random sites: the same seed gives the same cells.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Characteristic size &amp;h:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Angle α:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Number of &amp;cells:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ra&amp;ndom seed:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -999,6 +963,200 @@ angle (°)</source>
     </message>
 </context>
 <context>
+    <name>stratamesh::ParamForm</name>
+    <message>
+        <source>(thesis %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::Params</name>
+    <message>
+        <source>Characteristic size &amp;h:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Elements smaller than h (h² for surfaces, h³ for regions) are complex.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Angle α:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Angles between elements smaller than α are complex.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Number of &amp;cells:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cells of the volumetric Voronoi diagram in which model elements are counted (the thesis uses 100, 1000 and 10000).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ra&amp;ndom seed:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seed of the initial random sites: the same seed gives the same cells.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Lloyd iterations:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lloyd iterations of the volumetric centroidal Voronoi tessellation.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Iterations:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Iterations of the centroidal Voronoi optimisation of the sites.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boundary &amp;weight α:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Weight of the boundary energy in F = (1 − α) F_CVT + α F_B.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Lloyd iterations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lloyd iterations instead of L-BFGS (the CVT energy alone: no boundary weight).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Number of &amp;sites:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sites spread over all the surfaces; each becomes about one vertex. At least one per surface; 0: from the edge length.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Target &amp;edge length:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The number of sites is derived from the total area for this edge length (hexagonal packing); 0: from the number of sites.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;d_resolution:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parts of features closer than this distance are merged; 0 keeps them apart. At most a tenth of the bounding-box diagonal.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>× edge length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove thin s&amp;trips under:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surfaces narrower than this between two long lines (a small fault throw) are removed whole before remeshing, their two lines merged into one; 0 keeps them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seed of the initial random sampling: the same seed gives the same mesh.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re&amp;finement rounds:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rounds of more sites where the result is not valid or its topology differs from the input&apos;s (4 more while it is not valid); 0 turns refinement off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Adaptive density (more sites near corners)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Site density grows near corners, so small features keep more triangles.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Merge all extra points of a cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A cell part with more than two points has them all merged, as in the thesis; without it, only the closest until two are left, which keeps more of the model.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Quality (radius-edge ratio):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest circumradius to shortest edge ratio TetGen accepts (its q switch); 0 turns quality refinement off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Maximum tet volume:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest volume of a tetrahedron (TetGen&apos;s a switch); 0 sets none.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Time limit per model:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen is stopped after this time on each model; a raw input model can keep it busy for hours. 0 sets none.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Memory &amp;limit per model:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address space the TetGen helper may use; 0 sets none.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Let TetGen &amp;refine the surfaces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Without it every surface triangle is kept as it is (TetGen&apos;s Y switch), so the meshes show what the surfaces themselves give.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Keep nearly coplanar triangles apart</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>When TetGen refines the surfaces it merges nearly coplanar triangles, which moves region volumes by about 1e-6; this keeps them exact (its M switch) but refines much more.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::RemeshController</name>
     <message>
         <source>Remeshing</source>
@@ -1016,47 +1174,7 @@ angle (°)</source>
 <context>
     <name>stratamesh::RemeshDialog</name>
     <message>
-        <source>Number of &amp;sites:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Target &amp;edge length:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Adaptive density (more sites near corners)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Remesh Model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sites spread over all the surfaces; each becomes about one vertex.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The number of sites is derived from the total area for this edge length.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Off</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Parts of features closer than this distance are merged (thesis Alg. 4.2, step 4); 0 keeps them apart.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Iterations of the centroidal Voronoi optimisation of the sites (thesis: 100).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Seed of the initial random sampling: the same seed gives the same mesh.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Site density grows near corners, so small features keep more triangles (thesis Fig. 4.19).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1064,31 +1182,7 @@ angle (°)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>&amp;d_resolution:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> × edge length</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Surfaces narrower than this between two long lines (a small fault throw) are removed whole before remeshing, their two lines merged into one; 0 keeps them.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remove thin s&amp;trips under:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Iterations:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&amp;Remesh</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ra&amp;ndom seed:</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1172,10 +1266,6 @@ angle (°)</source>
 <context>
     <name>stratamesh::TetmeshDialog</name>
     <message>
-        <source>Let TetGen &amp;refine the surfaces</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Input and &amp;remesh</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1188,51 +1278,11 @@ angle (°)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Off</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Largest circumradius to shortest edge ratio TetGen accepts (its q switch); 0 turns quality refinement off.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>None</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Largest volume of a tetrahedron (TetGen&apos;s a switch); 0 sets none.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Without it every surface triangle is kept as it is (TetGen&apos;s Y switch), so the meshes show what the surfaces themselves give.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>TetGen is stopped after this time on each model; a raw input model can keep it busy for hours.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Models</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Remesh the model first</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Quality (radius-edge ratio):</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Maximum tet volume:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Time limit per model:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -63,16 +63,16 @@
         <translation>Remailler le modèle avec &lt;n&gt; sites une fois ouvert (avec --screenshot, l&apos;image montre le résultat, sa première simplification sélectionnée).</translation>
     </message>
     <message>
-        <source>--remesh-sites needs a number of sites of at least 4, not &apos;%1&apos;.</source>
-        <translation>--remesh-sites demande un nombre de sites d&apos;au moins 4, pas « %1 ».</translation>
-    </message>
-    <message>
         <source>Measure the complexity of the model with &lt;n&gt; cells once it is open (with --screenshot, the picture shows the heat map and the Complexity dock).</source>
         <translation>Mesurer la complexité du modèle avec &lt;n&gt; cellules une fois ouvert (avec --screenshot, l&apos;image montre la carte de chaleur et le panneau Complexité).</translation>
     </message>
     <message>
-        <source>--complexity-cells needs a number of cells of at least 1, not &apos;%1&apos;.</source>
-        <translation>--complexity-cells demande un nombre de cellules d&apos;au moins 1, pas « %1 ».</translation>
+        <source>--remesh-sites needs a number of sites in [%1, %2], not &apos;%3&apos;.</source>
+        <translation>--remesh-sites demande un nombre de sites dans [%1, %2], pas « %3 ».</translation>
+    </message>
+    <message>
+        <source>--complexity-cells needs a number of cells in [%1, %2], not &apos;%3&apos;.</source>
+        <translation>--complexity-cells demande un nombre de cellules dans [%1, %2], pas « %3 ».</translation>
     </message>
 </context>
 <context>
@@ -169,42 +169,6 @@
     <message>
         <source>Complexity Analysis</source>
         <translation>Analyse de complexité</translation>
-    </message>
-    <message>
-        <source> m</source>
-        <translation> m</translation>
-    </message>
-    <message>
-        <source>Characteristic size: elements smaller than h (h² for surfaces, h³ for regions) are complex (thesis Table 3.2).</source>
-        <translation>Taille caractéristique : les éléments plus petits que h (h² pour les surfaces, h³ pour les régions) sont complexes (thèse, tableau 3.2).</translation>
-    </message>
-    <message>
-        <source>Angles between elements smaller than α are complex (thesis Table 3.2).</source>
-        <translation>Les angles entre éléments inférieurs à α sont complexes (thèse, tableau 3.2).</translation>
-    </message>
-    <message>
-        <source>Cells of the volumetric Voronoi diagram in which model elements are counted (thesis Table 3.4: 100, 1000, 10000).</source>
-        <translation>Cellules du diagramme de Voronoï volumique dans lesquelles les éléments du modèle sont comptés (thèse, tableau 3.4 : 100, 1000, 10000).</translation>
-    </message>
-    <message>
-        <source>Seed of the initial random sites: the same seed gives the same cells.</source>
-        <translation>Graine des sites aléatoires initiaux : la même graine donne les mêmes cellules.</translation>
-    </message>
-    <message>
-        <source>Characteristic size &amp;h:</source>
-        <translation>Taille caractéristique &amp;h :</translation>
-    </message>
-    <message>
-        <source>&amp;Angle α:</source>
-        <translation>&amp;Angle α :</translation>
-    </message>
-    <message>
-        <source>Number of &amp;cells:</source>
-        <translation>Nombre de &amp;cellules :</translation>
-    </message>
-    <message>
-        <source>Ra&amp;ndom seed:</source>
-        <translation>&amp;Graine aléatoire :</translation>
     </message>
     <message>
         <source>&amp;Analyse</source>
@@ -1001,6 +965,200 @@ min. (°)</translation>
     </message>
 </context>
 <context>
+    <name>stratamesh::ParamForm</name>
+    <message>
+        <source>(thesis %1)</source>
+        <translation>(thèse, %1)</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::Params</name>
+    <message>
+        <source>Characteristic size &amp;h:</source>
+        <translation>Taille caractéristique &amp;h :</translation>
+    </message>
+    <message>
+        <source>Elements smaller than h (h² for surfaces, h³ for regions) are complex.</source>
+        <translation>Les éléments plus petits que h (h² pour les surfaces, h³ pour les régions) sont complexes.</translation>
+    </message>
+    <message>
+        <source>&amp;Angle α:</source>
+        <translation>&amp;Angle α :</translation>
+    </message>
+    <message>
+        <source>Angles between elements smaller than α are complex.</source>
+        <translation>Les angles entre éléments inférieurs à α sont complexes.</translation>
+    </message>
+    <message>
+        <source>Number of &amp;cells:</source>
+        <translation>Nombre de &amp;cellules :</translation>
+    </message>
+    <message>
+        <source>Cells of the volumetric Voronoi diagram in which model elements are counted (the thesis uses 100, 1000 and 10000).</source>
+        <translation>Cellules du diagramme de Voronoï volumique dans lesquelles les éléments du modèle sont comptés (la thèse utilise 100, 1000 et 10000).</translation>
+    </message>
+    <message>
+        <source>Ra&amp;ndom seed:</source>
+        <translation>&amp;Graine aléatoire :</translation>
+    </message>
+    <message>
+        <source>Seed of the initial random sites: the same seed gives the same cells.</source>
+        <translation>Graine des sites aléatoires initiaux : la même graine donne les mêmes cellules.</translation>
+    </message>
+    <message>
+        <source>&amp;Lloyd iterations:</source>
+        <translation>Itérations de &amp;Lloyd :</translation>
+    </message>
+    <message>
+        <source>Lloyd iterations of the volumetric centroidal Voronoi tessellation.</source>
+        <translation>Itérations de Lloyd de la tessellation de Voronoï centroïdale volumique.</translation>
+    </message>
+    <message>
+        <source>&amp;Iterations:</source>
+        <translation>&amp;Itérations :</translation>
+    </message>
+    <message>
+        <source>Iterations of the centroidal Voronoi optimisation of the sites.</source>
+        <translation>Itérations de l&apos;optimisation de Voronoï centroïdale des sites.</translation>
+    </message>
+    <message>
+        <source>Boundary &amp;weight α:</source>
+        <translation>&amp;Poids du bord α :</translation>
+    </message>
+    <message>
+        <source>Weight of the boundary energy in F = (1 − α) F_CVT + α F_B.</source>
+        <translation>Poids de l&apos;énergie de bord dans F = (1 − α) F_CVT + α F_B.</translation>
+    </message>
+    <message>
+        <source>&amp;Lloyd iterations</source>
+        <translation>Itérations de &amp;Lloyd</translation>
+    </message>
+    <message>
+        <source>Lloyd iterations instead of L-BFGS (the CVT energy alone: no boundary weight).</source>
+        <translation>Itérations de Lloyd au lieu de L-BFGS (l&apos;énergie CVT seule : pas de poids du bord).</translation>
+    </message>
+    <message>
+        <source>Number of &amp;sites:</source>
+        <translation>Nombre de &amp;sites :</translation>
+    </message>
+    <message>
+        <source>Sites spread over all the surfaces; each becomes about one vertex. At least one per surface; 0: from the edge length.</source>
+        <translation>Sites répartis sur toutes les surfaces ; chacun devient à peu près un sommet. Au moins un par surface ; 0 : d&apos;après la longueur d&apos;arête.</translation>
+    </message>
+    <message>
+        <source>Target &amp;edge length:</source>
+        <translation>&amp;Longueur d&apos;arête visée :</translation>
+    </message>
+    <message>
+        <source>The number of sites is derived from the total area for this edge length (hexagonal packing); 0: from the number of sites.</source>
+        <translation>Le nombre de sites est déduit de l&apos;aire totale pour cette longueur d&apos;arête (empilement hexagonal) ; 0 : d&apos;après le nombre de sites.</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Désactivé</translation>
+    </message>
+    <message>
+        <source>&amp;d_resolution:</source>
+        <translation>&amp;d_resolution :</translation>
+    </message>
+    <message>
+        <source>Parts of features closer than this distance are merged; 0 keeps them apart. At most a tenth of the bounding-box diagonal.</source>
+        <translation>Les parties d&apos;éléments plus proches que cette distance sont fusionnées ; 0 les garde séparées. Au plus un dixième de la diagonale de la boîte englobante.</translation>
+    </message>
+    <message>
+        <source>× edge length</source>
+        <translation>× longueur d&apos;arête</translation>
+    </message>
+    <message>
+        <source>Remove thin s&amp;trips under:</source>
+        <translation>Supprimer les &amp;bandes fines sous :</translation>
+    </message>
+    <message>
+        <source>Surfaces narrower than this between two long lines (a small fault throw) are removed whole before remeshing, their two lines merged into one; 0 keeps them.</source>
+        <translation>Les surfaces plus étroites que cela entre deux longues lignes (un petit rejet de faille) sont supprimées entières avant le remaillage, leurs deux lignes fusionnées en une seule ; 0 les garde.</translation>
+    </message>
+    <message>
+        <source>Seed of the initial random sampling: the same seed gives the same mesh.</source>
+        <translation>Graine de l&apos;échantillonnage aléatoire initial : la même graine donne le même maillage.</translation>
+    </message>
+    <message>
+        <source>Re&amp;finement rounds:</source>
+        <translation>&amp;Tours de raffinement :</translation>
+    </message>
+    <message>
+        <source>Rounds of more sites where the result is not valid or its topology differs from the input&apos;s (4 more while it is not valid); 0 turns refinement off.</source>
+        <translation>Tours de sites supplémentaires là où le résultat n&apos;est pas valide ou que sa topologie diffère de celle de l&apos;entrée (4 de plus tant qu&apos;il n&apos;est pas valide) ; 0 désactive le raffinement.</translation>
+    </message>
+    <message>
+        <source>&amp;Adaptive density (more sites near corners)</source>
+        <translation>Densité &amp;adaptative (plus de sites près des coins)</translation>
+    </message>
+    <message>
+        <source>Site density grows near corners, so small features keep more triangles.</source>
+        <translation>La densité de sites croît près des coins, les petits éléments gardent ainsi plus de triangles.</translation>
+    </message>
+    <message>
+        <source>&amp;Merge all extra points of a cell</source>
+        <translation>&amp;Fusionner tous les points en trop d&apos;une cellule</translation>
+    </message>
+    <message>
+        <source>A cell part with more than two points has them all merged, as in the thesis; without it, only the closest until two are left, which keeps more of the model.</source>
+        <translation>Une partie de cellule de plus de deux points les voit tous fusionnés, comme dans la thèse ; sans cela, seulement les plus proches jusqu&apos;à ce qu&apos;il en reste deux, ce qui garde davantage du modèle.</translation>
+    </message>
+    <message>
+        <source>&amp;Quality (radius-edge ratio):</source>
+        <translation>&amp;Qualité (rapport rayon/arête) :</translation>
+    </message>
+    <message>
+        <source>Largest circumradius to shortest edge ratio TetGen accepts (its q switch); 0 turns quality refinement off.</source>
+        <translation>Plus grand rapport du rayon circonscrit à l&apos;arête la plus courte accepté par TetGen (son option q) ; 0 désactive le raffinement de qualité.</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Aucun</translation>
+    </message>
+    <message>
+        <source>&amp;Maximum tet volume:</source>
+        <translation>Volume &amp;maximal d&apos;un tétraèdre :</translation>
+    </message>
+    <message>
+        <source>Largest volume of a tetrahedron (TetGen&apos;s a switch); 0 sets none.</source>
+        <translation>Plus grand volume d&apos;un tétraèdre (option a de TetGen) ; 0 n&apos;en impose aucun.</translation>
+    </message>
+    <message>
+        <source>&amp;Time limit per model:</source>
+        <translation>&amp;Temps limite par modèle :</translation>
+    </message>
+    <message>
+        <source>TetGen is stopped after this time on each model; a raw input model can keep it busy for hours. 0 sets none.</source>
+        <translation>TetGen est arrêté après ce temps sur chaque modèle ; un modèle d&apos;entrée brut peut l&apos;occuper des heures. 0 n&apos;en impose aucun.</translation>
+    </message>
+    <message>
+        <source>Memory &amp;limit per model:</source>
+        <translation>&amp;Limite de mémoire par modèle :</translation>
+    </message>
+    <message>
+        <source>Address space the TetGen helper may use; 0 sets none.</source>
+        <translation>Espace d&apos;adressage que le processus auxiliaire de TetGen peut utiliser ; 0 n&apos;en impose aucun.</translation>
+    </message>
+    <message>
+        <source>Let TetGen &amp;refine the surfaces</source>
+        <translation>Laisser TetGen &amp;raffiner les surfaces</translation>
+    </message>
+    <message>
+        <source>Without it every surface triangle is kept as it is (TetGen&apos;s Y switch), so the meshes show what the surfaces themselves give.</source>
+        <translation>Sans cela, chaque triangle des surfaces est gardé tel quel (option Y de TetGen) : les maillages montrent ce que donnent les surfaces elles-mêmes.</translation>
+    </message>
+    <message>
+        <source>&amp;Keep nearly coplanar triangles apart</source>
+        <translation>&amp;Garder séparés les triangles presque coplanaires</translation>
+    </message>
+    <message>
+        <source>When TetGen refines the surfaces it merges nearly coplanar triangles, which moves region volumes by about 1e-6; this keeps them exact (its M switch) but refines much more.</source>
+        <translation>Quand TetGen raffine les surfaces, il fusionne les triangles presque coplanaires, ce qui change les volumes des régions d&apos;environ 1e-6 ; cette option les garde exacts (son option M) mais raffine bien plus.</translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::RemeshController</name>
     <message>
         <source>Remeshing</source>
@@ -1018,80 +1176,16 @@ min. (°)</translation>
 <context>
     <name>stratamesh::RemeshDialog</name>
     <message>
-        <source>Number of &amp;sites:</source>
-        <translation>Nombre de &amp;sites :</translation>
-    </message>
-    <message>
-        <source>Target &amp;edge length:</source>
-        <translation>&amp;Longueur d&apos;arête visée :</translation>
-    </message>
-    <message>
-        <source>&amp;Adaptive density (more sites near corners)</source>
-        <translation>Densité &amp;adaptative (plus de sites près des coins)</translation>
-    </message>
-    <message>
         <source>Remesh Model</source>
         <translation>Remailler le modèle</translation>
-    </message>
-    <message>
-        <source>Sites spread over all the surfaces; each becomes about one vertex.</source>
-        <translation>Sites répartis sur toutes les surfaces ; chacun devient à peu près un sommet.</translation>
-    </message>
-    <message>
-        <source>The number of sites is derived from the total area for this edge length.</source>
-        <translation>Le nombre de sites est déduit de l&apos;aire totale pour cette longueur d&apos;arête.</translation>
-    </message>
-    <message>
-        <source>Off</source>
-        <translation>Désactivé</translation>
-    </message>
-    <message>
-        <source>Parts of features closer than this distance are merged (thesis Alg. 4.2, step 4); 0 keeps them apart.</source>
-        <translation>Les parties d&apos;éléments plus proches que cette distance sont fusionnées (thèse, alg. 4.2, étape 4) ; 0 les garde séparées.</translation>
-    </message>
-    <message>
-        <source>Iterations of the centroidal Voronoi optimisation of the sites (thesis: 100).</source>
-        <translation>Itérations de l&apos;optimisation de Voronoï centroïdale des sites (thèse : 100).</translation>
-    </message>
-    <message>
-        <source>Seed of the initial random sampling: the same seed gives the same mesh.</source>
-        <translation>Graine de l&apos;échantillonnage aléatoire initial : la même graine donne le même maillage.</translation>
-    </message>
-    <message>
-        <source>Site density grows near corners, so small features keep more triangles (thesis Fig. 4.19).</source>
-        <translation>La densité de sites croît près des coins, les petits éléments gardent ainsi plus de triangles (thèse, fig. 4.19).</translation>
     </message>
     <message>
         <source>Resolution</source>
         <translation>Résolution</translation>
     </message>
     <message>
-        <source>&amp;d_resolution:</source>
-        <translation>&amp;d_resolution :</translation>
-    </message>
-    <message>
-        <source> × edge length</source>
-        <translation> × longueur d&apos;arête</translation>
-    </message>
-    <message>
-        <source>Surfaces narrower than this between two long lines (a small fault throw) are removed whole before remeshing, their two lines merged into one; 0 keeps them.</source>
-        <translation>Les surfaces plus étroites que cela entre deux longues lignes (un petit rejet de faille) sont supprimées entières avant le remaillage, leurs deux lignes fusionnées en une seule ; 0 les garde.</translation>
-    </message>
-    <message>
-        <source>Remove thin s&amp;trips under:</source>
-        <translation>Supprimer les &amp;bandes fines sous :</translation>
-    </message>
-    <message>
-        <source>&amp;Iterations:</source>
-        <translation>&amp;Itérations :</translation>
-    </message>
-    <message>
         <source>&amp;Remesh</source>
         <translation>&amp;Remailler</translation>
-    </message>
-    <message>
-        <source>Ra&amp;ndom seed:</source>
-        <translation>&amp;Graine aléatoire :</translation>
     </message>
 </context>
 <context>
@@ -1174,10 +1268,6 @@ min. (°)</translation>
 <context>
     <name>stratamesh::TetmeshDialog</name>
     <message>
-        <source>Let TetGen &amp;refine the surfaces</source>
-        <translation>Laisser TetGen &amp;raffiner les surfaces</translation>
-    </message>
-    <message>
         <source>Input and &amp;remesh</source>
         <translation>Entrée et &amp;remaillage</translation>
     </message>
@@ -1190,52 +1280,12 @@ min. (°)</translation>
         <translation>Tétraédriser</translation>
     </message>
     <message>
-        <source>Off</source>
-        <translation>Désactivée</translation>
-    </message>
-    <message>
-        <source>Largest circumradius to shortest edge ratio TetGen accepts (its q switch); 0 turns quality refinement off.</source>
-        <translation>Plus grand rapport du rayon circonscrit à l&apos;arête la plus courte accepté par TetGen (son option q) ; 0 désactive le raffinement de qualité.</translation>
-    </message>
-    <message>
-        <source>None</source>
-        <translation>Aucun</translation>
-    </message>
-    <message>
-        <source>Largest volume of a tetrahedron (TetGen&apos;s a switch); 0 sets none.</source>
-        <translation>Plus grand volume d&apos;un tétraèdre (option a de TetGen) ; 0 n&apos;en impose aucun.</translation>
-    </message>
-    <message>
-        <source>Without it every surface triangle is kept as it is (TetGen&apos;s Y switch), so the meshes show what the surfaces themselves give.</source>
-        <translation>Sans cela, chaque triangle des surfaces est gardé tel quel (option Y de TetGen) : les maillages montrent ce que donnent les surfaces elles-mêmes.</translation>
-    </message>
-    <message>
-        <source> s</source>
-        <translation> s</translation>
-    </message>
-    <message>
-        <source>TetGen is stopped after this time on each model; a raw input model can keep it busy for hours.</source>
-        <translation>TetGen est arrêté après ce temps sur chaque modèle ; un modèle d&apos;entrée brut peut l&apos;occuper des heures.</translation>
-    </message>
-    <message>
         <source>Models</source>
         <translation>Modèles</translation>
     </message>
     <message>
         <source>Remesh the model first</source>
         <translation>Remailler d&apos;abord le modèle</translation>
-    </message>
-    <message>
-        <source>&amp;Quality (radius-edge ratio):</source>
-        <translation>&amp;Qualité (rapport rayon/arête) :</translation>
-    </message>
-    <message>
-        <source>&amp;Maximum tet volume:</source>
-        <translation>Volume &amp;maximal d&apos;un tétraèdre :</translation>
-    </message>
-    <message>
-        <source>&amp;Time limit per model:</source>
-        <translation>&amp;Temps limite par modèle :</translation>
     </message>
     <message>
         <source>&amp;Tetrahedralise</source>

@@ -94,6 +94,45 @@ double CommandArgs::doubleOption(const QString &name, double defaultValue, doubl
     return value;
 }
 
+std::optional<std::vector<double>> CommandArgs::paramValue(const ParamInfo &info)
+{
+    const QString name = QString::fromStdString(info.flag);
+    if (info.type == ParamType::Flag) {
+        if (!flag(name))
+            return std::nullopt;
+        return std::vector<double>{1.0};
+    }
+    const std::optional<QString> text = option(name);
+    if (!text)
+        return std::nullopt;
+    const bool whole = info.type != ParamType::Real;
+    const QString expects = info.type == ParamType::IntList ? QStringLiteral("integers")
+                            : whole                         ? QStringLiteral("an integer")
+                                                            : QStringLiteral("a number");
+    auto refuse = [&]() {
+        return UsageError(
+            QStringLiteral("%1 expects %2 in %3, got '%4'")
+                .arg(name, expects,
+                     QString::fromStdString(paramRangeText(info))
+                         + (info.type == ParamType::IntList ? QStringLiteral(" separated by commas")
+                                                            : QString()),
+                     *text));
+    };
+    const QStringList parts =
+        info.type == ParamType::IntList ? text->split(QLatin1Char(',')) : QStringList{*text};
+    std::vector<double> values;
+    for (const QString &part : parts) {
+        bool ok = false;
+        // Whole numbers as integers, so that "1e3" or "2.5" is not a number of sites.
+        const double value = whole ? static_cast<double>(part.trimmed().toLongLong(&ok))
+                                   : part.trimmed().toDouble(&ok);
+        if (!ok || !paramValueError(info, value).empty())
+            throw refuse();
+        values.push_back(value);
+    }
+    return values;
+}
+
 std::optional<QString> CommandArgs::optionalPositional()
 {
     for (Token &t : m_tokens) {

@@ -2,11 +2,14 @@
 // then positionals, then finish() rejects whatever was not read, so a typo is never ignored.
 #pragma once
 
+#include "params/param_table.h"
+
 #include <QString>
 #include <QStringList>
 
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace stratamesh::cli {
@@ -37,6 +40,29 @@ public:
 
     // UsageError for any argument not read: unknown options and extra positionals.
     void finish() const;
+
+    // The value of one table parameter given on the command line, if it is: 1 for a flag,
+    // the number (or the numbers of a list) of an option. UsageError "--sites expects an
+    // integer in [4, 10000000] or 0, got '2'" for a value its entry does not accept.
+    std::optional<std::vector<double>> paramValue(const ParamInfo &info);
+
+    // Sets every parameter of `table` given on the command line and returns their keys.
+    template <class P>
+    std::vector<std::string> params(const ParamTable<P> &table, P &params)
+    {
+        std::vector<std::string> given;
+        for (const Param<P> &p : table.params()) {
+            const std::optional<std::vector<double>> value = paramValue(p.info);
+            if (!value)
+                continue;
+            if (p.info.type == ParamType::IntList)
+                p.setList(params, *value);
+            else
+                p.set(params, value->front());
+            given.push_back(p.info.key);
+        }
+        return given;
+    }
 
 private:
     struct Token {

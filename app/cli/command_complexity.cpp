@@ -1,5 +1,5 @@
-// stratamesh-cli complexity MODEL [--h 100] [--alpha 20] [--cells 100,1000,10000] [--seed S]
-//                [--iterations 30] [--json] [--cells-vtk OUT.vtu]:
+// stratamesh-cli complexity MODEL [PARAMETERS] [--json] [--cells-vtk OUT.vtu] (the parameters:
+//                complexityParamTable()):
 // the complexity measures of thesis chapter 3, box excluded — counts (Table 3.1), geometric
 // complexity (Table 3.2), size variation coefficients (Table 3.3) and the statistics of the
 // number of elements per cell of a volumetric CVT for each number of cells (Table 3.4).
@@ -11,6 +11,8 @@
 #include "io/cells_vtu_writer.h"
 #include "io/model_reader.h"
 #include "model/topology.h"
+#include "param_json.h"
+#include "params/param_tables.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -20,22 +22,6 @@
 namespace stratamesh::cli {
 
 namespace {
-
-std::vector<int> parseCells(const QString &text)
-{
-    std::vector<int> cells;
-    for (const QString &part : text.split(QLatin1Char(','))) {
-        bool ok = false;
-        const int n = part.trimmed().toInt(&ok);
-        if (!ok || n < 1 || n > 1000000)
-            throw UsageError(
-                QStringLiteral("--cells takes numbers of cells in [1, 1000000] separated by "
-                               "commas, not '%1'")
-                    .arg(text));
-        cells.push_back(n);
-    }
-    return cells;
-}
 
 QString vtkPath(const QString &base, int cells, bool several)
 {
@@ -74,9 +60,6 @@ QJsonObject reportJson(const QString &path, const Model &model, const Complexity
                        const ComplexityReport &r, const QJsonObject &timings)
 {
     const EntityCounts &c = r.counts;
-    QJsonArray cells;
-    for (int n : params.cells)
-        cells.append(n);
     QJsonArray local;
     for (const LocalComplexity &l : r.local) {
         const CountStatistics &s = l.statistics;
@@ -93,11 +76,7 @@ QJsonObject reportJson(const QString &path, const Model &model, const Complexity
     return QJsonObject{
         {"file", path},
         {"name", QString::fromStdString(model.name)},
-        {"parameters", QJsonObject{{"h", params.geometric.h},
-                                   {"alpha_deg", params.geometric.alphaDegrees},
-                                   {"cells", cells},
-                                   {"seed", QString::number(params.seed)},
-                                   {"iterations", params.iterations}}},
+        {"parameters", paramsToJson(complexityParamTable(), params)},
         {"global", QJsonObject{{"counts", QJsonObject{{"regions", c.regions},
                                                       {"surfaces", c.surfaces},
                                                       {"lines", c.lines},
@@ -163,18 +142,7 @@ int runComplexity(CommandArgs &args)
 {
     const bool json = args.flag(QStringLiteral("--json"));
     ComplexityParams params;
-    params.geometric.h = args.doubleOption(QStringLiteral("--h"), 100.0, 1e-9, 1e12);
-    params.geometric.alphaDegrees = args.doubleOption(QStringLiteral("--alpha"), 20.0, 1e-6, 180.0);
-    if (const auto cells = args.option(QStringLiteral("--cells")))
-        params.cells = parseCells(*cells);
-    if (const auto seed = args.option(QStringLiteral("--seed"))) {
-        bool ok = false;
-        params.seed = seed->toULongLong(&ok);
-        if (!ok)
-            throw UsageError(
-                QStringLiteral("--seed takes a non-negative integer, not '%1'").arg(*seed));
-    }
-    params.iterations = args.intOption(QStringLiteral("--iterations"), params.iterations, 0, 10000);
+    args.params(complexityParamTable(), params);
     const std::optional<QString> vtk = args.option(QStringLiteral("--cells-vtk"));
     const QString path = args.positional(QStringLiteral("MODEL"));
     args.finish();

@@ -1,4 +1,4 @@
-// stratamesh-cli cvt MODEL --sites N [--iterations 100] [--seed S] [--alpha A] [--lloyd] [--json]
+// stratamesh-cli cvt MODEL --sites N [--seed S] [PARAMETERS: cvtParamTable()] [--json]
 //     [--sites-out FILE.xyz] [--neighbours delaunay|nearest]
 // Optimises N sites over all surfaces and lines of a model (thesis Alg. 4.1, §4.3) and reports
 // the energy per iteration, the restricted Delaunay triangulation's quality and the timings.
@@ -9,6 +9,7 @@
 #include "io/atomic_file.h"
 #include "io/model_reader.h"
 #include "model/topology.h"
+#include "params/param_tables.h"
 #include "voronoi/restricted_delaunay.h"
 #include "voronoi/restricted_voronoi.h"
 
@@ -55,12 +56,13 @@ QJsonArray numbers(const std::vector<double> &values)
 int runCvt(CommandArgs &args)
 {
     const bool json = args.flag(QStringLiteral("--json"));
-    const bool lloyd = args.flag(QStringLiteral("--lloyd"));
-    const int sites = args.intOption(QStringLiteral("--sites"), 0, 1, 10000000);
-    const int iterations = args.intOption(QStringLiteral("--iterations"), 100, 0, 1000000);
+    CvtParams params;
+    args.params(cvtParamTable(), params);
+    const bool lloyd = params.lloyd;
+    const double alpha = params.alpha;
+    const int sites = args.intOption(QStringLiteral("--sites"), 0, 1, kMaxRemeshSites);
     const int seed =
         args.intOption(QStringLiteral("--seed"), 1, 0, std::numeric_limits<int>::max());
-    const double alpha = args.doubleOption(QStringLiteral("--alpha"), 0.0, 0.0, 1.0);
     const std::optional<QString> sitesOut = args.option(QStringLiteral("--sites-out"));
     const QString neighbours =
         args.option(QStringLiteral("--neighbours")).value_or(QStringLiteral("nearest"));
@@ -84,10 +86,6 @@ int runCvt(CommandArgs &args)
     const std::vector<Vec3> initial =
         sampleSurfaces(domain, sites, static_cast<std::uint64_t>(seed));
 
-    CvtParams params;
-    params.iterations = iterations;
-    params.alpha = alpha;
-    params.lloyd = lloyd;
     params.neighbourSearch = search;
     if (!json)
         params.onIteration = [](const CvtIterationReport &r) {

@@ -61,37 +61,6 @@ InfoReport buildReport(const QString &path)
     return r;
 }
 
-QJsonObject countsJson(const EntityCounts &c)
-{
-    return QJsonObject{{QStringLiteral("regions"), c.regions},
-                       {QStringLiteral("surfaces"), c.surfaces},
-                       {QStringLiteral("lines"), c.lines},
-                       {QStringLiteral("corners"), c.corners}};
-}
-
-QJsonObject validityJson(const ValidityReport &report)
-{
-    QJsonArray problems;
-    for (const ValidityProblem &p : report.problems) {
-        QJsonArray entities;
-        for (const std::string &e : p.entities)
-            entities.append(QString::fromStdString(e));
-        problems.append(QJsonObject{
-            {QStringLiteral("check"), QString::fromStdString(p.check)},
-            {QStringLiteral("entities"), entities},
-            {QStringLiteral("position"),
-             QJsonArray{p.position.x(), p.position.y(), p.position.z()}},
-            {QStringLiteral("message"), QString::fromStdString(p.message)},
-        });
-    }
-    QJsonObject counts;
-    for (const auto &[check, count] : report.counts)
-        counts.insert(QString::fromStdString(check), static_cast<qint64>(count));
-    return QJsonObject{{QStringLiteral("valid"), report.valid},
-                       {QStringLiteral("problems"), problems},
-                       {QStringLiteral("counts"), counts}};
-}
-
 QJsonObject reportJson(const InfoReport &r)
 {
     QJsonArray regions;
@@ -104,15 +73,13 @@ QJsonObject reportJson(const InfoReport &r)
     return QJsonObject{
         {QStringLiteral("file"), r.path},
         {QStringLiteral("name"), QString::fromStdString(r.model.name)},
-        {QStringLiteral("counts"),
-         QJsonObject{{QStringLiteral("all"), countsJson(r.counts.all)},
-                     {QStringLiteral("without_box"), countsJson(r.counts.withoutBox)}}},
+        {QStringLiteral("counts"), toJson(r.counts)},
         {QStringLiteral("mesh"), toJson(r.mesh)},
         {QStringLiteral("histograms"),
          QJsonObject{{QStringLiteral("min_angle_deg"), toJson(minAngleHistogram(r.model))},
                      {QStringLiteral("quality"), toJson(qualityHistogram(r.model))}}},
         {QStringLiteral("regions"), regions},
-        {QStringLiteral("validity"), validityJson(r.validity)},
+        {QStringLiteral("validity"), toJson(r.validity)},
         {QStringLiteral("timings"), QJsonObject{{QStringLiteral("read_s"), r.readSeconds},
                                                 {QStringLiteral("topology_s"), r.topologySeconds},
                                                 {QStringLiteral("validity_s"), r.validitySeconds}}},

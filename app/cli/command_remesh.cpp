@@ -1,6 +1,6 @@
-// stratamesh-cli remesh MODEL (--sites N | --edge-length L) [--d-resolution D] [--iterations 100]
-//     [--seed S] [--adaptive] [--merge-all] [--strip-factor F] [--allow-invalid] -o
-//     OUT.(ml|ts|gm|msh|vtu|vtk|vtp) --report REPORT.json
+// stratamesh-cli remesh MODEL (--sites N | --edge-length L) [PARAMETERS] [--allow-invalid]
+//     [--params REPORT.json] -o OUT.(ml|ts|gm|msh|vtu|vtk|vtp) --report REPORT.json
+// (the parameters: remeshParamTable(); --params takes them from a report, flags override them)
 // Remeshes every surface of a model at once at the chosen resolution (thesis ch. 4), writes the
 // new model, and a JSON report: input and output (counts and mesh as `info --json`, validity),
 // the Hausdorff distance, histograms, timings, the simplification ledger and the CVT energy.
@@ -13,6 +13,8 @@
 #include "model/model_counts.h"
 #include "model/topology.h"
 #include "model/validity.h"
+#include "param_json.h"
+#include "params/param_tables.h"
 #include "quality/model_comparison.h"
 #include "remesh/ledger_reconciliation.h"
 #include "remesh/surface_remesher.h"
@@ -23,96 +25,19 @@
 #include <QJsonDocument>
 #include <QSaveFile>
 
+#include <algorithm>
+
 namespace stratamesh::cli {
+
+using RemeshTable = ParamTable<RemeshParams>;
 
 namespace {
 
-QJsonArray vec3(const Vec3 &v)
-{
-    return QJsonArray{v.x(), v.y(), v.z()};
-}
-
-QJsonObject countsJson(const EntityCounts &c)
-{
-    return QJsonObject{{QStringLiteral("regions"), c.regions},
-                       {QStringLiteral("surfaces"), c.surfaces},
-                       {QStringLiteral("lines"), c.lines},
-                       {QStringLiteral("corners"), c.corners}};
-}
-
-// Same keys as `info --json`.
-QJsonObject validityJson(const ValidityReport &report)
-{
-    QJsonArray problems;
-    for (const ValidityProblem &p : report.problems) {
-        QJsonArray entities;
-        for (const std::string &e : p.entities)
-            entities.append(QString::fromStdString(e));
-        problems.append(
-            QJsonObject{{QStringLiteral("check"), QString::fromStdString(p.check)},
-                        {QStringLiteral("entities"), entities},
-                        {QStringLiteral("position"), vec3(p.position)},
-                        {QStringLiteral("message"), QString::fromStdString(p.message)}});
-    }
-    QJsonObject counts;
-    for (const auto &[check, count] : report.counts)
-        counts.insert(QString::fromStdString(check), static_cast<qint64>(count));
-    return QJsonObject{{QStringLiteral("valid"), report.valid},
-                       {QStringLiteral("problems"), problems},
-                       {QStringLiteral("counts"), counts}};
-}
-
 QJsonObject sideJson(const Model &model, const MeshStatistics &mesh, const ValidityReport &validity)
 {
-    const ModelCounts counts = countEntities(model);
-    return QJsonObject{
-        {QStringLiteral("counts"),
-         QJsonObject{{QStringLiteral("all"), countsJson(counts.all)},
-                     {QStringLiteral("without_box"), countsJson(counts.withoutBox)}}},
-        {QStringLiteral("mesh"), toJson(mesh)},
-        {QStringLiteral("validity"), validityJson(validity)}};
-}
-
-QJsonArray refsJson(const std::vector<EntityRef> &refs)
-{
-    QJsonArray a;
-    for (const EntityRef &r : refs)
-        a.append(
-            QJsonObject{{QStringLiteral("kind"), QString::fromStdString(entityKindName(r.kind))},
-                        {QStringLiteral("id"), r.id},
-                        {QStringLiteral("name"), QString::fromStdString(r.name)}});
-    return a;
-}
-
-QJsonArray ledgerJson(const SimplificationLedger &ledger)
-{
-    QJsonArray a;
-    for (const LedgerRecord &r : ledger)
-        a.append(
-            QJsonObject{{QStringLiteral("kind"), QString::fromStdString(ledgerKindName(r.kind))},
-                        {QStringLiteral("inputs"), refsJson(r.inputs)},
-                        {QStringLiteral("outputs"), refsJson(r.outputs)},
-                        {QStringLiteral("position"), vec3(r.position)},
-                        {QStringLiteral("size"), r.size},
-                        {QStringLiteral("size_meaning"), QString::fromStdString(r.sizeMeaning)},
-                        {QStringLiteral("note"), QString::fromStdString(r.note)},
-                        {QStringLiteral("cause"), r.cause}});
-    return a;
-}
-
-QJsonObject balanceJson(const LedgerBalance &b)
-{
-    auto one = [](const EntityBalance &e) {
-        return QJsonObject{{QStringLiteral("input"), e.input},
-                           {QStringLiteral("lost"), e.lost},
-                           {QStringLiteral("created"), e.created},
-                           {QStringLiteral("output"), e.output},
-                           {QStringLiteral("balanced"), e.balanced()}};
-    };
-    return QJsonObject{{QStringLiteral("surfaces"), one(b.surfaces)},
-                       {QStringLiteral("lines"), one(b.lines)},
-                       {QStringLiteral("corners"), one(b.corners)},
-                       {QStringLiteral("balanced"), b.balanced()}};
+    return QJsonObject{{QStringLiteral("counts"), toJson(countEntities(model))},
+                       {QStringLiteral("mesh"), toJson(mesh)},
+                       {QStringLiteral("validity"), toJson(validity)}};
 }
 
 void writeModelFile(const Model &model, const QString &path)
@@ -133,18 +58,22 @@ void writeReport(const QJsonObject &report, const QString &path)
 
 int runRemesh(CommandArgs &args)
 {
+    const RemeshTable &table = remeshParamTable();
     RemeshParams params;
-    params.sites = args.intOption(QStringLiteral("--sites"), 0, 4, 10000000);
-    params.edgeLength = args.doubleOption(QStringLiteral("--edge-length"), 0.0, 0.0, 1e300);
-    params.dResolution = args.doubleOption(QStringLiteral("--d-resolution"), 0.0, 0.0, 1e300);
-    params.iterations = args.intOption(QStringLiteral("--iterations"), 100, 0, 100000);
-    params.seed = static_cast<unsigned>(args.intOption(QStringLiteral("--seed"), 1, 0, 2147483647));
-    params.adaptive = args.flag(QStringLiteral("--adaptive"));
-    params.mergeAllExtraPoints = args.flag(QStringLiteral("--merge-all"));
-    params.stripWidthFactor =
-        args.doubleOption(QStringLiteral("--strip-factor"), params.stripWidthFactor, 0.0, 1.0);
-    params.refinementRounds =
-        args.intOption(QStringLiteral("--refinement-rounds"), params.refinementRounds, 0, 100);
+    // A report's parameters first, so that the flags given with it override them.
+    if (const std::optional<QString> from = args.option(QStringLiteral("--params"))) {
+        paramsFromJson(table, readJsonObject(*from), params, *from);
+        if (params.edgeLength > 0.0) // its `sites` were derived from the edge length asked
+            params.sites = 0;
+    }
+    const std::vector<std::string> given = args.params(table, params);
+    auto isGiven = [&given](const char *key) {
+        return std::find(given.begin(), given.end(), key) != given.end();
+    };
+    if (isGiven("sites") && !isGiven("edge_length"))
+        params.edgeLength = 0.0;
+    else if (isGiven("edge_length") && !isGiven("sites"))
+        params.sites = 0;
     const bool allowInvalid = args.flag(QStringLiteral("--allow-invalid"));
     const std::optional<QString> output = args.option(QStringLiteral("-o"));
     const std::optional<QString> reportPath = args.option(QStringLiteral("--report"));
@@ -203,37 +132,23 @@ int runRemesh(CommandArgs &args)
     QJsonArray energy;
     for (double e : result.energy)
         energy.append(e);
+    // Every table parameter, so that `remesh --params REPORT.json` repeats the run; `sites` is
+    // the number the run started from (derived from the edge length when that was asked).
+    QJsonObject parameters = paramsToJson(table, params);
+    parameters.insert(QStringLiteral("sites"), result.initialSiteCount);
+    parameters.insert(QStringLiteral("final_sites"), result.siteCount);
     const QJsonObject report{
         {QStringLiteral("file"), path},
         {QStringLiteral("output_file"), *output},
-        {QStringLiteral("topology_edits"),
-         QJsonObject{{QStringLiteral("total"), edits.total()},
-                     {QStringLiteral("surfaces_lost"), edits.surfacesLost},
-                     {QStringLiteral("surfaces_created"), edits.surfacesCreated},
-                     {QStringLiteral("lines_lost"), edits.linesLost},
-                     {QStringLiteral("lines_created"), edits.linesCreated},
-                     {QStringLiteral("corners_lost"), edits.cornersLost},
-                     {QStringLiteral("corners_created"), edits.cornersCreated},
-                     {QStringLiteral("surface_parts_lost"), edits.surfacePartsLost},
-                     {QStringLiteral("surface_parts_created"), edits.surfacePartsCreated}}},
+        {QStringLiteral("topology_edits"), toJson(edits)},
         {QStringLiteral("ledger_balance"),
-         balanceJson(ledgerBalance(input, result.model, result.ledger))},
+         toJson(ledgerBalance(input, result.model, result.ledger))},
         {QStringLiteral("refinement"),
          QJsonObject{{QStringLiteral("initial_sites"), result.initialSiteCount},
                      {QStringLiteral("final_sites"), result.siteCount},
                      {QStringLiteral("rounds"), result.refinementRounds},
                      {QStringLiteral("remaining_places"), result.remainingTargets}}},
-        {QStringLiteral("parameters"),
-         QJsonObject{{QStringLiteral("sites"), result.initialSiteCount},
-                     {QStringLiteral("final_sites"), result.siteCount},
-                     {QStringLiteral("strip_factor"), params.stripWidthFactor},
-                     {QStringLiteral("merge_all"), params.mergeAllExtraPoints},
-                     {QStringLiteral("refinement_rounds"), params.refinementRounds},
-                     {QStringLiteral("edge_length"), params.edgeLength},
-                     {QStringLiteral("d_resolution"), params.dResolution},
-                     {QStringLiteral("iterations"), params.iterations},
-                     {QStringLiteral("seed"), static_cast<qint64>(params.seed)},
-                     {QStringLiteral("adaptive"), params.adaptive}}},
+        {QStringLiteral("parameters"), parameters},
         {QStringLiteral("input"), sideJson(input, comparison.input.mesh, inValidity)},
         {QStringLiteral("output"), sideJson(result.model, comparison.output.mesh, outValidity)},
         {QStringLiteral("hausdorff_pct_bbox"), comparison.hausdorff.symmetricPctBbox},
@@ -253,7 +168,7 @@ int runRemesh(CommandArgs &args)
          QJsonObject{{QStringLiteral("sampling_s"), result.timings.samplingSeconds},
                      {QStringLiteral("mesh_s"), result.timings.meshSeconds},
                      {QStringLiteral("total_s"), result.timings.totalSeconds}}},
-        {QStringLiteral("ledger"), ledgerJson(result.ledger)},
+        {QStringLiteral("ledger"), toJson(result.ledger)},
         {QStringLiteral("energy"), energy},
     };
     if (reportPath)

@@ -4,6 +4,7 @@
 // (model, grid point) is a task with a stable number and its own folder (app/study).
 #include "cli_output.h"
 #include "command_args.h"
+#include "command_params.h"
 #include "commands.h"
 #include "common/error.h"
 #include "slurm_submission.h"
@@ -31,7 +32,8 @@ bool commandHasOption(const QString &step, const QString &flag)
     if (!command)
         return false;
     const QRegularExpression word(QRegularExpression::escape(flag) + QStringLiteral("(?![a-z-])"));
-    return QString::fromLatin1(command->arguments).contains(word);
+    // The expanded usage: table options stand behind "{params}" in the registry line.
+    return QString::fromStdString(commandArguments(*command)).contains(word);
 }
 
 QString cliPath()

@@ -1,5 +1,5 @@
-// stratamesh-cli tetmesh MODEL [--quality 1.414] [--max-volume V] [--refine-surfaces] [--no-merge]
-//     [--time-limit S] [--memory-limit MB] [-o OUT.(vtu|vtk|msh|so)] [--msh-version 4.1|2.2]
+// stratamesh-cli tetmesh MODEL [PARAMETERS: tetgenParamTable()] [-o OUT.(vtu|vtk|msh|so)]
+//     [--msh-version 4.1|2.2]
 //     [--report R.json] [--json] [--poly PLC.poly]
 // A TetGen comparison mesh of a model (thesis §5.2): TetGen runs in its helper process
 // (core/volume/tetgen_runner.h), so an abort, a crash, a time-out or an exhausted memory limit is
@@ -11,6 +11,8 @@
 #include "io/model_reader.h"
 #include "json_report.h"
 #include "model/topology.h"
+#include "param_json.h"
+#include "params/param_tables.h"
 #include "volume/plc.h"
 #include "volume/tetgen_comparison.h"
 #include "volume/tetgen_poly_writer.h"
@@ -60,12 +62,7 @@ QJsonArray regionsJson(const Model &model, const TetmeshSide &side)
 int runTetmesh(CommandArgs &args)
 {
     TetgenParams params;
-    params.quality = args.doubleOption(QStringLiteral("--quality"), 1.414, 0.0, 1e6);
-    params.maxVolume = args.doubleOption(QStringLiteral("--max-volume"), 0.0, 0.0, 1e300);
-    params.refineSurfaces = args.flag(QStringLiteral("--refine-surfaces"));
-    params.noMerge = args.flag(QStringLiteral("--no-merge"));
-    params.timeLimitSeconds = args.doubleOption(QStringLiteral("--time-limit"), 0.0, 0.0, 1e9);
-    params.memoryLimitMB = args.doubleOption(QStringLiteral("--memory-limit"), 0.0, 0.0, 1e9);
+    args.params(tetgenParamTable(), params);
     const bool json = args.flag(QStringLiteral("--json"));
     ExportOptions exportOptions;
     if (const auto version = args.option(QStringLiteral("--msh-version"))) {
@@ -111,12 +108,7 @@ int runTetmesh(CommandArgs &args)
         {"last_output", QString::fromStdString(result.lastOutput)},
         {"surfaces", stringArray(result.surfaces)},
         {"switches", QString::fromStdString(result.switches)},
-        {"parameters", QJsonObject{{"quality", params.quality},
-                                   {"max_volume", params.maxVolume},
-                                   {"refine_surfaces", params.refineSurfaces},
-                                   {"no_merge", params.noMerge},
-                                   {"time_limit_s", params.timeLimitSeconds},
-                                   {"memory_limit_mb", params.memoryLimitMB}}},
+        {"parameters", paramsToJson(tetgenParamTable(), params)},
         {"input", QJsonObject{{"points", static_cast<qint64>(model.vertices.size())},
                               {"triangles", static_cast<qint64>(model.triangleCount())},
                               {"regions", static_cast<qint64>(model.regions.size())}}},

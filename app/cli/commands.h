@@ -6,9 +6,13 @@
 //      read options first (args.flag("--json"), args.option("--out")...), then positionals, then
 //      call args.finish(); return 0 on success. Throw UsageError for a bad command line and let
 //      core errors (FileError, InputError, Cancelled) propagate: main prints them and exits 1.
-//      Helpers: cli_output.h (printJson, out), json_report.h (core results as JSON).
+//      Helpers: cli_output.h (printJson, out), json_report.h and param_json.h
+//      (app/report: core results and parameters as JSON).
 //   2. add command_foo.cpp to app/cli/CMakeLists.txt;
 //   3. add ONE line to the list below:  X("foo", runFoo, "ARGUMENTS", "One-line summary") \.
+// A command whose parameters have a table in core/params names it in command_params.cpp, reads
+// them with args.params(table, params) and writes "{params}" in ARGUMENTS where its usage line
+// lists them: flags, usage, --help, range checks and the README list then follow the table.
 #pragma once
 
 #include "command_args.h"
@@ -18,12 +22,12 @@
 // clang-format off
 #define STRATAMESH_CLI_COMMANDS(X)                                                                 \
     X("info", runInfo, "MODEL [--json]", "Counts, mesh statistics, region volumes and validity of a model") \
-    X("remesh", runRemesh, "MODEL (--sites N | --edge-length L) [--d-resolution D] [--iterations 100] [--seed S] [--adaptive] [--merge-all] [--strip-factor 0.4] [--refinement-rounds 4] [--allow-invalid] -o OUT.(ml|ts|gm|msh|vtu|vtk|vtp) [--report REPORT.json]", "Remesh all surfaces at a resolution, refined locally until valid and topology-preserving above d_resolution (default 0: keep every feature), with a ledger of simplifications (thesis ch. 4)") \
+    X("remesh", runRemesh, "MODEL (--sites N | --edge-length L) {params} [--allow-invalid] [--params REPORT.json] -o OUT.(ml|ts|gm|msh|vtu|vtk|vtp) [--report REPORT.json]", "Remesh all surfaces at a resolution, refined locally until valid and topology-preserving above d_resolution (default 0: keep every feature), with a ledger of simplifications (thesis ch. 4)") \
     X("convert", runConvert, "IN OUT [--msh-version 4.1|2.2] [--save-all] [--surface N] [--json]", "Convert between Gocad (.ml .ts .so), RINGMesh (.gm), VTK (.vtu .vtk .vtp), Gmsh (.msh) and single-surface (.obj .off .stl .ply) files, formats from the extensions") \
-    X("cvt", runCvt, "MODEL --sites N [--iterations 100] [--seed S] [--alpha A] [--lloyd] [--json] [--sites-out FILE.xyz] [--neighbours delaunay|nearest]", "Optimise N sites over all surfaces and lines (CVT + boundary energy, L-BFGS); RDT quality and timings (thesis §4.3)") \
-    X("complexity", runComplexity, "MODEL [--h 100] [--alpha 20] [--cells 100,1000,10000] [--seed S] [--iterations 30] [--json] [--cells-vtk OUT.vtu]", "Complexity measures of thesis ch. 3 (box excluded): counts, geometric complexity, size variation, elements per Voronoi cell (Tables 3.1-3.4)") \
+    X("cvt", runCvt, "MODEL --sites N [--seed S] {params} [--json] [--sites-out FILE.xyz] [--neighbours delaunay|nearest]", "Optimise N sites over all surfaces and lines (CVT + boundary energy, L-BFGS); RDT quality and timings (thesis §4.3)") \
+    X("complexity", runComplexity, "MODEL {params} [--json] [--cells-vtk OUT.vtu]", "Complexity measures of thesis ch. 3 (box excluded): counts, geometric complexity, size variation, elements per Voronoi cell (Tables 3.1-3.4)") \
     X("synthetic", runSynthetic, "(layered|network|spheres|sample) [--faults 3] [--dip 30] [--horizons 3] [--throw 20] [--edge-length 40] -o OUT", "Write a model built in code: a layered box, a low-dip fault network (throws 0.3, 1.5, 0.6, 2.5 x --throw), nested spheres, the sample") \
-    X("tetmesh", runTetmesh, "MODEL [--quality 1.414] [--max-volume V] [--refine-surfaces] [--no-merge] [--time-limit S] [--memory-limit MB] [-o OUT.(vtu|vtk|msh|so)] [--msh-version 4.1|2.2] [--report R.json] [--json] [--poly PLC.poly]", "TetGen comparison mesh in a helper process (thesis §5.2): tets per region, dihedral angles, slivers, outcome (ok, aborted, timed_out, out_of_memory, killed, invalid_input)") \
+    X("tetmesh", runTetmesh, "MODEL {params} [-o OUT.(vtu|vtk|msh|so)] [--msh-version 4.1|2.2] [--report R.json] [--json] [--poly PLC.poly]", "TetGen comparison mesh in a helper process (thesis §5.2): tets per region, dihedral angles, slivers, outcome (ok, aborted, timed_out, out_of_memory, killed, invalid_input)") \
     X("study", runStudy, "STUDY.smstudy (--plan | --run [--jobs N] | --task ID | --gather | --status | --submit slurm [--partition P] [--time T] [--mem M] [--max-parallel K] | --resubmit-failed [same options]) [--json]", "Many models x many parameter sets: plan, run here (resumable) or as one Slurm job array, gather one table of every task") \
     /* end of the list */
 // clang-format on

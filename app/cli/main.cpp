@@ -1,6 +1,7 @@
 // stratamesh-cli: thin batch front end over the core library; each command is one file
 // (commands.h lists them). Exit status: 0 success, 1 error (input, processing), 2 bad usage.
 #include "cli_output.h"
+#include "command_params.h"
 #include "commands.h"
 #include "common/error.h"
 #include "common/version.h"
@@ -22,10 +23,11 @@ void printHelp(std::ostream &stream)
            << " - remeshing and meshing of 3D structural models\n\n"
               "usage: stratamesh-cli COMMAND [ARGUMENTS]\n"
               "       stratamesh-cli COMMAND --help\n"
+              "       stratamesh-cli help --markdown   (option lists as Markdown)\n"
               "       stratamesh-cli --version | --help\n\n"
               "commands:\n";
     for (const Command &c : commands()) {
-        stream << "  " << c.name << ' ' << c.arguments << "\n      " << c.summary << '\n';
+        stream << "  " << c.name << ' ' << commandArguments(c) << "\n      " << c.summary << '\n';
     }
     stream << "\nExit status: 0 success, 1 error (the message names the file and line), "
               "2 bad usage.\n";
@@ -33,7 +35,7 @@ void printHelp(std::ostream &stream)
 
 void printCommandUsage(std::ostream &stream, const Command &c)
 {
-    stream << "usage: stratamesh-cli " << c.name << ' ' << c.arguments << '\n';
+    stream << "usage: stratamesh-cli " << c.name << ' ' << commandArguments(c) << '\n';
 }
 
 int fail(const std::string &message)
@@ -91,9 +93,12 @@ int main(int argc, char **argv)
     if (first == QLatin1String("--help") || first == QLatin1String("-h")
         || first == QLatin1String("help")) {
         if (!arguments.isEmpty()) {
+            if (arguments.first() == QLatin1String("--markdown")) {
+                std::cout << optionsMarkdown();
+                return 0;
+            }
             if (const Command *c = findCommand(arguments.first())) {
-                printCommandUsage(std::cout, *c);
-                std::cout << c->summary << '\n';
+                std::cout << commandHelp(*c);
                 return 0;
             }
             std::cerr << "stratamesh-cli: unknown command '" << arguments.first().toStdString()
@@ -110,8 +115,7 @@ int main(int argc, char **argv)
         return 2;
     }
     if (arguments.contains(QLatin1String("--help")) || arguments.contains(QLatin1String("-h"))) {
-        printCommandUsage(std::cout, *command);
-        std::cout << command->summary << '\n';
+        std::cout << commandHelp(*command);
         return 0;
     }
     return runCommand(*command, arguments);

@@ -1,14 +1,13 @@
-// Parameters of a complexity analysis (thesis ch. 3): characteristic size h and angle α of the
-// geometric measures (Table 3.2), number of cells and seed of the volumetric CVT of the local
-// measures (Table 3.4, Fig 3.7).
+// Parameters of a complexity analysis (thesis ch. 3), one field per entry of
+// complexityParamTable(): characteristic size h and angle α of the geometric measures (Table 3.2),
+// number of cells, seed and Lloyd iterations of the volumetric CVT of the local measures
+// (Table 3.4, Fig 3.7).
 #pragma once
 
 #include "complexity/complexity_report.h"
+#include "param_form.h"
 
 #include <QDialog>
-
-class QDoubleSpinBox;
-class QSpinBox;
 
 namespace stratamesh {
 
@@ -22,13 +21,10 @@ public:
     void setParams(const ComplexityParams &params);
 
     static constexpr int kDefaultCells = 1000;
-    static constexpr int kMaxCells = 200000;
+    static constexpr int kMaxCells = kMaxComplexityCells;
 
 private:
-    QDoubleSpinBox *m_h;
-    QDoubleSpinBox *m_alpha;
-    QSpinBox *m_cells;
-    QSpinBox *m_seed;
+    ParamFields<ComplexityParams> m_fields;
 };
 
 } // namespace stratamesh

@@ -1,5 +1,7 @@
 #include "gui_options.h"
 
+#include "params/param_tables.h"
+
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
@@ -95,32 +97,31 @@ bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exi
     options.showBox = parser.isSet(showBox);
     options.showEdges = parser.isSet(showEdges);
     options.language = parser.value(lang).toLower();
-    if (parser.isSet(remeshSites)) {
+    // The ranges of the `sites` and `cells` entries of the parameter tables, as everywhere.
+    auto count = [&](const QCommandLineOption &option, const ParamInfo &range, int &value,
+                     const char *message) {
+        if (!parser.isSet(option))
+            return true;
         bool ok = false;
-        options.remeshSites = parser.value(remeshSites).toInt(&ok);
-        if (!ok || options.remeshSites < 4) {
-            std::fprintf(stderr, "%s\n",
-                         qPrintable(QCoreApplication::translate("GuiOptions",
-                                                                "--remesh-sites needs a number of "
-                                                                "sites of at least 4, not '%1'.")
-                                        .arg(parser.value(remeshSites))));
-            exitCode = 2;
-            return false;
-        }
-    }
-    if (parser.isSet(complexityCells)) {
-        bool ok = false;
-        options.complexityCells = parser.value(complexityCells).toInt(&ok);
-        if (!ok || options.complexityCells < 1) {
-            std::fprintf(stderr, "%s\n",
-                         qPrintable(QCoreApplication::translate(
-                                        "GuiOptions", "--complexity-cells needs a number of "
-                                                      "cells of at least 1, not '%1'.")
-                                        .arg(parser.value(complexityCells))));
-            exitCode = 2;
-            return false;
-        }
-    }
+        value = parser.value(option).toInt(&ok);
+        if (ok && value >= range.minimum && value <= range.maximum)
+            return true;
+        std::fprintf(stderr, "%s\n",
+                     qPrintable(QCoreApplication::translate("GuiOptions", message)
+                                    .arg(QString::fromStdString(formatParamNumber(range.minimum)),
+                                         QString::fromStdString(formatParamNumber(range.maximum)),
+                                         parser.value(option))));
+        exitCode = 2;
+        return false;
+    };
+    if (!count(remeshSites, remeshParamTable().info("sites"), options.remeshSites,
+               QT_TRANSLATE_NOOP("GuiOptions", "--remesh-sites needs a number of sites in "
+                                               "[%1, %2], not '%3'.")))
+        return false;
+    if (!count(complexityCells, complexityParamTable().info("cells"), options.complexityCells,
+               QT_TRANSLATE_NOOP("GuiOptions", "--complexity-cells needs a number of cells in "
+                                               "[%1, %2], not '%3'.")))
+        return false;
     if (!options.language.isEmpty() && options.language != QLatin1String("fr")
         && options.language != QLatin1String("en")) {
         std::fprintf(stderr, "%s\n",

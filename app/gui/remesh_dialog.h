@@ -1,14 +1,13 @@
-// Parameters of a remeshing (thesis chapter 4): the resolution as a number of sites or a target
-// edge length, d_resolution (Alg 4.2 step 4), CVT iterations, seed, adaptive density (Fig 4.19).
+// Parameters of a remeshing (thesis chapter 4), one field per entry of remeshParamTable(): the
+// resolution as a number of sites or a target edge length, then d_resolution (Alg 4.2 step 4),
+// thin strips, CVT iterations, seed, refinement, adaptive density (Fig 4.19), merge-all.
 #pragma once
 
+#include "param_form.h"
 #include "remesh/surface_remesher.h"
 
 #include <QDialog>
 
-class QCheckBox;
-class QDoubleSpinBox;
-class QLabel;
 class QRadioButton;
 class QSpinBox;
 
@@ -19,6 +18,8 @@ class RemeshDialog : public QDialog {
 public:
     // `diagonal`: bounding-box diagonal of the model, to give the lengths a sensible scale.
     explicit RemeshDialog(double diagonal, QWidget *parent = nullptr);
+    // The fields of `table` (tests add an entry to a copy of remeshParamTable()).
+    RemeshDialog(double diagonal, const ParamTable<RemeshParams> &table, QWidget *parent = nullptr);
 
     RemeshParams params() const;
     void setParams(const RemeshParams &params);
@@ -28,15 +29,11 @@ public:
 private:
     void updateEnabled();
 
+    ParamFields<RemeshParams> m_fields;
     QRadioButton *m_bySites;
     QRadioButton *m_byLength;
-    QSpinBox *m_sites;
-    QDoubleSpinBox *m_edgeLength;
-    QDoubleSpinBox *m_dResolution;
-    QDoubleSpinBox *m_stripFactor;
-    QSpinBox *m_iterations;
-    QSpinBox *m_seed;
-    QCheckBox *m_adaptive;
+    QWidget *m_sites;
+    QWidget *m_edgeLength;
 };
 
 } // namespace stratamesh

@@ -1,16 +1,16 @@
-// Parameters of the TetGen comparison meshes (thesis §5.2): the radius-edge quality bound, an
-// optional maximum tet volume, whether TetGen may refine the surfaces, the time limit of each
-// run, and whether the remesh is tetrahedralised beside the input (the default when there is one).
+// Parameters of the TetGen comparison meshes (thesis §5.2), one field per entry of
+// tetgenParamTable(): the radius-edge quality bound, an optional maximum tet volume, the time and
+// memory limits of each run, whether TetGen may refine the surfaces (and merge their coplanar
+// triangles), and whether the remesh is tetrahedralised beside the input (the default when there
+// is one).
 #pragma once
 
+#include "param_form.h"
 #include "volume/tetgen_runner.h"
 
 #include <QDialog>
 
-class QCheckBox;
-class QDoubleSpinBox;
 class QRadioButton;
-class QSpinBox;
 
 namespace stratamesh {
 
@@ -29,10 +29,7 @@ public:
     static constexpr double kDefaultTimeLimit = 600.0;
 
 private:
-    QDoubleSpinBox *m_quality;
-    QDoubleSpinBox *m_maxVolume;
-    QCheckBox *m_refineSurfaces;
-    QSpinBox *m_timeLimit;
+    ParamFields<TetgenParams> m_fields;
     QRadioButton *m_both;
     QRadioButton *m_inputOnly;
 };

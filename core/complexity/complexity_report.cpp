@@ -1,5 +1,7 @@
 #include "complexity/complexity_report.h"
 
+#include "params/param_tables.h"
+
 #include <chrono>
 
 namespace stratamesh {
@@ -7,6 +9,7 @@ namespace stratamesh {
 ComplexityReport computeComplexity(const Model &model, const ComplexityParams &params,
                                    Progress &progress)
 {
+    checkParams(complexityParamTable(), params);
     ComplexityReport report;
     auto start = std::chrono::steady_clock::now();
     auto lap = [&](const std::string &stage) {

@@ -15,6 +15,9 @@
 
 namespace stratamesh {
 
+// The most cells of one volumetric CVT (the `cells` range of complexityParamTable()).
+inline constexpr int kMaxComplexityCells = 1000000;
+
 struct ComplexityParams {
     GeometricParams geometric;
     std::vector<int> cells{100, 1000, 10000};

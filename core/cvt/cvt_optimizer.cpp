@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "cvt/cvt_energy.h"
 #include "cvt/site_relocation.h"
+#include "params/param_tables.h"
 
 #include <LBFGS.h>
 #include <tbb/task_arena.h>
@@ -304,10 +305,7 @@ CvtResult optimizeCvt(const RestrictionDomain &domain, const std::vector<Vec3> &
 {
     if (initialSites.empty())
         throw InputError("CVT: no sites to optimise");
-    if (params.iterations < 0)
-        throw InputError("CVT: the number of iterations must not be negative");
-    if (!(params.alpha >= 0 && params.alpha <= 1))
-        throw InputError("CVT: alpha must be in [0, 1], got " + std::to_string(params.alpha));
+    checkParams(cvtParamTable(), params);
     if (params.lloyd && params.alpha > 0)
         throw InputError("CVT: Lloyd iterations minimise F_CVT only; alpha > 0 needs L-BFGS");
     if (params.threads < 0)

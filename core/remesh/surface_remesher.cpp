@@ -5,6 +5,7 @@
 #include "cvt/cvt_optimizer.h"
 #include "cvt/initial_sampling.h"
 #include "model/topology.h"
+#include "params/param_tables.h"
 #include "quality/mesh_statistics.h"
 #include "remesh/cell_components.h"
 #include "remesh/duplicate_separation.h"
@@ -167,14 +168,16 @@ int sitesForEdgeLength(double area, double edgeLength)
 {
     if (!(edgeLength > 0.0))
         throw InputError("remesh: the target edge length must be positive");
+    const ParamInfo &sites = remeshParamTable().info("sites");
+    const int most = static_cast<int>(sites.maximum);
     // In doubles: a small edge length on a large model gives more sites than an int holds.
     const double n = area / (std::sqrt(3.0) / 2.0 * edgeLength * edgeLength);
-    if (!(n <= kMaxRemeshSites))
+    if (!(n <= most))
         throw InputError("remesh: an edge length of " + number(edgeLength) + " gives about "
-                         + number(n) + " sites, more than the " + std::to_string(kMaxRemeshSites)
+                         + number(n) + " sites, more than the " + std::to_string(most)
                          + " allowed; use an edge length of at least "
-                         + number(edgeLengthForSites(area, kMaxRemeshSites)));
-    return std::max(4, static_cast<int>(std::lround(n)));
+                         + number(edgeLengthForSites(area, most)));
+    return std::max(static_cast<int>(sites.minimum), static_cast<int>(std::lround(n)));
 }
 
 double edgeLengthForSites(double area, int sites)
@@ -202,27 +205,26 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
 {
     const auto start = std::chrono::steady_clock::now();
     const Model input = withTopology(inputModel);
-    if (params.iterations < 0)
-        throw InputError("remesh: the number of iterations cannot be negative");
-    if (params.dResolution < 0.0)
-        throw InputError("remesh: d_resolution cannot be negative");
+    checkParams(remeshParamTable(), params); // plain ranges; those that depend on the model below
+    const ParamInfo &sitesRange = remeshParamTable().info("sites");
+    const int most = static_cast<int>(sitesRange.maximum);
     const double area = modelArea(input);
     const int n = params.sites > 0 ? params.sites : sitesForEdgeLength(area, params.edgeLength);
     // Fewer sites than surfaces cannot give every surface a cell: the result would lose most of
     // the model (modelA5 at 4 sites: 12 regions on 9 surfaces).
-    const int fewest = std::max(4, static_cast<int>(input.surfaces.size()));
-    if (n < fewest || n > kMaxRemeshSites)
-        throw InputError("remesh: " + std::to_string(n) + " sites is outside "
-                         + std::to_string(fewest) + ".." + std::to_string(kMaxRemeshSites)
-                         + " for this model of " + std::to_string(input.surfaces.size())
-                         + " surfaces (edge length at most "
-                         + number(edgeLengthForSites(area, fewest)) + ")");
+    const int fewest =
+        std::max(static_cast<int>(sitesRange.minimum), static_cast<int>(input.surfaces.size()));
+    if (n < fewest || n > most)
+        throw InputError(
+            "remesh: " + std::to_string(n) + " sites is outside " + std::to_string(fewest) + ".."
+            + std::to_string(most) + " for this model of " + std::to_string(input.surfaces.size())
+            + " surfaces (edge length at most " + number(edgeLengthForSites(area, fewest)) + ")");
     const double diagonal = bboxDiagonal(input);
-    if (params.dResolution > 0.1 * diagonal)
+    if (params.dResolution > kMaxDResolutionFraction * diagonal)
         throw InputError(
             "remesh: d_resolution " + number(params.dResolution)
             + " would merge features across a tenth of the model (bounding-box diagonal "
-            + number(diagonal) + "); use at most " + number(0.1 * diagonal));
+            + number(diagonal) + "); use at most " + number(kMaxDResolutionFraction * diagonal));
     SimplificationLedger ledger;
     const StripCollapse collapsed =
         stripsRemoved(input, edgeLengthForSites(area, n), params, ledger, progress);

@@ -97,16 +97,23 @@ struct TopologyEdits {
 };
 TopologyEdits countTopologyEdits(const SimplificationLedger &ledger);
 
-// The most sites a remesh takes (the CLI's --sites cap as well).
+// The fewest and most sites a remesh takes: the range of the `sites` entry of
+// remeshParamTable() (params/param_tables.h), which every front end and check reads.
+inline constexpr int kMinRemeshSites = 4;
 inline constexpr int kMaxRemeshSites = 10000000;
+// d_resolution above this fraction of the bounding-box diagonal would merge features across the
+// model: refused.
+inline constexpr double kMaxDResolutionFraction = 0.1;
 
-// Number of sites for a target edge length over a total surface area (at least 4). Throws
+// Number of sites for a target edge length over a total surface area (at least the `sites`
+// minimum). Throws
 // InputError when the edge length is not positive or gives more than kMaxRemeshSites.
 int sitesForEdgeLength(double area, double edgeLength);
 // Its inverse: the edge length of a hexagonal packing of `sites` points over `area`.
 double edgeLengthForSites(double area, int sites);
 
-// Throws InputError on bad parameters or an empty model, Cancelled when cancelled.
+// Throws InputError on parameters outside their ranges (remeshParamTable()) or that make no
+// sense for this model, on an empty model; Cancelled when cancelled.
 RemeshResult remeshModel(const Model &input, const RemeshParams &params,
                          Progress &progress = Progress::none());
 

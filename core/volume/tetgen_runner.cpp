@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "io/number_text.h"
 #include "model/validity.h"
+#include "params/param_tables.h"
 #include "volume/child_process.h"
 #include "volume/plc.h"
 #include "volume/progress_range.h"
@@ -384,6 +385,7 @@ TetgenResult runTetgen(const Model &model, const TetgenParams &params, Progress 
     if (!(params.quality >= 0) || !(params.maxVolume >= 0) || !(params.timeLimitSeconds >= 0)
         || !(params.memoryLimitMB >= 0))
         throw InputError("TetGen parameters must be finite and not negative");
+    checkParams(tetgenParamTable(), params);
 
     progress.tick(0.0, "checking the model for TetGen");
     Progress checking = progressRange(progress, 0.0, 0.2);

@@ -118,8 +118,8 @@ private slots:
                       {QStringLiteral("-silent"), QStringLiteral("-no-obsolete"),
                        QStringLiteral("-locations"), QStringLiteral("none"),
                        QStringLiteral(STRATAMESH_GUI_SOURCE_DIR),
-                       QStringLiteral(STRATAMESH_WIDGETS_SOURCE_DIR), QStringLiteral("-ts"),
-                       fresh});
+                       QStringLiteral(STRATAMESH_WIDGETS_SOURCE_DIR),
+                       QStringLiteral(STRATAMESH_PARAMS_SOURCE_DIR), QStringLiteral("-ts"), fresh});
         QVERIFY(lupdate.waitForFinished(60000));
         QVERIFY2(lupdate.exitCode() == 0, lupdate.readAll().constData());
         QSet<QString> expected, committed;
