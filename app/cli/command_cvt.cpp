@@ -9,7 +9,7 @@
 #include "io/atomic_file.h"
 #include "io/model_reader.h"
 #include "model/topology.h"
-#include "voronoi/restricted_delaunay.h"
+#include "quality/restricted_delaunay_quality.h"
 #include "voronoi/restricted_voronoi.h"
 
 #include <QElapsedTimer>
