@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "io/coordinate_bound.h"
+#include "io/formats.h"
 #include "io/group_index.h"
 #include "io/vtk_common.h"
 #include "io/vtk_legacy_counts.h"
@@ -34,18 +35,6 @@
 namespace stratamesh {
 
 namespace {
-
-std::string lowerExtension(const std::string &path)
-{
-    const std::size_t slash = path.find_last_of('/');
-    const std::size_t dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-        return {};
-    std::string ext = path.substr(dot);
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 std::string stem(const std::string &path)
 {
@@ -161,7 +150,7 @@ VolumeMesh readVtk(const std::string &path)
 {
     if (!std::ifstream(path).good())
         throw FileError(path, 0, "cannot open the file");
-    const std::string ext = lowerExtension(path);
+    const std::string ext = fileExtension(path);
     vtkSmartPointer<vtkDataSet> data;
     if (ext == ".vtu" || ext == ".vtp")
         checkVtkXmlCounts(path);
