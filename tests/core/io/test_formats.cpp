@@ -183,7 +183,9 @@ private slots:
             if (f.keeps.pyramidsPrisms)
                 QVERIFY2(f.keeps.tetrahedra, f.extension);
         }
-        QCOMPARE(int(seen.size()), 12);
+        for (const char *ext : {".ml", ".ts", ".gm", ".so", ".msh", ".vtu", ".vtk", ".vtp", ".obj",
+                                ".off", ".stl", ".ply"})
+            QVERIFY2(seen.count(ext), ext);
     }
 
     // The entry points answer from the table, row by row.
