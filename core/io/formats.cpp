@@ -156,6 +156,11 @@ std::string fileExtension(const std::string &path)
     return ext;
 }
 
+std::string fileStem(const std::string &path)
+{
+    return std::filesystem::path(path).stem().string();
+}
+
 const FileFormat *findFormat(const std::string &path)
 {
     const std::string ext = fileExtension(path);

@@ -74,6 +74,10 @@ const std::vector<FileFormat> &fileFormats();
 // as std::filesystem::path::extension(): "a/b.tar.GZ" → ".gz", "a/.ml" and "a.d/b" → "".
 std::string fileExtension(const std::string &path);
 
+// The file name without folders and its last extension, as std::filesystem::path::stem():
+// "a/b.tar.gz" → "b.tar", "a/.ml" → ".ml"; what readers name an unnamed mesh or model after.
+std::string fileStem(const std::string &path);
+
 // The row of the path's extension (case-insensitive), or nullptr.
 const FileFormat *findFormat(const std::string &path);
 

@@ -16,14 +16,6 @@ namespace {
 
 const char *const kNoName = "No_name";
 
-std::string fileStem(const std::string &path)
-{
-    const std::size_t slash = path.find_last_of('/');
-    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    const std::size_t dot = base.find_last_of('.');
-    return dot == std::string::npos || dot == 0 ? base : base.substr(0, dot);
-}
-
 std::vector<RegionSide> sides(const std::vector<GmSignedId> &ids)
 {
     std::vector<RegionSide> out;

@@ -36,14 +36,6 @@ namespace stratamesh {
 
 namespace {
 
-std::string stem(const std::string &path)
-{
-    const std::size_t slash = path.find_last_of('/');
-    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    const std::size_t dot = base.find_last_of('.');
-    return dot == std::string::npos ? base : base.substr(0, dot);
-}
-
 // Names written by our writer (bytes, each name ended by '\n'), or a VTK string array.
 std::vector<std::string> stringsOf(vtkFieldData *fd, const char *name)
 {
@@ -168,7 +160,7 @@ VolumeMesh readVtk(const std::string &path)
     VolumeMesh mesh;
     vtkFieldData *fd = data->GetFieldData();
     const std::vector<std::string> meshName = stringsOf(fd, vtkarrays::meshName);
-    mesh.name = meshName.empty() ? stem(path) : meshName.front();
+    mesh.name = meshName.empty() ? fileStem(path) : meshName.front();
     if (vtkDataArray *depth = fd ? fd->GetArray(vtkarrays::zPositiveDepth) : nullptr)
         mesh.zPositiveDepth = depth->GetNumberOfTuples() > 0 && depth->GetComponent(0, 0) != 0;
     mesh.points.resize(static_cast<std::size_t>(data->GetNumberOfPoints()));
@@ -256,7 +248,7 @@ VolumeMesh readVtk(const std::string &path)
         throw FileError(path, 0, "no triangle and no volume cell in the file (empty model)");
     if (quality)
         mesh.qualityName = qualityName.front();
-    const std::string fallback = stem(path);
+    const std::string fallback = fileStem(path);
     std::vector<std::string> regions = stringsOf(fd, vtkarrays::regionNames);
     if (!regionIds && regions.empty() && !mesh.cells.empty())
         regions = {fallback};

@@ -152,6 +152,10 @@ private slots:
         QCOMPARE(fileExtension("a/.ml"), std::string()); // a hidden file, not an extension
         QCOMPARE(fileExtension("noext"), std::string());
         QCOMPARE(fileExtension(""), std::string());
+        QCOMPARE(fileStem("a/b.tar.gz"), std::string("b.tar"));
+        QCOMPARE(fileStem("dir.d/model"), std::string("model"));
+        QCOMPARE(fileStem("a/.ml"), std::string(".ml")); // never an empty name
+        QCOMPARE(fileStem("modelA1.ML"), std::string("modelA1"));
         QVERIFY(findFormat("x/Y.MSH") != nullptr);
         QCOMPARE(std::string(findFormat("x/Y.MSH")->extension), std::string(".msh"));
         QVERIFY(findFormat("y.xyz") == nullptr);
