@@ -1,5 +1,7 @@
 #include "model/bounding_box.h"
 
+#include <limits>
+
 namespace stratamesh {
 
 double boundingBoxDiagonal(const std::vector<Vec3> &points)
@@ -12,6 +14,20 @@ double boundingBoxDiagonal(const std::vector<Vec3> &points)
         hi = hi.cwiseMax(p);
     }
     return (hi - lo).norm();
+}
+
+double boundingBoxDiagonal(const Model &model)
+{
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
+    Vec3 hi = -lo;
+    bool any = false;
+    for (const Surface &s : model.surfaces)
+        for (const Vec3 &v : s.vertices) {
+            lo = lo.cwiseMin(v);
+            hi = hi.cwiseMax(v);
+            any = true;
+        }
+    return any ? (hi - lo).norm() : 0.0;
 }
 
 } // namespace stratamesh

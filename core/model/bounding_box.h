@@ -10,5 +10,7 @@ namespace stratamesh {
 
 // 0 for no point.
 double boundingBoxDiagonal(const std::vector<Vec3> &points);
+// Over the vertices of every surface: needs no topology.
+double boundingBoxDiagonal(const Model &model);
 
 } // namespace stratamesh
