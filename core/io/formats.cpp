@@ -96,7 +96,7 @@ Model readAsModel(const std::string &path)
 constexpr FormatKeeps kGocadModel3d{true, true, true, true, true, false, false, true};
 constexpr FormatKeeps kGocadTSurf{true, true, true, false, true, false, false, true};
 constexpr FormatKeeps kRingMesh{true, true, true, true, true, true, true, true};
-constexpr FormatKeeps kTSolid{true, true, true, true, true, true, false, true};
+constexpr FormatKeeps kTSolid{true, true, true, true, false, true, false, true};
 constexpr FormatKeeps kGmsh{true, true, false, true, true, true, true, true};
 constexpr FormatKeeps kVtkCells{true, true, true, true, true, true, true, true};
 constexpr FormatKeeps kVtkPolyData{true, true, true, true, true, false, false, true};

@@ -338,6 +338,47 @@ private slots:
                  f.writeMesh != nullptr && f.keeps.tetrahedra);
     }
 
+    // A format that holds only volume meshes (TSolid) takes no surface model: its surface,
+    // region and line claims are measured on a tet mesh instead.
+    void cellOnlyFormatsKeepTheirMetadata()
+    {
+        VolumeMesh tets = cellsOfTypes({CellType::Tet});
+        // Only what the tets bound: the interface triangles, their line and corners.
+        tets.triangles = {{4, 5, 7}, {5, 6, 7}};
+        tets.triangleSurface = {0, 0};
+        tets.surfaces = {{"interface", "H1", FeatureType::Horizon}};
+        int rows = 0;
+        for (const FileFormat &f : fileFormats()) {
+            if (!f.needsCells)
+                continue;
+            ++rows;
+            const std::string path = pathFor("metadata", f);
+            exportVolumeMesh(tets, path);
+            const VolumeMesh back = f.readMesh(path);
+            QCOMPARE(back.countCells(CellType::Tet), tets.countCells(CellType::Tet));
+            QCOMPARE(back.surfaces.size() == tets.surfaces.size()
+                         && back.triangles.size() == tets.triangles.size(),
+                     true);
+            QCOMPARE(back.surfaces[0].name == "interface", f.keeps.surfaceNames);
+            QCOMPARE(back.surfaces[0].type == FeatureType::Horizon, f.keeps.featureTypes);
+            std::set<std::string> regions(back.regionNames.begin(), back.regionNames.end());
+            QCOMPARE(regions == std::set<std::string>{"upper"}
+                         || back.regionNames == tets.regionNames,
+                     f.keeps.regions);
+            QCOMPARE(back.lineNames == tets.lineNames && back.corners.size() == tets.corners.size()
+                         && back.edges.size() == tets.edges.size(),
+                     f.keeps.linesAndCorners);
+            std::multiset<std::string> pa, pb;
+            for (const Vec3 &p : tets.points)
+                pa.insert(text(p));
+            for (const Vec3 &p : back.points)
+                pb.insert(text(p));
+            QCOMPARE(std::includes(pa.begin(), pa.end(), pb.begin(), pb.end()),
+                     f.keeps.exactCoordinates);
+        }
+        QVERIFY(rows > 0);
+    }
+
     void dialogFilters()
     {
         const std::string filter = fileDialogFilter(FormatUse::ReadModel, "Models", "All files");
