@@ -103,34 +103,6 @@ constexpr FormatKeeps kVtkPolyData{true, true, true, true, true, false, false, t
 constexpr FormatKeeps kExactSurface{false, false, false, false, false, false, false, true};
 constexpr FormatKeeps kFloatSurface{false, false, false, false, false, false, false, false};
 
-const std::vector<FileFormat> kFormats{
-    {".ml", "Gocad Model3d", FormatHolds::Model, kGocadModel3d, readGocadFile, nullptr, writeMl,
-     nullptr, false},
-    {".ts", "Gocad TSurf", FormatHolds::Model, kGocadTSurf, readGocadFile, nullptr, writeTs,
-     nullptr, false},
-    {".gm", "RINGMesh GeoModel", FormatHolds::Model, kRingMesh, readRingMeshModel,
-     readRingMeshVolume, writeGmModel, writeGmMesh, false},
-    {".obj", "Wavefront OBJ", FormatHolds::SingleSurface, kExactSurface, readSurfaceMesh, nullptr,
-     writeSurface, nullptr, false},
-    {".off", "Object File Format", FormatHolds::SingleSurface, kExactSurface, readSurfaceMesh,
-     nullptr, writeSurface, nullptr, false},
-    {".so", "Gocad TSolid", FormatHolds::VolumeMesh, kTSolid, readAsModel<readGocadTSolid>,
-     readGocadTSolid, nullptr, writeSo, true},
-    {".msh", "Gmsh MSH", FormatHolds::VolumeMesh, kGmsh, readAsModel<readGmsh>, readGmsh, nullptr,
-     writeMsh, false},
-    {".vtu", "VTK XML unstructured grid", FormatHolds::VolumeMesh, kVtkCells, readAsModel<readVtk>,
-     readVtk, nullptr, writeVtu, false},
-    {".vtk", "VTK legacy", FormatHolds::VolumeMesh, kVtkCells, readAsModel<readVtk>, readVtk,
-     nullptr, writeLegacyVtk, false},
-    {".vtp", "VTK XML poly data", FormatHolds::VolumeMesh, kVtkPolyData, readAsModel<readVtk>,
-     readVtk, nullptr, writeVtp, false},
-    // readModel() has never read STL and PLY: readVolumeMesh() and convert do.
-    {".stl", "STL", FormatHolds::SingleSurface, kFloatSurface, nullptr, readStlOrPly, writeSurface,
-     nullptr, false},
-    {".ply", "Stanford PLY", FormatHolds::SingleSurface, kExactSurface, nullptr, readStlOrPly,
-     writeSurface, nullptr, false},
-};
-
 // The extension part of one dialog filter entry: "Gocad Model3d (*.ml)" → ".ml".
 std::string filterExtension(const std::string &entry)
 {
@@ -145,7 +117,35 @@ std::string filterExtension(const std::string &entry)
 
 const std::vector<FileFormat> &fileFormats()
 {
-    return kFormats;
+    // Built on first use: a reader called from another file's static initialiser still finds it.
+    static const std::vector<FileFormat> formats{
+        {".ml", "Gocad Model3d", FormatHolds::Model, kGocadModel3d, readGocadFile, nullptr, writeMl,
+         nullptr, false},
+        {".ts", "Gocad TSurf", FormatHolds::Model, kGocadTSurf, readGocadFile, nullptr, writeTs,
+         nullptr, false},
+        {".gm", "RINGMesh GeoModel", FormatHolds::Model, kRingMesh, readRingMeshModel,
+         readRingMeshVolume, writeGmModel, writeGmMesh, false},
+        {".obj", "Wavefront OBJ", FormatHolds::SingleSurface, kExactSurface, readSurfaceMesh,
+         nullptr, writeSurface, nullptr, false},
+        {".off", "Object File Format", FormatHolds::SingleSurface, kExactSurface, readSurfaceMesh,
+         nullptr, writeSurface, nullptr, false},
+        {".so", "Gocad TSolid", FormatHolds::VolumeMesh, kTSolid, readAsModel<readGocadTSolid>,
+         readGocadTSolid, nullptr, writeSo, true},
+        {".msh", "Gmsh MSH", FormatHolds::VolumeMesh, kGmsh, readAsModel<readGmsh>, readGmsh,
+         nullptr, writeMsh, false},
+        {".vtu", "VTK XML unstructured grid", FormatHolds::VolumeMesh, kVtkCells,
+         readAsModel<readVtk>, readVtk, nullptr, writeVtu, false},
+        {".vtk", "VTK legacy", FormatHolds::VolumeMesh, kVtkCells, readAsModel<readVtk>, readVtk,
+         nullptr, writeLegacyVtk, false},
+        {".vtp", "VTK XML poly data", FormatHolds::VolumeMesh, kVtkPolyData, readAsModel<readVtk>,
+         readVtk, nullptr, writeVtp, false},
+        // readModel() has never read STL and PLY: readVolumeMesh() and convert do.
+        {".stl", "STL", FormatHolds::SingleSurface, kFloatSurface, nullptr, readStlOrPly,
+         writeSurface, nullptr, false},
+        {".ply", "Stanford PLY", FormatHolds::SingleSurface, kExactSurface, nullptr, readStlOrPly,
+         writeSurface, nullptr, false},
+    };
+    return formats;
 }
 
 std::string fileExtension(const std::string &path)
@@ -164,7 +164,7 @@ std::string fileStem(const std::string &path)
 const FileFormat *findFormat(const std::string &path)
 {
     const std::string ext = fileExtension(path);
-    for (const FileFormat &f : kFormats)
+    for (const FileFormat &f : fileFormats())
         if (ext == f.extension)
             return &f;
     return nullptr;
@@ -190,7 +190,7 @@ bool formatServes(const FileFormat &f, FormatUse use)
 std::vector<const FileFormat *> formatsFor(FormatUse use)
 {
     std::vector<const FileFormat *> out;
-    for (const FileFormat &f : kFormats)
+    for (const FileFormat &f : fileFormats())
         if (formatServes(f, use))
             out.push_back(&f);
     return out;
