@@ -650,10 +650,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Write the remeshed model as a Gocad Model3d (.ml) or TSurf (.ts) file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Simplifications</source>
         <translation type="unfinished"></translation>
     </message>
@@ -709,18 +705,6 @@
     </message>
     <message>
         <source>Output: %1 sites, %2 triangles</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Gocad Model3d (*.ml)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Gocad TSurf (*.ts)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>RINGMesh GeoModel (*.gm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -903,6 +887,10 @@ angle (°)</source>
             <numerusform>Remeshed, NOT valid: %n problems — see Messages</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Write the remeshed model as a Gocad, RINGMesh, Gmsh or VTK file</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>
@@ -950,15 +938,19 @@ angle (°)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Structural models (*.ml *.ts *.gm *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;RINGMesh GeoModel (*.gm);;Wavefront OBJ (*.obj);;Object File Format (*.off);;All files (*)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Loading stopped without a result</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Sample model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Structural models</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All files</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

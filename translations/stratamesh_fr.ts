@@ -650,10 +650,6 @@
         <translation>Arrêter le remaillage ; le modèle d&apos;entrée reste tel quel</translation>
     </message>
     <message>
-        <source>Write the remeshed model as a Gocad Model3d (.ml) or TSurf (.ts) file</source>
-        <translation>Écrire le modèle remaillé dans un fichier Gocad Model3d (.ml) ou TSurf (.ts)</translation>
-    </message>
-    <message>
         <source>Simplifications</source>
         <translation>Simplifications</translation>
     </message>
@@ -710,18 +706,6 @@
     <message>
         <source>Output: %1 sites, %2 triangles</source>
         <translation>Sortie : %1 sites, %2 triangles</translation>
-    </message>
-    <message>
-        <source>Gocad Model3d (*.ml)</source>
-        <translation>Gocad Model3d (*.ml)</translation>
-    </message>
-    <message>
-        <source>Gocad TSurf (*.ts)</source>
-        <translation>Gocad TSurf (*.ts)</translation>
-    </message>
-    <message>
-        <source>RINGMesh GeoModel (*.gm)</source>
-        <translation>RINGMesh GeoModel (*.gm)</translation>
     </message>
     <message>
         <source>Save Remeshed Model</source>
@@ -905,6 +889,10 @@ min. (°)</translation>
             <numerusform>Remaillé, NON valide : %n problèmes — voir Messages</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Write the remeshed model as a Gocad, RINGMesh, Gmsh or VTK file</source>
+        <translation>Écrire le modèle remaillé dans un fichier Gocad, RINGMesh, Gmsh ou VTK</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>
@@ -952,16 +940,20 @@ min. (°)</translation>
         <translation>Vérification de la validité</translation>
     </message>
     <message>
-        <source>Structural models (*.ml *.ts *.gm *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;RINGMesh GeoModel (*.gm);;Wavefront OBJ (*.obj);;Object File Format (*.off);;All files (*)</source>
-        <translation>Modèles structuraux (*.ml *.ts *.gm *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;RINGMesh GeoModel (*.gm);;Wavefront OBJ (*.obj);;Object File Format (*.off);;Tous les fichiers (*)</translation>
-    </message>
-    <message>
         <source>Loading stopped without a result</source>
         <translation>Le chargement s&apos;est arrêté sans résultat</translation>
     </message>
     <message>
         <source>Sample model</source>
         <translation>Modèle d&apos;exemple</translation>
+    </message>
+    <message>
+        <source>Structural models</source>
+        <translation>Modèles structuraux</translation>
+    </message>
+    <message>
+        <source>All files</source>
+        <translation>Tous les fichiers</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 // recovered first so that lines, corners and Gocad BSTONE/BORDER are written too.
 #include "cli_output.h"
 #include "command_args.h"
+#include "io/formats.h"
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
@@ -17,11 +18,11 @@ namespace stratamesh::cli {
 
 namespace {
 
+// A cell-less mesh goes to these as a model with its topology recovered (lines, corners, BSTONE).
 bool isModelFormat(const QString &path)
 {
-    const QString ext = QFileInfo(path).suffix().toLower();
-    return ext == "ml" || ext == "ts" || ext == "gm" || ext == "obj" || ext == "off" || ext == "stl"
-           || ext == "ply";
+    const FileFormat *format = findFormat(path.toStdString());
+    return format != nullptr && format->holds != FormatHolds::VolumeMesh;
 }
 
 } // namespace
@@ -46,9 +47,8 @@ int runConvert(CommandArgs &args)
     args.finish();
     if (!isExportFile(output.toStdString()))
         throw UsageError(
-            QStringLiteral("cannot tell the output format of '%1' (use .ml, .ts, .gm, .so, .vtu, "
-                           ".vtk, .vtp, .msh, .obj, .off, .stl or .ply)")
-                .arg(output));
+            QStringLiteral("cannot tell the output format of '%1' (use %2)")
+                .arg(output, QString::fromStdString(extensionList(FormatUse::Export))));
 
     ExportReport report;
     QJsonObject counts;

@@ -10,7 +10,7 @@
 #include "io/model_reader.h"
 #include "model/topology.h"
 #include "params/param_tables.h"
-#include "voronoi/restricted_delaunay.h"
+#include "quality/restricted_delaunay_quality.h"
 #include "voronoi/restricted_voronoi.h"
 
 #include <QElapsedTimer>

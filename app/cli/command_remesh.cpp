@@ -7,6 +7,7 @@
 #include "cli_output.h"
 #include "command_args.h"
 #include "common/error.h"
+#include "io/formats.h"
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
 #include "json_report.h"
@@ -82,16 +83,12 @@ int runRemesh(CommandArgs &args)
     if ((params.sites > 0) == (params.edgeLength > 0.0))
         throw UsageError(QStringLiteral("give exactly one of --sites N and --edge-length L"));
     if (!output)
-        throw UsageError(QStringLiteral("missing -o OUT.ml (or .ts, .gm, .msh, .vtu, .vtk, .vtp)"));
-    const QString ext = QFileInfo(*output).suffix().toLower();
-    static const QStringList modelFormats{
-        QStringLiteral("ml"),  QStringLiteral("ts"),  QStringLiteral("gm"), QStringLiteral("msh"),
-        QStringLiteral("vtu"), QStringLiteral("vtk"), QStringLiteral("vtp")};
-    if (!modelFormats.contains(ext))
+        throw UsageError(QStringLiteral("missing -o OUT (%1)")
+                             .arg(QString::fromStdString(extensionList(FormatUse::WriteModel))));
+    if (!isFileFor(output->toStdString(), FormatUse::WriteModel))
         throw UsageError(
-            QStringLiteral(
-                "the output must be a model file (.ml, .ts, .gm, .msh, .vtu, .vtk, .vtp), not '%1'")
-                .arg(*output));
+            QStringLiteral("the output must be a model file (%1), not '%2'")
+                .arg(QString::fromStdString(extensionList(FormatUse::WriteModel)), *output));
     // Refused before the run, not after it: overwriting the input, or a report nobody can write.
     if (QFileInfo(*output).absoluteFilePath() == QFileInfo(path).absoluteFilePath()
         || (QFileInfo::exists(*output)

@@ -7,6 +7,7 @@
 #include "cli_output.h"
 #include "command_args.h"
 #include "common/error.h"
+#include "io/formats.h"
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
 #include "json_report.h"
@@ -79,13 +80,10 @@ int runTetmesh(CommandArgs &args)
     const std::optional<QString> polyPath = args.option(QStringLiteral("--poly"));
     const QString path = args.positional(QStringLiteral("MODEL"));
     args.finish();
-    if (output) {
-        const QString ext = QFileInfo(*output).suffix().toLower();
-        if (ext != "vtu" && ext != "vtk" && ext != "msh" && ext != "so")
-            throw UsageError(
-                QStringLiteral("the output must be a .vtu, .vtk, .msh or .so file, not '%1'")
-                    .arg(*output));
-    }
+    if (output && !isFileFor(output->toStdString(), FormatUse::WriteVolumeMesh))
+        throw UsageError(
+            QStringLiteral("the output must be a %1 file, not '%2'")
+                .arg(QString::fromStdString(extensionList(FormatUse::WriteVolumeMesh)), *output));
 
     QElapsedTimer clock;
     clock.start();

@@ -19,8 +19,8 @@
 #include "vtk_view_widget.h"
 
 #include "common/error.h"
-#include "io/gocad_writer.h"
-#include "io/ringmesh_writer.h"
+#include "io/formats.h"
+#include "io/mesh_writer.h"
 
 #include <QAction>
 #include <QApplication>
@@ -303,7 +303,7 @@ void MainWindow::retranslate()
     m_cancelRemesh->setStatusTip(tr("Stop the remeshing; the input model is left as it is"));
     m_saveRemeshed->setText(tr("Save Remeshed Model &As…"));
     m_saveRemeshed->setStatusTip(
-        tr("Write the remeshed model as a Gocad Model3d (.ml) or TSurf (.ts) file"));
+        tr("Write the remeshed model as a Gocad, RINGMesh, Gmsh or VTK file"));
     m_ledgerDock->setWindowTitle(tr("Simplifications"));
     m_ledgerDock->toggleViewAction()->setText(tr("&Simplifications"));
     m_comparisonDock->setWindowTitle(tr("Input vs Output"));
@@ -712,19 +712,13 @@ void MainWindow::chooseRemeshedFile()
     QSettings settings;
     const QString dir = settings.value(QStringLiteral("lastDirectory")).toString();
     QString selected;
-    const QString ml = tr("Gocad Model3d (*.ml)"), ts = tr("Gocad TSurf (*.ts)"),
-                  gm = tr("RINGMesh GeoModel (*.gm)");
     QString path = QFileDialog::getSaveFileName(
         this, tr("Save Remeshed Model"), dir,
-        ml + QStringLiteral(";;") + ts + QStringLiteral(";;") + gm, &selected);
+        QString::fromStdString(fileDialogFilter(FormatUse::WriteModel, {}, {})), &selected);
     if (path.isEmpty())
         return;
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix != QLatin1String("ml") && suffix != QLatin1String("ts")
-        && suffix != QLatin1String("gm"))
-        path += selected == ts   ? QStringLiteral(".ts")
-                : selected == gm ? QStringLiteral(".gm")
-                                 : QStringLiteral(".ml");
+    path = QString::fromStdString(
+        withFormatExtension(path.toStdString(), FormatUse::WriteModel, selected.toStdString()));
     settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
     saveRemeshedModel(path);
 }
@@ -737,13 +731,7 @@ bool MainWindow::saveRemeshedModel(const QString &path)
     message.file = path;
     try {
         // Every writer goes through a temporary file and a rename.
-        const QString suffix = QFileInfo(path).suffix().toLower();
-        if (suffix == QLatin1String("ml"))
-            writeGocadModel3d(*m_outcome->output, path.toStdString());
-        else if (suffix == QLatin1String("gm"))
-            writeRingMeshModel(*m_outcome->output, path.toStdString());
-        else
-            writeGocadTSurf(*m_outcome->output, path.toStdString());
+        exportModel(*m_outcome->output, path.toStdString());
         message.text = tr("Remeshed model saved");
         m_messages->addMessage(message);
         m_stageLabel->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));

@@ -102,7 +102,7 @@ public slots:
     bool startRemesh(const RemeshParams &params);
     void cancelRemesh();
     void chooseRemeshedFile();
-    // Writes the remeshed model (.ml: Gocad Model3d, else TSurf); errors go to the messages.
+    // Writes the remeshed model (exportModel: format from the extension); errors go to messages.
     bool saveRemeshedModel(const QString &path);
     // Marks a ledger record in the output view and centres the camera on it (-1: no mark).
     void showLedgerRecord(int recordIndex);

@@ -5,6 +5,7 @@
 
 #include "common/error.h"
 #include "common/progress.h"
+#include "io/formats.h"
 #include "io/model_reader.h"
 #include "io/ringmesh_reader.h"
 #include "io/ringmesh_topology.h"
@@ -93,10 +94,9 @@ OpenModelController::~OpenModelController()
 
 QString OpenModelController::fileFilter()
 {
-    return tr(
-        "Structural models (*.ml *.ts *.gm *.obj *.off);;Gocad Model3d (*.ml);;Gocad TSurf (*.ts);;"
-        "RINGMesh GeoModel (*.gm);;Wavefront OBJ (*.obj);;Object File Format (*.off);;All files "
-        "(*)");
+    return QString::fromStdString(fileDialogFilter(FormatUse::ReadModel,
+                                                   tr("Structural models").toStdString(),
+                                                   tr("All files").toStdString()));
 }
 
 bool OpenModelController::openFile(const QString &path)

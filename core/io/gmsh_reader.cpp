@@ -1,6 +1,7 @@
 #include "io/gmsh_reader.h"
 
 #include "io/coordinate_bound.h"
+#include "io/formats.h"
 #include "io/gmsh_element_types.h"
 #include "io/text_cursor.h"
 
@@ -38,14 +39,6 @@ int typeDimension(int type)
     default:
         return 3;
     }
-}
-
-std::string stem(const std::string &path)
-{
-    const std::size_t slash = path.find_last_of('/');
-    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    const std::size_t dot = base.find_last_of('.');
-    return dot == std::string::npos ? base : base.substr(0, dot);
 }
 
 class GmshParser {
@@ -390,7 +383,7 @@ private:
     VolumeMesh build()
     {
         VolumeMesh mesh;
-        mesh.name = stem(c.path());
+        mesh.name = fileStem(c.path());
         mesh.points = std::move(points);
         const Grouping lines = grouping(1), surfaces = grouping(2), regions = grouping(3);
         mesh.lineNames = names(lines, 1, "line");

@@ -2,36 +2,14 @@
 
 #include "common/error.h"
 #include "io/gocad_face_matching.h"
+#include "io/surface_names.h"
 
 #include <cstdlib>
 #include <unordered_map>
-#include <unordered_set>
 
 namespace stratamesh {
 
 namespace {
-
-// Names must be unique in the model: a clash gets "_2", "_3", ... appended.
-void makeSurfaceNamesUnique(Model &model)
-{
-    std::unordered_set<std::string> used;
-    for (Surface &s : model.surfaces) {
-        if (used.insert(s.name).second)
-            continue;
-        for (int j = 2;; ++j) {
-            std::string candidate = s.name + "_" + std::to_string(j);
-            if (used.insert(candidate).second) {
-                s.name = std::move(candidate);
-                break;
-            }
-        }
-    }
-}
-
-std::string patchName(const std::string &object, std::size_t patchCount, std::size_t k)
-{
-    return patchCount == 1 ? object : object + "_" + std::to_string(k + 1);
-}
 
 class Model3dBuilder {
 public:

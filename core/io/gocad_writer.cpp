@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "io/atomic_file.h"
 #include "io/gocad_writer_common.h"
+#include "io/surface_names.h"
 
 #include <map>
 #include <set>
@@ -17,11 +18,6 @@ struct TSurfGroup {
     std::string name;
     std::vector<int> surfaces;
 };
-
-std::string patchName(const std::string &object, std::size_t count, std::size_t k)
-{
-    return count == 1 ? object : object + "_" + std::to_string(k + 1);
-}
 
 // The word written as a Gocad type; Unknown must not read back as a horizon ("none" would).
 std::string typeWord(FeatureType type)

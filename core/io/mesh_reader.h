@@ -1,7 +1,7 @@
-// Reading the exchange meshes by extension: Gocad TSolid (.so), Gmsh (.msh), VTK (.vtu, .vtk,
-// .vtp), and single surfaces in STL or PLY. Surface-only files give a mesh without cells;
-// readMeshAsModel() turns any of them into a surface model (readModel() calls it for the
-// isVolumeMeshFile() extensions).
+// Reading the exchange meshes by extension, through the table of formats.h: Gocad TSolid (.so),
+// Gmsh (.msh), VTK (.vtu, .vtk, .vtp), RINGMesh (.gm: its region meshes), and single surfaces in
+// STL or PLY. Surface-only files give a mesh without cells; readMeshAsModel() turns any of them
+// into a surface model (as readModel() does for the formats that hold volume meshes).
 #pragma once
 
 #include "mesh/volume_mesh.h"
@@ -11,7 +11,8 @@
 
 namespace stratamesh {
 
-// True for .so, .msh, .vtu, .vtk, .vtp (case-insensitive): the formats that may hold cells.
+// True for .so, .msh, .vtu, .vtk, .vtp (case-insensitive): the formats that may hold cells
+// (FormatHolds::VolumeMesh).
 bool isVolumeMeshFile(const std::string &path);
 // True for every extension readVolumeMesh() knows: the above plus .stl, .ply and .gm (RINGMesh:
 // its surfaces, and the tets of its meshed regions).

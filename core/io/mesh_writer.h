@@ -1,4 +1,4 @@
-// Exporting a surface model or a volume mesh, the format chosen by the extension:
+// Exporting a surface model or a volume mesh, the format chosen by the extension (formats.h):
 //   .ml  Gocad Model3d      .ts  Gocad TSurf        .so  Gocad TSolid (tets only)
 //   .gm  RINGMesh GeoModel version 2 (surfaces, and the cells of a volume mesh per region)
 //   .vtu VTK XML            .vtk VTK legacy 4.2     .vtp VTK poly data (surfaces only)
@@ -7,25 +7,15 @@
 // file or a single surface goes through modelFromMesh() (its cells are not part of those formats).
 #pragma once
 
-#include "io/gmsh_writer.h"
+#include "io/formats.h"
 #include "mesh/volume_mesh.h"
 #include "model/model.h"
 
-#include <cstddef>
 #include <string>
 
 namespace stratamesh {
 
-struct ExportOptions {
-    GmshWriteOptions gmsh;
-    int surface = -1; // .ts and single-surface formats: one surface (index), or all / the only one
-};
-
-struct ExportReport {
-    std::string format;              // "Gmsh MSH 4.1", "Gocad Model3d", ...
-    std::size_t untaggedSkipped = 0; // Gmsh elements without a group left out (see saveAll)
-    std::size_t cellsDropped = 0;    // volume cells a surface format cannot hold
-};
+// ExportOptions and ExportReport are declared in formats.h, whose table these dispatch through.
 
 // True when the extension is one of the above.
 bool isExportFile(const std::string &path);

@@ -1,49 +1,20 @@
 #include "io/ringmesh_reader.h"
 
 #include "common/error.h"
+#include "io/formats.h"
 #include "io/geogram_mesh.h"
 #include "io/ringmesh_archive.h"
+#include "io/surface_names.h"
 #include "mesh/model_conversion.h"
 
 #include <algorithm>
-#include <cctype>
 #include <unordered_map>
-#include <unordered_set>
 
 namespace stratamesh {
 
 namespace {
 
 const char *const kNoName = "No_name";
-
-std::string fileStem(const std::string &path)
-{
-    const std::size_t slash = path.find_last_of('/');
-    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    const std::size_t dot = base.find_last_of('.');
-    return dot == std::string::npos || dot == 0 ? base : base.substr(0, dot);
-}
-
-std::string patchName(const std::string &object, std::size_t patchCount, std::size_t k)
-{
-    return patchCount == 1 ? object : object + "_" + std::to_string(k + 1);
-}
-
-void makeSurfaceNamesUnique(Model &model)
-{
-    std::unordered_set<std::string> used;
-    for (Surface &s : model.surfaces) {
-        if (used.insert(s.name).second)
-            continue;
-        for (int j = 2;; ++j) {
-            std::string candidate = s.name + "_" + std::to_string(j);
-            if (used.insert(candidate).second) {
-                s.name = std::move(candidate);
-                break;
-            }
-        }
-    }
-}
 
 std::vector<RegionSide> sides(const std::vector<GmSignedId> &ids)
 {
@@ -131,12 +102,7 @@ Model buildModel(const GmArchive &gm)
 
 bool isRingMeshFile(const std::string &path)
 {
-    if (path.size() < 3)
-        return false;
-    std::string ext = path.substr(path.size() - 3);
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return ext == ".gm";
+    return fileExtension(path) == ".gm";
 }
 
 bool hasRingMeshRegionMeshes(const std::string &path)

@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "io/coordinate_bound.h"
+#include "io/formats.h"
 #include "io/text_cursor.h"
 
 #include <cstdint>
@@ -14,14 +15,6 @@
 namespace stratamesh {
 
 namespace {
-
-std::string stem(const std::string &path)
-{
-    const std::size_t slash = path.find_last_of('/');
-    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    const std::size_t dot = base.find_last_of('.');
-    return dot == std::string::npos ? base : base.substr(0, dot);
-}
 
 struct PointHash {
     std::size_t operator()(const std::array<double, 3> &p) const
@@ -55,7 +48,7 @@ private:
 VolumeMesh oneSurface(const std::string &path)
 {
     VolumeMesh m;
-    m.name = stem(path);
+    m.name = fileStem(path);
     m.surfaces.push_back({m.name, m.name, FeatureType::Unknown});
     return m;
 }

@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "io/coordinate_bound.h"
+#include "io/formats.h"
 #include "io/gocad_model_builder.h"
 #include "io/number_text.h"
 
@@ -193,14 +194,6 @@ FileScan scanOff(std::istream &in, const std::string &path)
     return scan;
 }
 
-std::string lowerExtension(const std::string &path)
-{
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
 } // namespace
 
 Model readSurfaceMesh(const std::string &path)
@@ -208,7 +201,7 @@ Model readSurfaceMesh(const std::string &path)
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw FileError(path, 0, "cannot open the file (missing or not a regular file)");
-    const std::string ext = lowerExtension(path);
+    const std::string ext = fileExtension(path);
     if (ext != ".obj" && ext != ".off")
         throw FileError(path, 0, "not an OBJ or OFF file");
 

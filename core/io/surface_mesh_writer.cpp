@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "io/atomic_file.h"
+#include "io/formats.h"
 #include "io/number_text.h"
 
 // GCC 12 reports a false -Wmaybe-uninitialized inside OpenMesh's property containers while
@@ -23,18 +24,6 @@ struct DoubleTraits : public OpenMesh::DefaultTraits {
     using Normal = OpenMesh::Vec3d;
 };
 using DoubleTriMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
-
-std::string lowerExtension(const std::string &path)
-{
-    const std::size_t slash = path.find_last_of('/');
-    const std::size_t dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-        return {};
-    std::string ext = path.substr(dot);
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 // Binary STL through OpenMesh (32-bit floats by the format's definition). OpenMesh stores
 // manifold meshes only: a non-manifold surface is refused rather than silently trimmed.
@@ -61,21 +50,21 @@ void writeStl(const Surface &s, const std::string &path)
 
 bool isSurfaceMeshFile(const std::string &path)
 {
-    const std::string ext = lowerExtension(path);
-    return ext == ".obj" || ext == ".off" || ext == ".stl" || ext == ".ply";
+    const FileFormat *format = findFormat(path);
+    return format != nullptr && format->holds == FormatHolds::SingleSurface;
 }
 
 void writeSurfaceMesh(const Model &model, const std::string &path, int surface)
 {
     if (!isSurfaceMeshFile(path))
         throw FileError(path, 0,
-                        "unknown surface mesh extension '" + lowerExtension(path)
+                        "unknown surface mesh extension '" + fileExtension(path)
                             + "' (use .obj, .off, .stl or .ply)");
     if (surface < 0) {
         if (model.surfaces.size() != 1)
-            throw InputError("an " + lowerExtension(path)
-                             + " file holds one surface and the model '" + model.name + "' has "
-                             + std::to_string(model.surfaces.size()) + ": choose one");
+            throw InputError("an " + fileExtension(path) + " file holds one surface and the model '"
+                             + model.name + "' has " + std::to_string(model.surfaces.size())
+                             + ": choose one");
         surface = 0;
     }
     if (surface >= static_cast<int>(model.surfaces.size()))
@@ -93,7 +82,7 @@ void writeSurfaceMesh(const Model &model, const std::string &path, int surface)
                 throw InputError("surface '" + s.name + "': triangle " + std::to_string(t)
                                  + " uses vertex " + std::to_string(v) + " of "
                                  + std::to_string(s.vertices.size()));
-    const std::string ext = lowerExtension(path);
+    const std::string ext = fileExtension(path);
     if (ext == ".stl") {
         writeStl(s, path);
         return;

@@ -1,6 +1,7 @@
 #include "io/tsolid_reader.h"
 
 #include "io/coordinate_bound.h"
+#include "io/formats.h"
 #include "io/number_text.h"
 #include "io/text_cursor.h"
 
@@ -52,14 +53,6 @@ std::string trim(std::string_view s)
         return {};
     const std::size_t b = s.find_last_not_of(" \t");
     return std::string(s.substr(a, b - a + 1));
-}
-
-std::string stem(const std::string &path)
-{
-    const std::size_t slash = path.find_last_of('/');
-    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    const std::size_t dot = base.find_last_of('.');
-    return dot == std::string::npos ? base : base.substr(0, dot);
 }
 
 class TSolidParser {
@@ -296,7 +289,7 @@ private:
     VolumeMesh finish()
     {
         if (mesh.name.empty())
-            mesh.name = stem(c.path());
+            mesh.name = fileStem(c.path());
         std::map<std::string, int> perFeature, seen;
         for (const std::string &f : faceFeatures)
             ++perFeature[f];

@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "io/coordinate_bound.h"
+#include "io/formats.h"
 #include "io/group_index.h"
 #include "io/vtk_common.h"
 #include "io/vtk_legacy_counts.h"
@@ -34,26 +35,6 @@
 namespace stratamesh {
 
 namespace {
-
-std::string lowerExtension(const std::string &path)
-{
-    const std::size_t slash = path.find_last_of('/');
-    const std::size_t dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-        return {};
-    std::string ext = path.substr(dot);
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
-std::string stem(const std::string &path)
-{
-    const std::size_t slash = path.find_last_of('/');
-    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    const std::size_t dot = base.find_last_of('.');
-    return dot == std::string::npos ? base : base.substr(0, dot);
-}
 
 // Names written by our writer (bytes, each name ended by '\n'), or a VTK string array.
 std::vector<std::string> stringsOf(vtkFieldData *fd, const char *name)
@@ -161,7 +142,7 @@ VolumeMesh readVtk(const std::string &path)
 {
     if (!std::ifstream(path).good())
         throw FileError(path, 0, "cannot open the file");
-    const std::string ext = lowerExtension(path);
+    const std::string ext = fileExtension(path);
     vtkSmartPointer<vtkDataSet> data;
     if (ext == ".vtu" || ext == ".vtp")
         checkVtkXmlCounts(path);
@@ -179,7 +160,7 @@ VolumeMesh readVtk(const std::string &path)
     VolumeMesh mesh;
     vtkFieldData *fd = data->GetFieldData();
     const std::vector<std::string> meshName = stringsOf(fd, vtkarrays::meshName);
-    mesh.name = meshName.empty() ? stem(path) : meshName.front();
+    mesh.name = meshName.empty() ? fileStem(path) : meshName.front();
     if (vtkDataArray *depth = fd ? fd->GetArray(vtkarrays::zPositiveDepth) : nullptr)
         mesh.zPositiveDepth = depth->GetNumberOfTuples() > 0 && depth->GetComponent(0, 0) != 0;
     mesh.points.resize(static_cast<std::size_t>(data->GetNumberOfPoints()));
@@ -267,7 +248,7 @@ VolumeMesh readVtk(const std::string &path)
         throw FileError(path, 0, "no triangle and no volume cell in the file (empty model)");
     if (quality)
         mesh.qualityName = qualityName.front();
-    const std::string fallback = stem(path);
+    const std::string fallback = fileStem(path);
     std::vector<std::string> regions = stringsOf(fd, vtkarrays::regionNames);
     if (!regionIds && regions.empty() && !mesh.cells.empty())
         regions = {fallback};

@@ -2,6 +2,7 @@
 // diagonal. TetGen 1.5 merges such points before meshing ("Point i is replaced by point j",
 // tolerance -T, 1e-8 of the diagonal by default), which turns the triangles around them into
 // duplicated or intersecting facets: a model our exact checks accept would still abort TetGen.
+#include "model/bounding_box.h"
 #include "model/validity_checks.h"
 
 #include <algorithm>
@@ -11,18 +12,6 @@
 namespace stratamesh::validity_detail {
 
 namespace {
-
-double bboxDiagonal(const std::vector<Vec3> &points)
-{
-    if (points.empty())
-        return 0.0;
-    Vec3 lo = points.front(), hi = points.front();
-    for (const Vec3 &p : points) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    return (hi - lo).norm();
-}
 
 // Names of the surfaces holding each global vertex.
 std::vector<std::vector<int>> surfacesOfVertices(const Model &model)
@@ -40,7 +29,7 @@ std::vector<std::vector<int>> surfacesOfVertices(const Model &model)
 void checkCloseVertices(const CheckInput &in, ProblemSink &sink)
 {
     const Model &model = in.model;
-    const double tolerance = kCloseVertexTolerance * bboxDiagonal(model.vertices);
+    const double tolerance = kCloseVertexTolerance * boundingBoxDiagonal(model.vertices);
     if (!(tolerance > 0.0))
         return;
     // A sweep along x: with a tolerance this small, the window holds a handful of points.

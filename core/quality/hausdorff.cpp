@@ -1,6 +1,7 @@
 #include "quality/hausdorff.h"
 
 #include "common/error.h"
+#include "model/bounding_box.h"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -114,20 +115,6 @@ void maxAndMean(const std::vector<double> &d, double &maxOut, double &meanOut)
     meanOut = d.empty() ? 0.0 : sum / static_cast<double>(d.size());
 }
 
-double bboxDiagonal(const Model &m)
-{
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
-    Vec3 hi = -lo;
-    bool any = false;
-    for (const Surface &s : m.surfaces)
-        for (const Vec3 &v : s.vertices) {
-            lo = lo.cwiseMin(v);
-            hi = hi.cwiseMax(v);
-            any = true;
-        }
-    return any ? (hi - lo).norm() : 0.0;
-}
-
 } // namespace
 
 std::vector<double> distancesToModel(const Model &model, const std::vector<Vec3> &points)
@@ -149,7 +136,7 @@ HausdorffResult hausdorffDistance(const Model &a, const Model &b, const Hausdorf
     maxAndMean(parallelDistances(treeA, samplePoints(b, params.samplesPerSide)), r.bToA,
                r.meanBToA);
     r.symmetric = std::max(r.aToB, r.bToA);
-    r.bboxDiagonal = bboxDiagonal(a);
+    r.bboxDiagonal = boundingBoxDiagonal(a);
     r.symmetricPctBbox = r.bboxDiagonal > 0.0 ? 100.0 * r.symmetric / r.bboxDiagonal : 0.0;
     progress.tick(0.9, "Hausdorff distance: per vertex");
     r.vertexDistanceBToA.reserve(b.surfaces.size());

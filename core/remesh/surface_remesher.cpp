@@ -4,6 +4,7 @@
 #include "complexity/element_sizes.h"
 #include "cvt/cvt_optimizer.h"
 #include "cvt/initial_sampling.h"
+#include "model/bounding_box.h"
 #include "model/topology.h"
 #include "params/param_tables.h"
 #include "quality/mesh_statistics.h"
@@ -77,18 +78,6 @@ std::string number(double v)
     char text[32];
     std::snprintf(text, sizeof text, "%.4g", v);
     return text;
-}
-
-double bboxDiagonal(const Model &model)
-{
-    if (model.vertices.empty())
-        return 0.0;
-    Vec3 lo = model.vertices.front(), hi = lo;
-    for (const Vec3 &p : model.vertices) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    return (hi - lo).norm();
 }
 
 double modelArea(const Model &model)
@@ -219,7 +208,7 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
             "remesh: " + std::to_string(n) + " sites is outside " + std::to_string(fewest) + ".."
             + std::to_string(most) + " for this model of " + std::to_string(input.surfaces.size())
             + " surfaces (edge length at most " + number(edgeLengthForSites(area, fewest)) + ")");
-    const double diagonal = bboxDiagonal(input);
+    const double diagonal = boundingBoxDiagonal(input.vertices);
     if (params.dResolution > kMaxDResolutionFraction * diagonal)
         throw InputError(
             "remesh: d_resolution " + number(params.dResolution)

@@ -2,7 +2,8 @@
 // §1.2.3, Fig 1.5 and 1.9): one triangle (i, j, k) per restricted Voronoi vertex "triangle ∩
 // Voronoi edge (i, j, k)", one edge (i, j) per restricted Voronoi vertex "line segment ∩
 // bisector(i, j)". A diagnostic mesh over the sites: after a CVT its triangles are close to
-// equilateral. The remesher (thesis ch. 4) builds the real output from the RVD components.
+// equilateral (quality/restricted_delaunay_quality.h measures them). The remesher (thesis ch. 4)
+// builds the real output from the RVD components.
 #pragma once
 
 #include "voronoi/restricted_voronoi.h"
@@ -22,16 +23,5 @@ struct RestrictedDelaunay {
 
 RestrictedDelaunay restrictedDelaunay(const RestrictionDomain &domain,
                                       const RestrictedVoronoiDiagram &rvd);
-
-// Shape statistics of the RDT triangles (Q of Frey & Borouchaki, as in Table 4.2).
-struct RestrictedDelaunayQuality {
-    int triangles = 0;
-    double meanQuality = 0;
-    double minQuality = 0;
-    double minAngleDeg = 0;
-    double percentAngleBelow30 = 0; // triangles with an angle < 30°, in %
-};
-
-RestrictedDelaunayQuality restrictedDelaunayQuality(const RestrictedDelaunay &rdt);
 
 } // namespace stratamesh

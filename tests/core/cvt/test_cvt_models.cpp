@@ -5,8 +5,8 @@
 #include "cvt/initial_sampling.h"
 #include "io/model_reader.h"
 #include "model/topology.h"
+#include "quality/restricted_delaunay_quality.h"
 #include "support/test_data.h"
-#include "voronoi/restricted_delaunay.h"
 #include "voronoi/restricted_voronoi.h"
 
 #include <QtTest>

@@ -4,7 +4,7 @@
 #include "cvt/cvt_energy.h"
 #include "cvt/cvt_optimizer.h"
 #include "cvt/initial_sampling.h"
-#include "voronoi/restricted_delaunay.h"
+#include "quality/restricted_delaunay_quality.h"
 
 #include <QtTest>
 

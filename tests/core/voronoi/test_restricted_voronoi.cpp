@@ -1,7 +1,7 @@
 // The symbolic restricted Voronoi diagram: exact partition, consistent symbols across cells,
 // connected components on surfaces and lines (thesis Fig 1.8, 4.3, 4.4), corners.
 #include "core/voronoi/test_shapes.h"
-#include "voronoi/restricted_delaunay.h"
+#include "quality/restricted_delaunay_quality.h"
 #include "voronoi/restricted_voronoi.h"
 
 #include <QtTest>
