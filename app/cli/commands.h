@@ -24,6 +24,7 @@
     X("complexity", runComplexity, "MODEL [--h 100] [--alpha 20] [--cells 100,1000,10000] [--seed S] [--iterations 30] [--json] [--cells-vtk OUT.vtu]", "Complexity measures of thesis ch. 3 (box excluded): counts, geometric complexity, size variation, elements per Voronoi cell (Tables 3.1-3.4)") \
     X("synthetic", runSynthetic, "(layered|network|spheres|sample) [--faults 3] [--dip 30] [--horizons 3] [--throw 20] [--edge-length 40] -o OUT", "Write a model built in code: a layered box, a low-dip fault network (throws 0.3, 1.5, 0.6, 2.5 x --throw), nested spheres, the sample") \
     X("tetmesh", runTetmesh, "MODEL [--quality 1.414] [--max-volume V] [--refine-surfaces] [--no-merge] [--time-limit S] [--memory-limit MB] [-o OUT.(vtu|vtk|msh|so)] [--msh-version 4.1|2.2] [--report R.json] [--json] [--poly PLC.poly]", "TetGen comparison mesh in a helper process (thesis §5.2): tets per region, dihedral angles, slivers, outcome (ok, aborted, timed_out, out_of_memory, killed, invalid_input)") \
+    X("hybrid", runHybrid, "MODEL --sites N [--thin-ratio 1.5] [--iterations 30] [--seed S] [--max-warp 30] [--quality 1.414] [-o OUT.(vtu|msh)] [--report R.json] [--json]", "Hybrid tet/prism/pyramid mesh from one Voronoi diagram, prisms in thin layers, checked valid (thesis ch. 5)") \
     /* end of the list */
 // clang-format on
 
