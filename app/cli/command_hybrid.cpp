@@ -12,6 +12,7 @@
 #include "io/model_reader.h"
 
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QSaveFile>
 
@@ -104,6 +105,13 @@ int runHybrid(CommandArgs &args)
                                {"rejected_taken", static_cast<qint64>(r.segmentDual.rejectedTaken)},
                                {"repair_rounds", r.repairRounds},
                                {"fell_back_to_tetgen", r.fellBackToTetgen}}},
+        {"repair_log",
+         [&] {
+             QJsonArray a;
+             for (const std::string &line : r.repairLog)
+                 a.append(QString::fromStdString(line));
+             return a;
+         }()},
         {"remesh", QJsonObject{{"sites", r.remeshSites}, {"valid", r.remeshValid}}},
         {"tetgen_outcome", tetgenOutcomeName(r.tetgenOutcome)},
         {"max_quad_warp_deg", r.validity.maxQuadWarpDegrees},

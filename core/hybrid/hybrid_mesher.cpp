@@ -191,8 +191,18 @@ void fillCavities(const Model &remesh, const std::vector<Cell> &kept,
         fill.tetgen.message = e.what();
         return;
     }
-    for (int &r : fill.tetgen.mesh.cellRegion)
-        r = r >= 0 ? regionMap[r] : -1;
+    // The thesis cells' own zones are closed by the cavity surfaces too, so TetGen meshes them
+    // as subdomains of no region: those tets are dropped (the check proves nothing else was).
+    VolumeMesh &tets = fill.tetgen.mesh;
+    std::vector<Cell> cells;
+    std::vector<int> regions;
+    for (std::size_t c = 0; c < tets.cells.size(); ++c)
+        if (tets.cellRegion[c] >= 0) {
+            cells.push_back(tets.cells[c]);
+            regions.push_back(regionMap[tets.cellRegion[c]]);
+        }
+    tets.cells = std::move(cells);
+    tets.cellRegion = std::move(regions);
 }
 
 // The final mesh: remesh points, apexes, TetGen's own points; thesis cells, pyramids, tets; the
@@ -312,6 +322,7 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
         result.tetgenOutcome = fill.tetgen.outcome;
         result.repairRounds = round;
         std::set<int> remove; // thesis cells to drop before the next round
+        std::string firstProblem;
         if (fill.tetgen.outcome == TetgenOutcome::Ok) {
             t = Clock::now();
             VolumeMesh mesh = assemble(remesh, fill);
@@ -327,6 +338,7 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
                     result.message = result.validity.firstProblem;
                 break;
             }
+            firstProblem = validity.firstProblem;
             for (int c : validity.invalidCells)
                 if (c < static_cast<int>(fill.cells.size()))
                     remove.insert(fill.owner[c]);
@@ -345,6 +357,13 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
                 for (std::size_t c = 0; c < kept.size(); ++c)
                     remove.insert(static_cast<int>(c));
         }
+        result.repairLog.push_back("fill " + std::to_string(round) + ": "
+                                   + (fill.tetgen.outcome == TetgenOutcome::Ok
+                                          ? "check: " + firstProblem
+                                          : std::string("TetGen ")
+                                                + tetgenOutcomeName(fill.tetgen.outcome) + ": "
+                                                + fill.tetgen.message)
+                                   + "; " + std::to_string(remove.size()) + " cells dropped");
         result.invalidFound += remove.size();
         result.repaired += remove.size();
         std::vector<Cell> next;

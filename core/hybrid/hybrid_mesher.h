@@ -21,6 +21,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace stratamesh {
 
@@ -29,7 +30,7 @@ struct HybridParams {
     int cvtIterations = 30;
     unsigned seed = 1;
     SegmentDualParams cells;
-    double pyramidHeightRatio = 0.4; // apex height over the square root of the quad area
+    double pyramidHeightRatio = 0.15; // apex height over the square root of the quad area
     int repairRounds = 4;
     TetgenParams tetgen; // pq1.414AY by default
 };
@@ -53,7 +54,8 @@ struct HybridResult {
     int remeshSites = 0;
     bool remeshValid = false;
     TetgenOutcome tetgenOutcome = TetgenOutcome::Aborted;
-    std::string message; // why the mesh is empty or not valid
+    std::string message;                // why the mesh is empty or not valid
+    std::vector<std::string> repairLog; // per fill that was not kept: what was wrong, cells dropped
     HybridTimings timings;
 };
 
