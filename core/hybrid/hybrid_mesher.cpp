@@ -7,6 +7,7 @@
 #include "model/region_volume.h"
 #include "model/topology.h"
 #include "remesh/surface_remesher.h"
+#include "volume/region_winding.h"
 
 #include <Eigen/Geometry>
 
@@ -192,15 +193,43 @@ void fillCavities(const Model &remesh, const std::vector<Cell> &kept,
         return;
     }
     // The thesis cells' own zones are closed by the cavity surfaces too, so TetGen meshes them
-    // as subdomains of no region: those tets are dropped (the check proves nothing else was).
+    // as subdomains of no region: tets inside a kept cell are dropped; any other tet of no region
+    // is located in the remesh, whose regions are closed (the check proves the result).
     VolumeMesh &tets = fill.tetgen.mesh;
+    auto insideKeptCell = [&](const Vec3 &x) {
+        for (const Cell &cell : kept) {
+            bool inside = true;
+            for (const CellFace &f : outwardFaces(cell)) {
+                const Vec3 &a = p[f.nodes[0]];
+                const Vec3 n = f.isQuad()
+                                   ? Vec3((p[f.nodes[2]] - a).cross(p[f.nodes[3]] - p[f.nodes[1]]))
+                                   : Vec3((p[f.nodes[1]] - a).cross(p[f.nodes[2]] - a));
+                if (n.dot(x - a) >= 0.0) {
+                    inside = false;
+                    break;
+                }
+            }
+            if (inside)
+                return true;
+        }
+        return false;
+    };
     std::vector<Cell> cells;
     std::vector<int> regions;
-    for (std::size_t c = 0; c < tets.cells.size(); ++c)
-        if (tets.cellRegion[c] >= 0) {
-            cells.push_back(tets.cells[c]);
-            regions.push_back(regionMap[tets.cellRegion[c]]);
+    for (std::size_t c = 0; c < tets.cells.size(); ++c) {
+        int region = tets.cellRegion[c] >= 0 ? regionMap[tets.cellRegion[c]] : -1;
+        if (region < 0) {
+            const Cell &t = tets.cells[c];
+            const Vec3 g = (tets.points[t.nodes[0]] + tets.points[t.nodes[1]]
+                            + tets.points[t.nodes[2]] + tets.points[t.nodes[3]])
+                           / 4.0;
+            if (insideKeptCell(g))
+                continue;
+            region = locateRegion(remesh, g);
         }
+        cells.push_back(tets.cells[c]);
+        regions.push_back(region);
+    }
     tets.cells = std::move(cells);
     tets.cellRegion = std::move(regions);
 }
@@ -342,7 +371,17 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
             for (int c : validity.invalidCells)
                 if (c < static_cast<int>(fill.cells.size()))
                     remove.insert(fill.owner[c]);
-            if (remove.empty()) // only tets are wrong: drop the cells they touch
+            if (remove.empty()) { // only tets are wrong: drop the cells they touch
+                std::set<int> touched;
+                for (int c : validity.invalidCells)
+                    for (int k = 0; k < mesh.cells[c].size(); ++k)
+                        touched.insert(mesh.cells[c].nodes[k]);
+                for (std::size_t c = 0; c < fill.cells.size(); ++c)
+                    for (int k = 0; k < fill.cells[c].size(); ++k)
+                        if (touched.count(fill.cells[c].nodes[k]))
+                            remove.insert(fill.owner[c]);
+            }
+            if (remove.empty()) // a region volume alone is wrong: drop every cell
                 for (std::size_t c = 0; c < kept.size(); ++c)
                     remove.insert(static_cast<int>(c));
         } else if (lastResort) {
