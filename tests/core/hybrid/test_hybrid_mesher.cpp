@@ -75,6 +75,8 @@ private slots:
               r.segmentDual.candidates, r.segmentDual.rejectedShape, r.segmentDual.rejectedThick,
               r.segmentDual.rejectedTaken, r.segmentDual.cells.size(), r.repairRounds,
               int(r.fellBackToTetgen));
+        for (const std::string &line : r.repairLog)
+            qInfo("%s", line.c_str());
         QVERIFY2(r.validity.valid(), r.message.c_str());
         QVERIFY(r.validity.invalidCells.empty());
         QCOMPARE(r.mesh.cells.size(), r.segmentDualKept + r.transitionPyramids + r.fillTets);
