@@ -1,0 +1,62 @@
+#include "hybrid/cell_faces.h"
+
+#include <algorithm>
+
+namespace stratamesh {
+
+namespace {
+
+CellFace tri(int a, int b, int c)
+{
+    return {{a, b, c, -1}, 3};
+}
+CellFace quad(int a, int b, int c, int d)
+{
+    return {{a, b, c, d}, 4};
+}
+
+} // namespace
+
+std::vector<CellFace> outwardFaces(const Cell &c)
+{
+    const auto &n = c.nodes;
+    switch (c.type) {
+    case CellType::Tet:
+        return {tri(n[0], n[2], n[1]), tri(n[0], n[1], n[3]), tri(n[0], n[3], n[2]),
+                tri(n[1], n[2], n[3])};
+    case CellType::Pyramid:
+        return {quad(n[0], n[3], n[2], n[1]), tri(n[0], n[1], n[4]), tri(n[1], n[2], n[4]),
+                tri(n[2], n[3], n[4]), tri(n[3], n[0], n[4])};
+    case CellType::Prism:
+        return {tri(n[0], n[2], n[1]), tri(n[3], n[4], n[5]), quad(n[0], n[1], n[4], n[3]),
+                quad(n[1], n[2], n[5], n[4]), quad(n[2], n[0], n[3], n[5])};
+    }
+    return {};
+}
+
+std::vector<std::array<int, 4>> cornerTets(const Cell &c)
+{
+    const auto &n = c.nodes;
+    switch (c.type) {
+    case CellType::Tet:
+        return {{n[0], n[1], n[2], n[3]}};
+    case CellType::Pyramid:
+        return {{n[0], n[1], n[3], n[4]},
+                {n[1], n[2], n[0], n[4]},
+                {n[2], n[3], n[1], n[4]},
+                {n[3], n[0], n[2], n[4]}};
+    case CellType::Prism:
+        return {{n[0], n[1], n[2], n[3]}, {n[1], n[2], n[0], n[4]}, {n[2], n[0], n[1], n[5]},
+                {n[3], n[5], n[4], n[0]}, {n[4], n[3], n[5], n[1]}, {n[5], n[4], n[3], n[2]}};
+    }
+    return {};
+}
+
+std::array<int, 4> faceKey(const CellFace &face)
+{
+    std::array<int, 4> key = face.nodes;
+    std::sort(key.begin(), key.begin() + face.size);
+    return key;
+}
+
+} // namespace stratamesh

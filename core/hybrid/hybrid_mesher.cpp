@@ -1,0 +1,422 @@
+#include "hybrid/hybrid_mesher.h"
+
+#include "common/error.h"
+#include "complexity/box_cvt.h"
+#include "complexity/box_elements.h"
+#include "hybrid/cell_faces.h"
+#include "model/region_volume.h"
+#include "model/topology.h"
+#include "remesh/surface_remesher.h"
+#include "volume/region_winding.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
+
+namespace stratamesh {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t)
+{
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::array<int, 3> triKey(int a, int b, int c)
+{
+    std::array<int, 3> k{a, b, c};
+    std::sort(k.begin(), k.end());
+    return k;
+}
+
+using PointKey = std::tuple<double, double, double>;
+PointKey keyOf(const Vec3 &p)
+{
+    return {p.x(), p.y(), p.z()};
+}
+
+// The hybrid cells of one fill attempt and what TetGen made of the rest.
+struct Fill {
+    std::vector<Cell> cells; // kept thesis cells, then transition pyramids
+    std::vector<int> region;
+    std::vector<int> owner; // for a pyramid, the thesis cell whose quad it covers; else itself
+    std::vector<Vec3> apexes;
+    std::size_t pyramids = 0;
+    TetgenResult tetgen;
+};
+
+// Builds the cavity model: the remesh triangles no kept cell lies on, plus per region a surface
+// of the cell faces that face the cavity (normals into it), and runs TetGen on it.
+void fillCavities(const Model &remesh, const std::vector<Cell> &kept,
+                  const std::vector<int> &keptRegion, const HybridParams &params, Fill &fill,
+                  Progress &progress)
+{
+    const std::vector<Vec3> &p = remesh.vertices;
+    const int nPoints = static_cast<int>(p.size());
+    fill.cells = kept;
+    fill.region = keptRegion;
+    fill.owner.resize(kept.size());
+    for (std::size_t c = 0; c < kept.size(); ++c)
+        fill.owner[c] = static_cast<int>(c);
+    std::set<std::array<int, 3>> surfaceKeys;
+    for (std::size_t s = 0; s < remesh.surfaces.size(); ++s)
+        for (const Triangle &t : remesh.surfaces[s].triangles) {
+            const auto &g = remesh.surfaceVertexToGlobal[s];
+            surfaceKeys.insert(triKey(g[t[0]], g[t[1]], g[t[2]]));
+        }
+    std::map<std::array<int, 4>, std::vector<std::pair<int, CellFace>>> faces;
+    for (std::size_t c = 0; c < kept.size(); ++c)
+        for (const CellFace &f : outwardFaces(kept[c]))
+            faces[faceKey(f)].push_back({static_cast<int>(c), f});
+    // Remesh triangles a cell lies on -> the cell's region (-1: cells on both sides).
+    std::map<std::array<int, 3>, int> usedSurface;
+    std::vector<std::vector<std::array<int, 3>>> exposed(remesh.regions.size());
+    for (const auto &[key, uses] : faces) {
+        const auto &[c, f] = uses.front();
+        const int r = keptRegion[c];
+        if (!f.isQuad()) {
+            const auto k = triKey(f.nodes[0], f.nodes[1], f.nodes[2]);
+            if (surfaceKeys.count(k))
+                usedSurface[k] = uses.size() == 1 ? r : -1;
+            else if (uses.size() == 1)
+                exposed[r].push_back({f.nodes[0], f.nodes[1], f.nodes[2]});
+            continue;
+        }
+        if (uses.size() != 1)
+            continue; // shared by two cells (more is caught by the final check)
+        // A transition pyramid on the quad, apex on the cavity side.
+        const Vec3 &a = p[f.nodes[0]], &b = p[f.nodes[1]], &cc = p[f.nodes[2]], &d = p[f.nodes[3]];
+        const Vec3 n = (cc - a).cross(d - b);
+        const double area = 0.5 * n.norm();
+        const Vec3 apex =
+            (a + b + cc + d) / 4.0 + n.normalized() * params.pyramidHeightRatio * std::sqrt(area);
+        const int apexId = nPoints + static_cast<int>(fill.apexes.size());
+        fill.apexes.push_back(apex);
+        fill.cells.push_back(Cell::pyramid(f.nodes[0], f.nodes[1], f.nodes[2], f.nodes[3], apexId));
+        fill.region.push_back(r);
+        fill.owner.push_back(c);
+        ++fill.pyramids;
+        for (int k = 0; k < 4; ++k)
+            exposed[r].push_back({f.nodes[k], f.nodes[(k + 1) % 4], apexId});
+    }
+
+    // The cavity model, on points 0..nPoints-1 of the remesh and the apexes after them.
+    auto pointAt = [&](int id) -> const Vec3 & {
+        return id < nPoints ? p[id] : fill.apexes[id - nPoints];
+    };
+    Model cavity;
+    cavity.name = remesh.name + "_cavity";
+    std::vector<int> surfaceMap(remesh.surfaces.size(), -1);
+    auto addSurface = [&](Surface s, const std::vector<std::array<int, 3>> &tris) {
+        std::map<int, int> local;
+        for (const auto &t : tris) {
+            Triangle lt;
+            for (int k = 0; k < 3; ++k) {
+                auto [it, fresh] = local.emplace(t[k], static_cast<int>(s.vertices.size()));
+                if (fresh)
+                    s.vertices.push_back(pointAt(t[k]));
+                lt[k] = it->second;
+            }
+            s.triangles.push_back(lt);
+        }
+        cavity.surfaces.push_back(std::move(s));
+        return static_cast<int>(cavity.surfaces.size()) - 1;
+    };
+    for (std::size_t s = 0; s < remesh.surfaces.size(); ++s) {
+        std::vector<std::array<int, 3>> tris;
+        const auto &g = remesh.surfaceVertexToGlobal[s];
+        for (const Triangle &t : remesh.surfaces[s].triangles) {
+            auto used = usedSurface.find(triKey(g[t[0]], g[t[1]], g[t[2]]));
+            if (used == usedSurface.end()) {
+                tris.push_back({g[t[0]], g[t[1]], g[t[2]]});
+                continue;
+            }
+            // A cell lies on it on one side: it still bounds the cavity of the other regions.
+            for (int other : remesh.surfaces[s].regions) {
+                if (used->second < 0 || other == used->second)
+                    continue;
+                for (const RegionSide &side : remesh.regions[other].boundaries)
+                    if (side.surface == static_cast<int>(s)) {
+                        if (side.positive)
+                            exposed[other].push_back({g[t[0]], g[t[1]], g[t[2]]});
+                        else
+                            exposed[other].push_back({g[t[0]], g[t[2]], g[t[1]]});
+                        break;
+                    }
+            }
+        }
+        if (tris.empty())
+            continue;
+        Surface copy;
+        copy.name = remesh.surfaces[s].name;
+        copy.featureName = remesh.surfaces[s].featureName;
+        copy.type = remesh.surfaces[s].type;
+        surfaceMap[s] = addSurface(std::move(copy), tris);
+    }
+    std::vector<int> regionMap; // cavity region -> remesh region
+    for (std::size_t r = 0; r < remesh.regions.size(); ++r) {
+        Region region;
+        region.name = remesh.regions[r].name;
+        for (const RegionSide &side : remesh.regions[r].boundaries)
+            if (surfaceMap[side.surface] >= 0)
+                region.boundaries.push_back({surfaceMap[side.surface], side.positive});
+        if (!exposed[r].empty()) {
+            Surface s;
+            s.name = "hybrid_cells_" + std::to_string(r);
+            s.featureName = s.name;
+            s.type = FeatureType::Unknown;
+            region.boundaries.push_back({addSurface(std::move(s), exposed[r]), true});
+        }
+        if (region.boundaries.empty())
+            continue; // the cells fill the region
+        cavity.regions.push_back(region);
+        regionMap.push_back(static_cast<int>(r));
+    }
+    if (cavity.regions.empty()) {
+        fill.tetgen = {};
+        fill.tetgen.outcome = TetgenOutcome::Ok;
+        return;
+    }
+    try {
+        fill.tetgen = runTetgen(recoverTopology(cavity), params.tetgen, progress);
+    } catch (const InputError &e) {
+        fill.tetgen = {};
+        fill.tetgen.outcome = TetgenOutcome::InvalidInput;
+        fill.tetgen.message = e.what();
+        return;
+    }
+    // The thesis cells' own zones are closed by the cavity surfaces too, so TetGen meshes them
+    // as subdomains of no region: tets inside a kept cell are dropped; any other tet of no region
+    // is located in the remesh, whose regions are closed (the check proves the result).
+    VolumeMesh &tets = fill.tetgen.mesh;
+    auto insideKeptCell = [&](const Vec3 &x) {
+        for (const Cell &cell : kept) {
+            bool inside = true;
+            for (const CellFace &f : outwardFaces(cell)) {
+                const Vec3 &a = p[f.nodes[0]];
+                const Vec3 n = f.isQuad()
+                                   ? Vec3((p[f.nodes[2]] - a).cross(p[f.nodes[3]] - p[f.nodes[1]]))
+                                   : Vec3((p[f.nodes[1]] - a).cross(p[f.nodes[2]] - a));
+                if (n.dot(x - a) >= 0.0) {
+                    inside = false;
+                    break;
+                }
+            }
+            if (inside)
+                return true;
+        }
+        return false;
+    };
+    std::vector<Cell> cells;
+    std::vector<int> regions;
+    for (std::size_t c = 0; c < tets.cells.size(); ++c) {
+        int region = tets.cellRegion[c] >= 0 ? regionMap[tets.cellRegion[c]] : -1;
+        if (region < 0) {
+            const Cell &t = tets.cells[c];
+            const Vec3 g = (tets.points[t.nodes[0]] + tets.points[t.nodes[1]]
+                            + tets.points[t.nodes[2]] + tets.points[t.nodes[3]])
+                           / 4.0;
+            if (insideKeptCell(g))
+                continue;
+            region = locateRegion(remesh, g);
+        }
+        cells.push_back(tets.cells[c]);
+        regions.push_back(region);
+    }
+    tets.cells = std::move(cells);
+    tets.cellRegion = std::move(regions);
+}
+
+// The final mesh: remesh points, apexes, TetGen's own points; thesis cells, pyramids, tets; the
+// remesh triangles with their surfaces.
+VolumeMesh assemble(const Model &remesh, const Fill &fill)
+{
+    VolumeMesh m;
+    m.name = remesh.name;
+    m.zPositiveDepth = remesh.zPositiveDepth;
+    m.points = remesh.vertices;
+    m.points.insert(m.points.end(), fill.apexes.begin(), fill.apexes.end());
+    std::map<PointKey, int> known;
+    for (std::size_t i = 0; i < m.points.size(); ++i)
+        known.emplace(keyOf(m.points[i]), static_cast<int>(i));
+    m.cells = fill.cells;
+    m.cellRegion = fill.region;
+    const VolumeMesh &t = fill.tetgen.mesh;
+    std::vector<int> map(t.points.size());
+    for (std::size_t i = 0; i < t.points.size(); ++i) {
+        auto [it, fresh] = known.emplace(keyOf(t.points[i]), static_cast<int>(m.points.size()));
+        if (fresh)
+            m.points.push_back(t.points[i]);
+        map[i] = it->second;
+    }
+    for (std::size_t c = 0; c < t.cells.size(); ++c) {
+        Cell cell = t.cells[c];
+        for (int k = 0; k < 4; ++k)
+            cell.nodes[k] = map[cell.nodes[k]];
+        m.cells.push_back(cell);
+        m.cellRegion.push_back(t.cellRegion[c]);
+    }
+    for (const Region &r : remesh.regions) {
+        m.regionNames.push_back(r.name);
+        m.regionBoundaries.push_back(r.boundaries);
+    }
+    for (std::size_t s = 0; s < remesh.surfaces.size(); ++s) {
+        const Surface &surface = remesh.surfaces[s];
+        m.surfaces.push_back({surface.name, surface.featureName, surface.type});
+        for (const Triangle &tri : surface.triangles) {
+            const auto &g = remesh.surfaceVertexToGlobal[s];
+            m.triangles.push_back({g[tri[0]], g[tri[1]], g[tri[2]]});
+            m.triangleSurface.push_back(static_cast<int>(s));
+        }
+    }
+    // Contact lines and corners, as the other volume meshes carry them.
+    for (std::size_t l = 0; l < remesh.lines.size(); ++l) {
+        const Line &line = remesh.lines[l];
+        m.lineNames.push_back(line.name);
+        const std::size_t n = line.vertices.size();
+        for (std::size_t k = 0; k + 1 < n + (line.closed ? 1 : 0); ++k) {
+            m.edges.push_back({line.vertices[k], line.vertices[(k + 1) % n]});
+            m.edgeLine.push_back(static_cast<int>(l));
+        }
+    }
+    for (const Corner &c : remesh.corners)
+        m.corners.push_back(c.vertex);
+    return m;
+}
+
+} // namespace
+
+HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Progress &progress)
+{
+    if (params.sites < 4)
+        throw InputError("hybrid mesh: sites must be at least 4 (got "
+                         + std::to_string(params.sites) + ")");
+    if (input.surfaces.empty())
+        throw InputError("hybrid mesh: the model has no surface");
+    HybridResult result;
+    const auto start = Clock::now();
+    const Model model = input.vertices.empty() ? recoverTopology(input) : input;
+
+    auto t = Clock::now();
+    BoxCvtParams cvtParams;
+    cvtParams.sites = params.sites;
+    cvtParams.iterations = params.cvtIterations;
+    cvtParams.seed = params.seed;
+    const BoxCvt cvt = runBoxCvt(modelBounds(model), cvtParams, progress);
+    result.timings.cvtSeconds = since(t);
+
+    // Triangles must stay dual to restricted Voronoi vertices: no flips, smoothing or refinement.
+    t = Clock::now();
+    RemeshParams remeshParams;
+    remeshParams.flips = false;
+    remeshParams.smoothingPasses = 0;
+    remeshParams.refinementRounds = 0;
+    const RemeshResult remeshed = remeshWithSites(model, cvt.sites, remeshParams, progress);
+    const Model &remesh = remeshed.model;
+    result.remeshSites = remeshed.siteCount;
+    result.remeshValid = remeshed.validity.valid;
+    result.timings.remeshSeconds = since(t);
+
+    t = Clock::now();
+    const std::vector<int> pointSite = nearestSites(remesh.vertices, cvt.sites);
+    result.segmentDual = buildSegmentDualCells(remesh, pointSite, params.cells);
+    result.invalidFound = result.segmentDual.rejectedShape;
+    result.timings.cellsSeconds = since(t);
+
+    MixedMeshCheckParams check;
+    check.maxQuadWarpDegrees = params.cells.maxQuadWarpDegrees;
+    check.regionVolumes = regionVolumes(remesh);
+
+    std::vector<Cell> kept = result.segmentDual.cells;
+    std::vector<int> keptRegion = result.segmentDual.region;
+    for (int round = 0;; ++round) {
+        const bool lastResort = round > params.repairRounds;
+        if (lastResort) {
+            result.repaired += kept.size();
+            kept.clear();
+            keptRegion.clear();
+            result.fellBackToTetgen = true;
+        }
+        t = Clock::now();
+        Fill fill;
+        fillCavities(remesh, kept, keptRegion, params, fill, progress);
+        result.timings.fillSeconds += since(t);
+        result.tetgenOutcome = fill.tetgen.outcome;
+        result.repairRounds = round;
+        std::set<int> remove; // thesis cells to drop before the next round
+        std::string firstProblem;
+        if (fill.tetgen.outcome == TetgenOutcome::Ok) {
+            t = Clock::now();
+            VolumeMesh mesh = assemble(remesh, fill);
+            MixedMeshValidity validity = checkMixedMesh(mesh, check);
+            result.timings.checkSeconds += since(t);
+            if (validity.valid() || lastResort) {
+                result.mesh = std::move(mesh);
+                result.validity = std::move(validity);
+                result.segmentDualKept = kept.size();
+                result.transitionPyramids = fill.pyramids;
+                result.fillTets = fill.tetgen.mesh.cells.size();
+                if (!result.validity.valid())
+                    result.message = result.validity.firstProblem;
+                break;
+            }
+            firstProblem = validity.firstProblem;
+            for (int c : validity.invalidCells)
+                if (c < static_cast<int>(fill.cells.size()))
+                    remove.insert(fill.owner[c]);
+            if (remove.empty()) { // only tets are wrong: drop the cells they touch
+                std::set<int> touched;
+                for (int c : validity.invalidCells)
+                    for (int k = 0; k < mesh.cells[c].size(); ++k)
+                        touched.insert(mesh.cells[c].nodes[k]);
+                for (std::size_t c = 0; c < fill.cells.size(); ++c)
+                    for (int k = 0; k < fill.cells[c].size(); ++k)
+                        if (touched.count(fill.cells[c].nodes[k]))
+                            remove.insert(fill.owner[c]);
+            }
+            if (remove.empty()) // a region volume alone is wrong: drop every cell
+                for (std::size_t c = 0; c < kept.size(); ++c)
+                    remove.insert(static_cast<int>(c));
+        } else if (lastResort) {
+            result.message = "TetGen: " + fill.tetgen.message;
+            break;
+        } else {
+            // The cavity is not a valid PLC (a pyramid crossing a surface, most often): drop the
+            // cells with a transition pyramid, the border row of each thin zone.
+            for (std::size_t c = kept.size(); c < fill.cells.size(); ++c)
+                remove.insert(fill.owner[c]);
+            if (remove.empty())
+                for (std::size_t c = 0; c < kept.size(); ++c)
+                    remove.insert(static_cast<int>(c));
+        }
+        result.repairLog.push_back("fill " + std::to_string(round) + ": "
+                                   + (fill.tetgen.outcome == TetgenOutcome::Ok
+                                          ? "check: " + firstProblem
+                                          : std::string("TetGen ")
+                                                + tetgenOutcomeName(fill.tetgen.outcome) + ": "
+                                                + fill.tetgen.message)
+                                   + "; " + std::to_string(remove.size()) + " cells dropped");
+        result.invalidFound += remove.size();
+        result.repaired += remove.size();
+        std::vector<Cell> next;
+        std::vector<int> nextRegion;
+        for (std::size_t c = 0; c < kept.size(); ++c)
+            if (!remove.count(static_cast<int>(c))) {
+                next.push_back(kept[c]);
+                nextRegion.push_back(keptRegion[c]);
+            }
+        kept = std::move(next);
+        keptRegion = std::move(nextRegion);
+    }
+    result.timings.totalSeconds = since(start);
+    return result;
+}
+
+} // namespace stratamesh

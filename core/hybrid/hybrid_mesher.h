@@ -1,0 +1,66 @@
+// Hybrid tet/prism/pyramid meshes of a structural model (thesis chapter 5; Pellerin et al. 2012,
+// IMR research note "Toward mixed-element meshing based on restricted Voronoi diagrams"), made
+// valid every time:
+//   volumetric CVT of the model's bounding box (§5.2) → surfaces remeshed from those sites
+//   (chapter 4, one point per restricted-cell component, no flips or smoothing so that triangles
+//   stay dual to restricted Voronoi vertices) → segment-dual cells in thin layers (§5.3.2) →
+//   transition pyramids on their quad faces that face the rest of the region → the rest of each
+//   region filled with tets by TetGen (out of process), constrained to the remesh and to the
+//   faces of the cells → mixed-mesh check; cells found invalid are removed and the cavity
+//   refilled (repair rounds), down to the plain TetGen mesh of the remesh as the last resort.
+// Not done: the Voronoi-vertex-dual cells of §5.3.3 and the splits of §5.4; TetGen's tets stand in
+// for them (counted as fill tets).
+#pragma once
+
+#include "common/progress.h"
+#include "hybrid/mixed_mesh_validity.h"
+#include "hybrid/segment_dual_cells.h"
+#include "mesh/volume_mesh.h"
+#include "model/model.h"
+#include "volume/tetgen_runner.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace stratamesh {
+
+struct HybridParams {
+    int sites = 1000;
+    int cvtIterations = 30;
+    unsigned seed = 1;
+    SegmentDualParams cells;
+    double pyramidHeightRatio = 0.15; // apex height over the square root of the quad area
+    int repairRounds = 4;
+    TetgenParams tetgen; // pq1.414AY by default
+};
+
+struct HybridTimings {
+    double cvtSeconds = 0.0, remeshSeconds = 0.0, cellsSeconds = 0.0, fillSeconds = 0.0,
+           checkSeconds = 0.0, totalSeconds = 0.0;
+};
+
+struct HybridResult {
+    VolumeMesh mesh;                    // empty cells when no valid mesh could be made
+    MixedMeshValidity validity;         // of mesh
+    SegmentDualCells segmentDual;       // candidates and rejections of §5.3.2
+    std::size_t segmentDualKept = 0;    // thesis cells in the final mesh
+    std::size_t transitionPyramids = 0; // pyramids on quads facing the tets
+    std::size_t fillTets = 0;           // tets from TetGen
+    std::size_t invalidFound = 0;       // cells rejected or found invalid (shape, check, TetGen)
+    std::size_t repaired = 0;           // thesis cells removed and their place refilled
+    int repairRounds = 0;               // fills after the first
+    bool fellBackToTetgen = false;      // the last resort: no hybrid cell at all
+    int remeshSites = 0;
+    bool remeshValid = false;
+    TetgenOutcome tetgenOutcome = TetgenOutcome::Aborted;
+    std::string message;                // why the mesh is empty or not valid
+    std::vector<std::string> repairLog; // per fill that was not kept: what was wrong, cells dropped
+    HybridTimings timings;
+};
+
+// Throws InputError for sites < 4 or a model without surfaces, Cancelled when cancelled.
+HybridResult buildHybridMesh(const Model &model, const HybridParams &params,
+                             Progress &progress = Progress::none());
+
+} // namespace stratamesh
