@@ -1,15 +1,16 @@
 // stratamesh-cli complexity MODEL [--h 100] [--alpha 20] [--cells 100,1000,10000] [--seed S]
-//                [--iterations 30] [--json] [--cells-vtk OUT.vtu]:
+//                [--iterations 30] [--json] [--cells-vtk OUT.vtu] [--overwrite]:
 // the complexity measures of thesis chapter 3, box excluded — counts (Table 3.1), geometric
 // complexity (Table 3.2), size variation coefficients (Table 3.3) and the statistics of the
 // number of elements per cell of a volumetric CVT for each number of cells (Table 3.4).
 // --cells-vtk writes the cells with their counts; with several numbers of cells, one file each,
-// named OUT_<cells>.vtu.
+// named OUT_<cells>.vtu, all planned before the work and written together (io/output_plan.h).
 #include "cli_output.h"
 #include "command_args.h"
 #include "complexity/complexity_report.h"
 #include "io/cells_vtu_writer.h"
 #include "io/model_reader.h"
+#include "io/output_plan.h"
 #include "model/topology.h"
 
 #include <QDir>
@@ -162,6 +163,7 @@ void printText(const QString &path, const ComplexityParams &params, const Comple
 int runComplexity(CommandArgs &args)
 {
     const bool json = args.flag(QStringLiteral("--json"));
+    const bool overwrite = args.flag(QStringLiteral("--overwrite"));
     ComplexityParams params;
     params.geometric.h = args.doubleOption(QStringLiteral("--h"), 100.0, 1e-9, 1e12);
     params.geometric.alphaDegrees = args.doubleOption(QStringLiteral("--alpha"), 20.0, 1e-6, 180.0);
@@ -178,6 +180,14 @@ int runComplexity(CommandArgs &args)
     const std::optional<QString> vtk = args.option(QStringLiteral("--cells-vtk"));
     const QString path = args.positional(QStringLiteral("MODEL"));
     args.finish();
+    // Every cells file (one per number of cells) is planned before the work.
+    OutputPlan plan({path.toStdString()}, overwrite);
+    std::vector<std::string> vtkPaths;
+    if (vtk)
+        for (int cells : params.cells) {
+            vtkPaths.push_back(vtkPath(*vtk, cells, params.cells.size() > 1).toStdString());
+            plan.add(vtkPaths.back(), "cells file");
+        }
 
     QJsonObject timings;
     QElapsedTimer timer;
@@ -195,11 +205,12 @@ int runComplexity(CommandArgs &args)
         timings.insert(QString::fromStdString(stage) + QStringLiteral("_s"), seconds);
     timer.restart();
     if (vtk) {
-        for (const LocalComplexity &l : report.local)
-            writeLocalComplexityVtu(
-                vtkPath(*vtk, static_cast<int>(l.counts.size()), report.local.size() > 1)
-                    .toStdString(),
-                l);
+        // report.local holds one entry per params.cells, in the same order.
+        for (std::size_t i = 0; i < report.local.size() && i < vtkPaths.size(); ++i)
+            plan.write(vtkPaths[i], [&](const std::string &temporary) {
+                writeLocalComplexityVtu(temporary, report.local[i]);
+            });
+        plan.commit();
         lap(QStringLiteral("export_s"));
     }
     if (json)

@@ -1,5 +1,7 @@
-// stratamesh-cli convert IN OUT [--msh-version 4.1|2.2] [--save-all] [--surface N] [--json]:
+// stratamesh-cli convert IN OUT [--msh-version 4.1|2.2] [--save-all] [--surface N] [--json]
+//     [--overwrite]:
 // one exchange format to another, both chosen by extension (core/io/mesh_writer.h lists them).
+// OUT is planned before IN is read (io/output_plan.h); OUT = IN only with --overwrite.
 // Volume meshes (.so, .msh, .vtu, .vtk, .vtp) keep their cells; surface models get their topology
 // recovered first so that lines, corners and Gocad BSTONE/BORDER are written too.
 #include "cli_output.h"
@@ -7,6 +9,7 @@
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
+#include "io/output_plan.h"
 #include "io/ringmesh_reader.h"
 #include "mesh/model_conversion.h"
 #include "model/topology.h"
@@ -29,6 +32,7 @@ bool isModelFormat(const QString &path)
 int runConvert(CommandArgs &args)
 {
     const bool json = args.flag(QStringLiteral("--json"));
+    const bool overwrite = args.flag(QStringLiteral("--overwrite"));
     ExportOptions options;
     options.gmsh.saveAll = args.flag(QStringLiteral("--save-all"));
     if (const auto version = args.option(QStringLiteral("--msh-version"))) {
@@ -49,6 +53,8 @@ int runConvert(CommandArgs &args)
             QStringLiteral("cannot tell the output format of '%1' (use .ml, .ts, .gm, .so, .vtu, "
                            ".vtk, .vtp, .msh, .obj, .off, .stl or .ply)")
                 .arg(output));
+    OutputPlan plan({in.toStdString()}, overwrite);
+    plan.add(output.toStdString(), "output");
 
     ExportReport report;
     QJsonObject counts;
@@ -63,11 +69,12 @@ int runConvert(CommandArgs &args)
                              {"edges", qint64(mesh.edges.size())},
                              {"regions", qint64(mesh.regionNames.size())},
                              {"surfaces", qint64(mesh.surfaces.size())}};
-        if (!mesh.hasCells() && isModelFormat(output))
-            report =
-                exportModel(recoverTopology(modelFromMesh(mesh)), output.toStdString(), options);
-        else
-            report = exportVolumeMesh(mesh, output.toStdString(), options);
+        plan.write(output.toStdString(), [&](const std::string &temporary) {
+            if (!mesh.hasCells() && isModelFormat(output))
+                report = exportModel(recoverTopology(modelFromMesh(mesh)), temporary, options);
+            else
+                report = exportVolumeMesh(mesh, temporary, options);
+        });
     } else {
         const Model model = recoverTopology(readModel(in.toStdString()));
         counts = QJsonObject{{"points", qint64(model.vertices.size())},
@@ -76,8 +83,11 @@ int runConvert(CommandArgs &args)
                              {"lines", qint64(model.lines.size())},
                              {"regions", qint64(model.regions.size())},
                              {"surfaces", qint64(model.surfaces.size())}};
-        report = exportModel(model, output.toStdString(), options);
+        plan.write(output.toStdString(), [&](const std::string &temporary) {
+            report = exportModel(model, temporary, options);
+        });
     }
+    plan.commit();
 
     if (json) {
         printJson(QJsonObject{{"input", in},

@@ -1,14 +1,17 @@
 // stratamesh-cli tetmesh MODEL [--quality 1.414] [--max-volume V] [--refine-surfaces] [--no-merge]
 //     [--time-limit S] [--memory-limit MB] [-o OUT.(vtu|vtk|msh|so)] [--msh-version 4.1|2.2]
-//     [--report R.json] [--json] [--poly PLC.poly]
+//     [--report R.json] [--json] [--poly PLC.poly] [--overwrite]
 // A TetGen comparison mesh of a model (thesis §5.2): TetGen runs in its helper process
 // (core/volume/tetgen_runner.h), so an abort, a crash, a time-out or an exhausted memory limit is
 // reported as the outcome, in the report and with exit status 1, never as a crash of this tool.
+// Every output is planned before the run (io/output_plan.h); a run that gives no mesh still
+// writes its report and PLC, and leaves an existing -o file as it was.
 #include "cli_output.h"
 #include "command_args.h"
 #include "common/error.h"
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
+#include "io/output_plan.h"
 #include "json_report.h"
 #include "model/topology.h"
 #include "volume/plc.h"
@@ -19,22 +22,12 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QSaveFile>
 
 #include <iostream>
 
 namespace stratamesh::cli {
 
 namespace {
-
-void writeJsonFile(const QJsonObject &report, const QString &path)
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)
-        || file.write(QJsonDocument(report).toJson(QJsonDocument::Indented)) < 0 || !file.commit())
-        throw FileError(path.toStdString(), 0,
-                        "cannot write the report: " + file.errorString().toStdString());
-}
 
 QJsonArray stringArray(const std::vector<std::string> &items)
 {
@@ -67,6 +60,7 @@ int runTetmesh(CommandArgs &args)
     params.timeLimitSeconds = args.doubleOption(QStringLiteral("--time-limit"), 0.0, 0.0, 1e9);
     params.memoryLimitMB = args.doubleOption(QStringLiteral("--memory-limit"), 0.0, 0.0, 1e9);
     const bool json = args.flag(QStringLiteral("--json"));
+    const bool overwrite = args.flag(QStringLiteral("--overwrite"));
     ExportOptions exportOptions;
     if (const auto version = args.option(QStringLiteral("--msh-version"))) {
         if (*version == QLatin1String("4.1"))
@@ -89,19 +83,32 @@ int runTetmesh(CommandArgs &args)
                 QStringLiteral("the output must be a .vtu, .vtk, .msh or .so file, not '%1'")
                     .arg(*output));
     }
+    OutputPlan plan({path.toStdString()}, overwrite);
+    if (output)
+        plan.add(output->toStdString(), "mesh");
+    if (reportPath)
+        plan.add(reportPath->toStdString(), "report");
+    if (polyPath)
+        plan.add(polyPath->toStdString(), "PLC file");
 
     QElapsedTimer clock;
     clock.start();
     const Model model = recoverTopology(readModel(path.toStdString()));
     // The exact PLC, to reproduce a failure with the tetgen executable.
     if (polyPath)
-        writeTetgenPoly(buildPlc(model), polyPath->toStdString());
+        plan.write(polyPath->toStdString(), [&](const std::string &temporary) {
+            writeTetgenPoly(buildPlc(model), temporary);
+        });
     TetmeshSide side = tetmeshModel(model, params);
     const TetgenResult &result = side.result;
     const VolumeQualityStatistics &quality = side.quality;
     const bool ok = result.outcome == TetgenOutcome::Ok;
     if (ok && output)
-        exportVolumeMesh(result.mesh, output->toStdString(), exportOptions);
+        plan.write(output->toStdString(), [&](const std::string &temporary) {
+            exportVolumeMesh(result.mesh, temporary, exportOptions);
+        });
+    else if (output)
+        plan.discard(output->toStdString());
 
     const QJsonObject report{
         {"file", path},
@@ -139,7 +146,10 @@ int runTetmesh(CommandArgs &args)
         {"total_time_s", clock.elapsed() / 1000.0},
     };
     if (reportPath)
-        writeJsonFile(report, *reportPath);
+        plan.writeText(reportPath->toStdString(), [&](std::ostream &o) {
+            o << QJsonDocument(report).toJson(QJsonDocument::Indented).toStdString();
+        });
+    plan.commit();
     if (json) {
         printJson(report);
     } else if (ok) {
