@@ -20,6 +20,7 @@
 
 #include "common/error.h"
 #include "io/gocad_writer.h"
+#include "io/output_plan.h"
 #include "io/ringmesh_writer.h"
 
 #include <QAction>
@@ -420,6 +421,7 @@ void MainWindow::onLoaded(const LoadedModel &loaded)
     m_progress->hide();
     m_messages->clear();
     m_displayName = loaded.displayName;
+    m_modelPath = loaded.path;
     m_counts = loaded.counts;
     clearTetmeshOutcome();
     clearRemeshOutcome();
@@ -736,14 +738,20 @@ bool MainWindow::saveRemeshedModel(const QString &path)
     Message message;
     message.file = path;
     try {
-        // Every writer goes through a temporary file and a rename.
+        // As the command line does (io/output_plan.h): never over the open model, checked before
+        // writing, through a temporary file and a rename.
+        OutputPlan plan({m_modelPath.toStdString()});
+        plan.add(path.toStdString(), "remeshed model");
         const QString suffix = QFileInfo(path).suffix().toLower();
-        if (suffix == QLatin1String("ml"))
-            writeGocadModel3d(*m_outcome->output, path.toStdString());
-        else if (suffix == QLatin1String("gm"))
-            writeRingMeshModel(*m_outcome->output, path.toStdString());
-        else
-            writeGocadTSurf(*m_outcome->output, path.toStdString());
+        plan.write(path.toStdString(), [&](const std::string &temporary) {
+            if (suffix == QLatin1String("ml"))
+                writeGocadModel3d(*m_outcome->output, temporary);
+            else if (suffix == QLatin1String("gm"))
+                writeRingMeshModel(*m_outcome->output, temporary);
+            else
+                writeGocadTSurf(*m_outcome->output, temporary);
+        });
+        plan.commit();
         message.text = tr("Remeshed model saved");
         m_messages->addMessage(message);
         m_stageLabel->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));
