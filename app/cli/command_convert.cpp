@@ -6,6 +6,7 @@
 // recovered first so that lines, corners and Gocad BSTONE/BORDER are written too.
 #include "cli_output.h"
 #include "command_args.h"
+#include "common/error.h"
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
@@ -63,6 +64,11 @@ int runConvert(CommandArgs &args)
         isRingMeshFile(in.toStdString()) && !hasRingMeshRegionMeshes(in.toStdString());
     if (isMeshReaderFile(in.toStdString()) && !brepGeoModel) {
         const VolumeMesh mesh = readVolumeMesh(in.toStdString());
+        // As readModel refuses a model without triangles: a mesh of nodes only is not converted
+        // into an empty file that reads back as "nothing" (test_cli_malformed_memory).
+        if (mesh.cells.empty() && mesh.triangles.empty())
+            throw FileError(in.toStdString(), 0,
+                            "empty model: no volume cell and no surface triangle; nothing written");
         counts = QJsonObject{{"points", qint64(mesh.points.size())},
                              {"cells", qint64(mesh.cells.size())},
                              {"triangles", qint64(mesh.triangles.size())},
