@@ -1,15 +1,17 @@
-// stratamesh-cli complexity MODEL [PARAMETERS] [--json] [--cells-vtk OUT.vtu] (the parameters:
+// stratamesh-cli complexity MODEL [PARAMETERS] [--json] [--cells-vtk OUT.vtu] [--overwrite] (the
+// parameters:
 //                complexityParamTable()):
 // the complexity measures of thesis chapter 3, box excluded — counts (Table 3.1), geometric
 // complexity (Table 3.2), size variation coefficients (Table 3.3) and the statistics of the
 // number of elements per cell of a volumetric CVT for each number of cells (Table 3.4).
 // --cells-vtk writes the cells with their counts; with several numbers of cells, one file each,
-// named OUT_<cells>.vtu.
+// named OUT_<cells>.vtu, all planned before the work and written together (io/output_plan.h).
 #include "cli_output.h"
 #include "command_args.h"
 #include "complexity/complexity_report.h"
 #include "io/cells_vtu_writer.h"
 #include "io/model_reader.h"
+#include "io/output_plan.h"
 #include "model/topology.h"
 #include "param_json.h"
 #include "params/param_tables.h"
@@ -141,11 +143,20 @@ void printText(const QString &path, const ComplexityParams &params, const Comple
 int runComplexity(CommandArgs &args)
 {
     const bool json = args.flag(QStringLiteral("--json"));
+    const bool overwrite = args.flag(QStringLiteral("--overwrite"));
     ComplexityParams params;
     args.params(complexityParamTable(), params);
     const std::optional<QString> vtk = args.option(QStringLiteral("--cells-vtk"));
     const QString path = args.positional(QStringLiteral("MODEL"));
     args.finish();
+    // Every cells file (one per number of cells) is planned before the work.
+    OutputPlan plan({path.toStdString()}, overwrite);
+    std::vector<std::string> vtkPaths;
+    if (vtk)
+        for (int cells : params.cells) {
+            vtkPaths.push_back(vtkPath(*vtk, cells, params.cells.size() > 1).toStdString());
+            plan.add(vtkPaths.back(), "cells file");
+        }
 
     QJsonObject timings;
     QElapsedTimer timer;
@@ -163,11 +174,12 @@ int runComplexity(CommandArgs &args)
         timings.insert(QString::fromStdString(stage) + QStringLiteral("_s"), seconds);
     timer.restart();
     if (vtk) {
-        for (const LocalComplexity &l : report.local)
-            writeLocalComplexityVtu(
-                vtkPath(*vtk, static_cast<int>(l.counts.size()), report.local.size() > 1)
-                    .toStdString(),
-                l);
+        // report.local holds one entry per params.cells, in the same order.
+        for (std::size_t i = 0; i < report.local.size() && i < vtkPaths.size(); ++i)
+            plan.write(vtkPaths[i], [&](const std::string &temporary) {
+                writeLocalComplexityVtu(temporary, report.local[i]);
+            });
+        plan.commit();
         lap(QStringLiteral("export_s"));
     }
     if (json)

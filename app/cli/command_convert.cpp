@@ -1,13 +1,17 @@
-// stratamesh-cli convert IN OUT [--msh-version 4.1|2.2] [--save-all] [--surface N] [--json]:
+// stratamesh-cli convert IN OUT [--msh-version 4.1|2.2] [--save-all] [--surface N] [--json]
+//     [--overwrite]:
 // one exchange format to another, both chosen by extension (core/io/mesh_writer.h lists them).
+// OUT is planned before IN is read (io/output_plan.h); OUT = IN only with --overwrite.
 // Volume meshes (.so, .msh, .vtu, .vtk, .vtp) keep their cells; surface models get their topology
 // recovered first so that lines, corners and Gocad BSTONE/BORDER are written too.
 #include "cli_output.h"
 #include "command_args.h"
+#include "common/error.h"
 #include "io/formats.h"
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
+#include "io/output_plan.h"
 #include "io/ringmesh_reader.h"
 #include "mesh/model_conversion.h"
 #include "model/topology.h"
@@ -30,6 +34,7 @@ bool isModelFormat(const QString &path)
 int runConvert(CommandArgs &args)
 {
     const bool json = args.flag(QStringLiteral("--json"));
+    const bool overwrite = args.flag(QStringLiteral("--overwrite"));
     ExportOptions options;
     options.gmsh.saveAll = args.flag(QStringLiteral("--save-all"));
     if (const auto version = args.option(QStringLiteral("--msh-version"))) {
@@ -49,6 +54,8 @@ int runConvert(CommandArgs &args)
         throw UsageError(
             QStringLiteral("cannot tell the output format of '%1' (use %2)")
                 .arg(output, QString::fromStdString(extensionList(FormatUse::Export))));
+    OutputPlan plan({in.toStdString()}, overwrite);
+    plan.add(output.toStdString(), "output");
 
     ExportReport report;
     QJsonObject counts;
@@ -57,17 +64,23 @@ int runConvert(CommandArgs &args)
         isRingMeshFile(in.toStdString()) && !hasRingMeshRegionMeshes(in.toStdString());
     if (isMeshReaderFile(in.toStdString()) && !brepGeoModel) {
         const VolumeMesh mesh = readVolumeMesh(in.toStdString());
+        // As readModel refuses a model without triangles: a mesh of nodes only is not converted
+        // into an empty file that reads back as "nothing" (test_cli_malformed_memory).
+        if (mesh.cells.empty() && mesh.triangles.empty())
+            throw FileError(in.toStdString(), 0,
+                            "empty model: no volume cell and no surface triangle; nothing written");
         counts = QJsonObject{{"points", qint64(mesh.points.size())},
                              {"cells", qint64(mesh.cells.size())},
                              {"triangles", qint64(mesh.triangles.size())},
                              {"edges", qint64(mesh.edges.size())},
                              {"regions", qint64(mesh.regionNames.size())},
                              {"surfaces", qint64(mesh.surfaces.size())}};
-        if (!mesh.hasCells() && isModelFormat(output))
-            report =
-                exportModel(recoverTopology(modelFromMesh(mesh)), output.toStdString(), options);
-        else
-            report = exportVolumeMesh(mesh, output.toStdString(), options);
+        plan.write(output.toStdString(), [&](const std::string &temporary) {
+            if (!mesh.hasCells() && isModelFormat(output))
+                report = exportModel(recoverTopology(modelFromMesh(mesh)), temporary, options);
+            else
+                report = exportVolumeMesh(mesh, temporary, options);
+        });
     } else {
         const Model model = recoverTopology(readModel(in.toStdString()));
         counts = QJsonObject{{"points", qint64(model.vertices.size())},
@@ -76,8 +89,11 @@ int runConvert(CommandArgs &args)
                              {"lines", qint64(model.lines.size())},
                              {"regions", qint64(model.regions.size())},
                              {"surfaces", qint64(model.surfaces.size())}};
-        report = exportModel(model, output.toStdString(), options);
+        plan.write(output.toStdString(), [&](const std::string &temporary) {
+            report = exportModel(model, temporary, options);
+        });
     }
+    plan.commit();
 
     if (json) {
         printJson(QJsonObject{{"input", in},

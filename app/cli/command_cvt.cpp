@@ -1,13 +1,13 @@
 // stratamesh-cli cvt MODEL --sites N [--seed S] [PARAMETERS: cvtParamTable()] [--json]
-//     [--sites-out FILE.xyz] [--neighbours delaunay|nearest]
+//     [--sites-out FILE.xyz] [--neighbours delaunay|nearest] [--overwrite]
 // Optimises N sites over all surfaces and lines of a model (thesis Alg. 4.1, §4.3) and reports
 // the energy per iteration, the restricted Delaunay triangulation's quality and the timings.
 #include "cli_output.h"
 #include "command_args.h"
 #include "cvt/cvt_optimizer.h"
 #include "cvt/initial_sampling.h"
-#include "io/atomic_file.h"
 #include "io/model_reader.h"
+#include "io/output_plan.h"
 #include "model/topology.h"
 #include "params/param_tables.h"
 #include "quality/restricted_delaunay_quality.h"
@@ -33,14 +33,11 @@ double peakRssMb()
     return usage.ru_maxrss / 1024.0; // kilobytes on Linux
 }
 
-void writeXyz(const std::string &path, const std::vector<Vec3> &sites)
+void writeXyz(std::ostream &s, const std::vector<Vec3> &sites)
 {
-    AtomicFile file(path);
-    std::ostream &s = file.stream();
     s << std::setprecision(17);
     for (const Vec3 &p : sites)
         s << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-    file.commit();
 }
 
 QJsonArray numbers(const std::vector<double> &values)
@@ -61,6 +58,7 @@ int runCvt(CommandArgs &args)
     const bool lloyd = params.lloyd;
     const double alpha = params.alpha;
     const int sites = args.intOption(QStringLiteral("--sites"), 0, 1, kMaxRemeshSites);
+    const bool overwrite = args.flag(QStringLiteral("--overwrite"));
     const int seed =
         args.intOption(QStringLiteral("--seed"), 1, 0, std::numeric_limits<int>::max());
     const std::optional<QString> sitesOut = args.option(QStringLiteral("--sites-out"));
@@ -78,6 +76,11 @@ int runCvt(CommandArgs &args)
     if (lloyd && alpha > 0)
         throw UsageError(
             QStringLiteral("--lloyd minimises the CVT energy only: it cannot take --alpha"));
+
+    // The sites file is planned before the work: a folder that cannot take it fails now.
+    OutputPlan plan({path.toStdString()}, overwrite);
+    if (sitesOut)
+        plan.add(sitesOut->toStdString(), "sites file");
 
     QElapsedTimer timer;
     timer.start();
@@ -97,7 +100,9 @@ int runCvt(CommandArgs &args)
         computeRestrictedVoronoi(domain, result.sites, Progress::none(), search);
     const RestrictedDelaunayQuality q = restrictedDelaunayQuality(restrictedDelaunay(domain, rvd));
     if (sitesOut)
-        writeXyz(sitesOut->toStdString(), result.sites);
+        plan.writeText(sitesOut->toStdString(),
+                       [&](std::ostream &o) { writeXyz(o, result.sites); });
+    plan.commit();
     int emptyCells = 0;
     for (const RestrictedCell &c : rvd.cells)
         emptyCells += c.area == 0 && c.length == 0;

@@ -1,15 +1,17 @@
 // stratamesh-cli remesh MODEL (--sites N | --edge-length L) [PARAMETERS] [--allow-invalid]
-//     [--params REPORT.json] -o OUT.(ml|ts|gm|msh|vtu|vtk|vtp) --report REPORT.json
+//     [--params REPORT.json] -o OUT.(ml|ts|gm|msh|vtu|vtk|vtp) --report REPORT.json [--overwrite]
 // (the parameters: remeshParamTable(); --params takes them from a report, flags override them)
 // Remeshes every surface of a model at once at the chosen resolution (thesis ch. 4), writes the
 // new model, and a JSON report: input and output (counts and mesh as `info --json`, validity),
 // the Hausdorff distance, histograms, timings, the simplification ledger and the CVT energy.
+// Both outputs are planned before the run and written together, or neither (io/output_plan.h).
 #include "cli_output.h"
 #include "command_args.h"
 #include "common/error.h"
 #include "io/formats.h"
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
+#include "io/output_plan.h"
 #include "json_report.h"
 #include "model/model_counts.h"
 #include "model/topology.h"
@@ -24,7 +26,6 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QSaveFile>
 
 #include <algorithm>
 
@@ -39,20 +40,6 @@ QJsonObject sideJson(const Model &model, const MeshStatistics &mesh, const Valid
     return QJsonObject{{QStringLiteral("counts"), toJson(countEntities(model))},
                        {QStringLiteral("mesh"), toJson(mesh)},
                        {QStringLiteral("validity"), toJson(validity)}};
-}
-
-void writeModelFile(const Model &model, const QString &path)
-{
-    exportModel(model, path.toStdString());
-}
-
-void writeReport(const QJsonObject &report, const QString &path)
-{
-    QSaveFile file(path); // written beside, renamed on commit
-    if (!file.open(QIODevice::WriteOnly)
-        || file.write(QJsonDocument(report).toJson(QJsonDocument::Indented)) < 0 || !file.commit())
-        throw FileError(path.toStdString(), 0,
-                        "cannot write the report: " + file.errorString().toStdString());
 }
 
 } // namespace
@@ -76,6 +63,7 @@ int runRemesh(CommandArgs &args)
     else if (isGiven("edge_length") && !isGiven("sites"))
         params.sites = 0;
     const bool allowInvalid = args.flag(QStringLiteral("--allow-invalid"));
+    const bool overwrite = args.flag(QStringLiteral("--overwrite"));
     const std::optional<QString> output = args.option(QStringLiteral("-o"));
     const std::optional<QString> reportPath = args.option(QStringLiteral("--report"));
     const QString path = args.positional(QStringLiteral("MODEL"));
@@ -89,21 +77,11 @@ int runRemesh(CommandArgs &args)
         throw UsageError(
             QStringLiteral("the output must be a model file (%1), not '%2'")
                 .arg(QString::fromStdString(extensionList(FormatUse::WriteModel)), *output));
-    // Refused before the run, not after it: overwriting the input, or a report nobody can write.
-    if (QFileInfo(*output).absoluteFilePath() == QFileInfo(path).absoluteFilePath()
-        || (QFileInfo::exists(*output)
-            && QFileInfo(*output).canonicalFilePath() == QFileInfo(path).canonicalFilePath()))
-        throw UsageError(
-            QStringLiteral("the output '%1' is the input model; choose another file").arg(*output));
-    for (const QString &target : {*output, reportPath.value_or(QString())}) {
-        if (target.isEmpty())
-            continue;
-        const QFileInfo dir(QFileInfo(target).absolutePath());
-        if (!dir.isDir() || !dir.isWritable())
-            throw UsageError(
-                QStringLiteral("cannot write '%1': its folder does not exist or is not writable")
-                    .arg(target));
-    }
+    // Refused before the run, not after it: overwriting the input, or an output nobody can write.
+    OutputPlan plan({path.toStdString()}, overwrite);
+    plan.add(output->toStdString(), "model");
+    if (reportPath)
+        plan.add(reportPath->toStdString(), "report");
 
     const Model input = recoverTopology(readModel(path.toStdString()));
     const RemeshResult result = remeshModel(input, params);
@@ -121,7 +99,8 @@ int runRemesh(CommandArgs &args)
             + std::to_string(p.position.y()) + " " + std::to_string(p.position.z()) + ": "
             + p.message + "; nothing written (--allow-invalid writes it anyway)");
     }
-    writeModelFile(result.model, *output);
+    plan.write(output->toStdString(),
+               [&](const std::string &temporary) { exportModel(result.model, temporary); });
 
     const ModelComparison comparison = compareModels(input, result.model);
     const ValidityReport inValidity = checkValidity(input);
@@ -169,7 +148,10 @@ int runRemesh(CommandArgs &args)
         {QStringLiteral("energy"), energy},
     };
     if (reportPath)
-        writeReport(report, *reportPath);
+        plan.writeText(reportPath->toStdString(), [&](std::ostream &o) {
+            o << QJsonDocument(report).toJson(QJsonDocument::Indented).toStdString();
+        });
+    plan.commit();
 
     QTextStream &o = out();
     o << "remeshed " << QFileInfo(path).fileName() << " with " << result.siteCount << " sites ("

@@ -1,11 +1,12 @@
 // stratamesh-cli synthetic (layered|network|spheres|sample) [--faults N] [--dip D] [--horizons H]
-//     [--throw T] [--edge-length L] -o OUT
+//     [--throw T] [--edge-length L] -o OUT [--overwrite]
 // Writes one of the models the tests are built on, so that a user or an acceptance run can try
 // the same difficulties from the command line (fault networks: low-dip faults, throws below and
 // above the remesh edge length, horizons cut into many pieces).
 #include "cli_output.h"
 #include "command_args.h"
 #include "io/mesh_writer.h"
+#include "io/output_plan.h"
 #include "model/synthetic_models.h"
 #include "model/topology.h"
 
@@ -20,11 +21,14 @@ int runSynthetic(CommandArgs &args)
     const int horizons = args.intOption(QStringLiteral("--horizons"), 3, 0, 50);
     const double throwUnit = args.doubleOption(QStringLiteral("--throw"), 20.0, 0.0, 1e4);
     const double edge = args.doubleOption(QStringLiteral("--edge-length"), 40.0, 1.0, 1e4);
+    const bool overwrite = args.flag(QStringLiteral("--overwrite"));
     const std::optional<QString> output = args.option(QStringLiteral("-o"));
     const QString kind = args.positional(QStringLiteral("KIND"));
     args.finish();
     if (!output)
         throw UsageError(QStringLiteral("missing -o OUT"));
+    OutputPlan plan({}, overwrite);
+    plan.add(output->toStdString(), "model");
     Model model;
     if (kind == QLatin1String("network")) {
         model = faultNetworkBox(faults, dip, horizons, throwUnit, edge);
@@ -41,7 +45,11 @@ int runSynthetic(CommandArgs &args)
         throw UsageError(
             QStringLiteral("unknown model '%1': layered, network, spheres or sample").arg(kind));
     }
-    const ExportReport report = exportModel(recoverTopology(model), output->toStdString());
+    ExportReport report;
+    plan.write(output->toStdString(), [&](const std::string &temporary) {
+        report = exportModel(recoverTopology(model), temporary);
+    });
+    plan.commit();
     out() << "wrote " << *output << " (" << QString::fromStdString(report.format)
           << "): " << model.surfaces.size() << " surfaces, " << model.triangleCount()
           << " triangles, " << model.regions.size() << " regions\n";

@@ -1,15 +1,18 @@
 // stratamesh-cli tetmesh MODEL [PARAMETERS: tetgenParamTable()] [-o OUT.(vtu|vtk|msh|so)]
 //     [--msh-version 4.1|2.2]
-//     [--report R.json] [--json] [--poly PLC.poly]
+//     [--report R.json] [--json] [--poly PLC.poly] [--overwrite]
 // A TetGen comparison mesh of a model (thesis §5.2): TetGen runs in its helper process
 // (core/volume/tetgen_runner.h), so an abort, a crash, a time-out or an exhausted memory limit is
 // reported as the outcome, in the report and with exit status 1, never as a crash of this tool.
+// Every output is planned before the run (io/output_plan.h); a run that gives no mesh still
+// writes its report and PLC, and leaves an existing -o file as it was.
 #include "cli_output.h"
 #include "command_args.h"
 #include "common/error.h"
 #include "io/formats.h"
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
+#include "io/output_plan.h"
 #include "json_report.h"
 #include "model/topology.h"
 #include "param_json.h"
@@ -22,22 +25,12 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QSaveFile>
 
 #include <iostream>
 
 namespace stratamesh::cli {
 
 namespace {
-
-void writeJsonFile(const QJsonObject &report, const QString &path)
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)
-        || file.write(QJsonDocument(report).toJson(QJsonDocument::Indented)) < 0 || !file.commit())
-        throw FileError(path.toStdString(), 0,
-                        "cannot write the report: " + file.errorString().toStdString());
-}
 
 QJsonArray stringArray(const std::vector<std::string> &items)
 {
@@ -65,6 +58,7 @@ int runTetmesh(CommandArgs &args)
     TetgenParams params;
     args.params(tetgenParamTable(), params);
     const bool json = args.flag(QStringLiteral("--json"));
+    const bool overwrite = args.flag(QStringLiteral("--overwrite"));
     ExportOptions exportOptions;
     if (const auto version = args.option(QStringLiteral("--msh-version"))) {
         if (*version == QLatin1String("4.1"))
@@ -84,19 +78,32 @@ int runTetmesh(CommandArgs &args)
         throw UsageError(
             QStringLiteral("the output must be a %1 file, not '%2'")
                 .arg(QString::fromStdString(extensionList(FormatUse::WriteVolumeMesh)), *output));
+    OutputPlan plan({path.toStdString()}, overwrite);
+    if (output)
+        plan.add(output->toStdString(), "mesh");
+    if (reportPath)
+        plan.add(reportPath->toStdString(), "report");
+    if (polyPath)
+        plan.add(polyPath->toStdString(), "PLC file");
 
     QElapsedTimer clock;
     clock.start();
     const Model model = recoverTopology(readModel(path.toStdString()));
     // The exact PLC, to reproduce a failure with the tetgen executable.
     if (polyPath)
-        writeTetgenPoly(buildPlc(model), polyPath->toStdString());
+        plan.write(polyPath->toStdString(), [&](const std::string &temporary) {
+            writeTetgenPoly(buildPlc(model), temporary);
+        });
     TetmeshSide side = tetmeshModel(model, params);
     const TetgenResult &result = side.result;
     const VolumeQualityStatistics &quality = side.quality;
     const bool ok = result.outcome == TetgenOutcome::Ok;
     if (ok && output)
-        exportVolumeMesh(result.mesh, output->toStdString(), exportOptions);
+        plan.write(output->toStdString(), [&](const std::string &temporary) {
+            exportVolumeMesh(result.mesh, temporary, exportOptions);
+        });
+    else if (output)
+        plan.discard(output->toStdString());
 
     const QJsonObject report{
         {"file", path},
@@ -129,7 +136,10 @@ int runTetmesh(CommandArgs &args)
         {"total_time_s", clock.elapsed() / 1000.0},
     };
     if (reportPath)
-        writeJsonFile(report, *reportPath);
+        plan.writeText(reportPath->toStdString(), [&](std::ostream &o) {
+            o << QJsonDocument(report).toJson(QJsonDocument::Indented).toStdString();
+        });
+    plan.commit();
     if (json) {
         printJson(report);
     } else if (ok) {

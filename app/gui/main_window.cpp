@@ -21,6 +21,7 @@
 #include "common/error.h"
 #include "io/formats.h"
 #include "io/mesh_writer.h"
+#include "io/output_plan.h"
 
 #include <QAction>
 #include <QApplication>
@@ -420,6 +421,7 @@ void MainWindow::onLoaded(const LoadedModel &loaded)
     m_progress->hide();
     m_messages->clear();
     m_displayName = loaded.displayName;
+    m_modelPath = loaded.path;
     m_counts = loaded.counts;
     clearTetmeshOutcome();
     clearRemeshOutcome();
@@ -730,8 +732,14 @@ bool MainWindow::saveRemeshedModel(const QString &path)
     Message message;
     message.file = path;
     try {
-        // Every writer goes through a temporary file and a rename.
-        exportModel(*m_outcome->output, path.toStdString());
+        // As the command line does (io/output_plan.h): never over the open model, checked before
+        // writing, through a temporary file (which keeps the extension) and a rename.
+        OutputPlan plan({m_modelPath.toStdString()});
+        plan.add(path.toStdString(), "remeshed model");
+        plan.write(path.toStdString(), [&](const std::string &temporary) {
+            exportModel(*m_outcome->output, temporary);
+        });
+        plan.commit();
         message.text = tr("Remeshed model saved");
         m_messages->addMessage(message);
         m_stageLabel->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));

@@ -185,6 +185,7 @@ private:
     QDockWidget *m_messageDock = nullptr;
     OpenModelController *m_controller = nullptr;
     QString m_displayName;
+    QString m_modelPath; // the open model's file (empty for the sample): saves never replace it
     ModelCounts m_counts;
 
     QSplitter *m_splitter = nullptr;

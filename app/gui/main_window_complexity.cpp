@@ -16,6 +16,7 @@
 
 #include "common/error.h"
 #include "io/cells_vtu_writer.h"
+#include "io/output_plan.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -252,8 +253,14 @@ bool MainWindow::exportComplexityCells(const QString &path)
     Message message;
     message.file = path;
     try {
-        // Through a temporary file and a rename, as every writer of the core.
-        writeLocalComplexityVtu(path.toStdString(), m_complexityOutcome->local());
+        // As the command line does (io/output_plan.h): never over the open model, checked before
+        // writing, through a temporary file and a rename.
+        OutputPlan plan({m_modelPath.toStdString()});
+        plan.add(path.toStdString(), "complexity cells file");
+        plan.write(path.toStdString(), [&](const std::string &temporary) {
+            writeLocalComplexityVtu(temporary, m_complexityOutcome->local());
+        });
+        plan.commit();
         message.text = tr("Complexity cells exported");
         m_messages->addMessage(message);
         m_stageLabel->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));

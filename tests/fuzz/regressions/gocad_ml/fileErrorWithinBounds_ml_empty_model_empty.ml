@@ -1,0 +1,5 @@
+GOCAD Model3d 1
+HEADER {
+name: m
+}
+END
