@@ -15,6 +15,7 @@
 #include "model/validity.h"
 #include "quality/model_comparison.h"
 #include "remesh/ledger_reconciliation.h"
+#include "remesh/remesh_review.h"
 #include "remesh/surface_remesher.h"
 
 #include <QElapsedTimer>
@@ -180,7 +181,8 @@ int runRemesh(CommandArgs &args)
     }
 
     const Model input = recoverTopology(readModel(path.toStdString()));
-    const RemeshResult result = remeshModel(input, params);
+    const RemeshReview review = remeshAndReview(input, params);
+    const RemeshResult &result = review.result;
     const ValidityReport &outValidity = result.validity;
     if (!outValidity.valid && !allowInvalid) {
         const ValidityProblem &p = outValidity.problems.front();
@@ -197,8 +199,8 @@ int runRemesh(CommandArgs &args)
     }
     writeModelFile(result.model, *output);
 
-    const ModelComparison comparison = compareModels(input, result.model);
-    const ValidityReport inValidity = checkValidity(input);
+    const ModelComparison &comparison = review.comparison;
+    const ValidityReport &inValidity = review.inputValidity;
     const TopologyEdits edits = countTopologyEdits(result.ledger);
     QJsonArray energy;
     for (double e : result.energy)

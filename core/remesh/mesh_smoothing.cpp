@@ -60,7 +60,8 @@ std::vector<RelaxedVertex> relaxedVertices(const EditableSoup &soup, bool lines)
 
 } // namespace
 
-int relaxVertices(EditableSoup &soup, InputProjector &projector, const SmoothingParams &params)
+int relaxVertices(EditableSoup &soup, InputProjector &projector, const SmoothingParams &params,
+                  Progress &progress)
 {
     // Rings already this good after the plain move are left to it (most of them: the search
     // costs a projection per candidate).
@@ -70,7 +71,14 @@ int relaxVertices(EditableSoup &soup, InputProjector &projector, const Smoothing
     const std::vector<RelaxedVertex> vertices = relaxedVertices(soup, params.lines);
     for (int pass = 0; pass < params.passes; ++pass) {
         int passMoves = 0;
+        progress.tick(static_cast<double>(pass) / params.passes,
+                      "pass " + std::to_string(pass + 1));
+        std::size_t done = 0;
         for (const RelaxedVertex &r : vertices) {
+            // A pass over modelA5 at 5000 sites takes about 0.1 s on a loaded machine.
+            if (++done % 512 == 0)
+                progress.tick((pass + static_cast<double>(done) / vertices.size()) / params.passes,
+                              "pass " + std::to_string(pass + 1));
             const int v = r.v;
             const VertexClass c = r.kind;
             const Vec3 old = soup.position(v);

@@ -1,7 +1,7 @@
 #include "volume/tetgen_comparison.h"
 
+#include "common/progress.h"
 #include "model/region_volume.h"
-#include "volume/progress_range.h"
 
 namespace stratamesh {
 
