@@ -1005,10 +1005,6 @@ angle (°)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Comparing with the input</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Remeshing stopped without a result</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1099,11 +1095,11 @@ angle (°)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Tetrahedralising the remesh</source>
+        <source>Tetrahedralisation stopped without a result</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Tetrahedralisation stopped without a result</source>
+        <source>Tetrahedralising the input and the remesh</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1007,10 +1007,6 @@ min. (°)</translation>
         <translation>Remaillage</translation>
     </message>
     <message>
-        <source>Comparing with the input</source>
-        <translation>Comparaison avec l&apos;entrée</translation>
-    </message>
-    <message>
         <source>Remeshing stopped without a result</source>
         <translation>Le remaillage s&apos;est arrêté sans résultat</translation>
     </message>
@@ -1101,12 +1097,12 @@ min. (°)</translation>
         <translation>Tétraédrisation du modèle d&apos;entrée</translation>
     </message>
     <message>
-        <source>Tetrahedralising the remesh</source>
-        <translation>Tétraédrisation du remaillage</translation>
-    </message>
-    <message>
         <source>Tetrahedralisation stopped without a result</source>
         <translation>La tétraédrisation s&apos;est arrêtée sans résultat</translation>
+    </message>
+    <message>
+        <source>Tetrahedralising the input and the remesh</source>
+        <translation>Tétraédrisation du modèle d&apos;entrée et du remaillage</translation>
     </message>
 </context>
 <context>

@@ -12,7 +12,8 @@ RemeshReview remeshAndReview(const Model &input, const RemeshParams &params,
     const double compareFrom = options.checkInput ? 0.9 : 0.94;
     const double inputFrom = options.checkInput ? 0.97 : 1.0;
     {
-        Progress remeshing(progress, 0.0, compareFrom, "Remeshing");
+        // Unnamed: its stages ("Mesh building: …") read under the caller's title.
+        Progress remeshing(progress, 0.0, compareFrom);
         review.result = remeshModel(input, params, remeshing);
     }
     {

@@ -25,8 +25,8 @@ struct RemeshReviewOptions {
     bool checkInput = true;
 };
 
-// `input` needs topology. Progress: remeshing, then "Comparing with the input", then "Input
-// validity"; Cancelled at any tick.
+// `input` needs topology. Progress: the remesh's stages (unnamed), then "Comparing with the input",
+// then "Input validity"; Cancelled at any tick.
 RemeshReview remeshAndReview(const Model &input, const RemeshParams &params,
                              const RemeshReviewOptions &options = {},
                              Progress &progress = Progress::none());
