@@ -891,6 +891,26 @@ angle (°)</source>
         <source>Write the remeshed model as a Gocad, RINGMesh, Gmsh or VTK file</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Open S&amp;tudy…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the table of a study run by stratamesh-cli study (.smstudy or study.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Study</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>StrataMesh studies (*.smstudy);;Gathered study tables (study.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot open the study</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>
@@ -1155,10 +1175,6 @@ angle (°)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Comparing with the input</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Remeshing stopped without a result</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1247,11 +1263,11 @@ angle (°)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Tetrahedralising the remesh</source>
+        <source>Tetrahedralisation stopped without a result</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Tetrahedralisation stopped without a result</source>
+        <source>Tetrahedralising the input and the remesh</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -893,6 +893,26 @@ min. (°)</translation>
         <source>Write the remeshed model as a Gocad, RINGMesh, Gmsh or VTK file</source>
         <translation>Écrire le modèle remaillé dans un fichier Gocad, RINGMesh, Gmsh ou VTK</translation>
     </message>
+    <message>
+        <source>Open S&amp;tudy…</source>
+        <translation>Ouvrir une é&amp;tude…</translation>
+    </message>
+    <message>
+        <source>Show the table of a study run by stratamesh-cli study (.smstudy or study.json)</source>
+        <translation>Afficher le tableau d’une étude lancée par stratamesh-cli study (.smstudy ou study.json)</translation>
+    </message>
+    <message>
+        <source>Open Study</source>
+        <translation>Ouvrir une étude</translation>
+    </message>
+    <message>
+        <source>StrataMesh studies (*.smstudy);;Gathered study tables (study.json)</source>
+        <translation>Études StrataMesh (*.smstudy);;Tableaux d’études rassemblés (study.json)</translation>
+    </message>
+    <message>
+        <source>Cannot open the study</source>
+        <translation>Impossible d’ouvrir l’étude</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>
@@ -1157,10 +1177,6 @@ min. (°)</translation>
         <translation>Remaillage</translation>
     </message>
     <message>
-        <source>Comparing with the input</source>
-        <translation>Comparaison avec l&apos;entrée</translation>
-    </message>
-    <message>
         <source>Remeshing stopped without a result</source>
         <translation>Le remaillage s&apos;est arrêté sans résultat</translation>
     </message>
@@ -1249,12 +1265,12 @@ min. (°)</translation>
         <translation>Tétraédrisation du modèle d&apos;entrée</translation>
     </message>
     <message>
-        <source>Tetrahedralising the remesh</source>
-        <translation>Tétraédrisation du remaillage</translation>
-    </message>
-    <message>
         <source>Tetrahedralisation stopped without a result</source>
         <translation>La tétraédrisation s&apos;est arrêtée sans résultat</translation>
+    </message>
+    <message>
+        <source>Tetrahedralising the input and the remesh</source>
+        <translation>Tétraédrisation du modèle d&apos;entrée et du remaillage</translation>
     </message>
 </context>
 <context>

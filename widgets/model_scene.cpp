@@ -13,6 +13,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 
+#include <cmath>
 #include <map>
 
 namespace stratamesh {
@@ -278,6 +279,12 @@ void ModelScene::setEdgesVisible(bool visible)
 {
     m_edgesVisible = visible;
     applyVisibility();
+}
+
+double ModelScene::diagonal() const
+{
+    double b[6];
+    return bounds(b) ? std::hypot(b[1] - b[0], b[3] - b[2], b[5] - b[4]) : 1.0;
 }
 
 bool ModelScene::bounds(double bounds[6]) const

@@ -54,6 +54,8 @@ public:
     // Bounds of the whole model, hidden box included, so that showing the box never needs a
     // new camera. False when there is nothing to show.
     bool bounds(double bounds[6]) const;
+    // Diagonal of those bounds; 1 when there is nothing to show (a scale for markers, spin boxes).
+    double diagonal() const;
 
     int surfaceActorCount() const { return int(m_surfaceActors.size()); }
     int visibleSurfaceActorCount() const;

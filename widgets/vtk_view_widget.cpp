@@ -199,6 +199,18 @@ void VtkViewWidget::resetCamera()
     resetCamera(bounds);
 }
 
+void VtkViewWidget::centreOn(const double point[3])
+{
+    vtkCamera *camera = m_renderer->GetActiveCamera();
+    double focal[3], position[3];
+    camera->GetFocalPoint(focal);
+    camera->GetPosition(position);
+    camera->SetFocalPoint(point[0], point[1], point[2]);
+    camera->SetPosition(position[0] + point[0] - focal[0], position[1] + point[1] - focal[1],
+                        position[2] + point[2] - focal[2]);
+    m_renderer->ResetCameraClippingRange();
+}
+
 void VtkViewWidget::resetCamera(const double bounds[6])
 {
     vtkCamera *camera = m_renderer->GetActiveCamera();

@@ -36,6 +36,9 @@ public:
     void resetCamera();
     // The same view direction, framing the given bounds (xmin, xmax, ymin, ymax, zmin, zmax).
     void resetCamera(const double bounds[6]);
+    // Keeps the view direction and distance and moves the camera so that `point` is in the
+    // centre (a ledger record, a validity problem); does not render.
+    void centreOn(const double point[3]);
     // Schedules a repaint; VTK only ever renders inside paintGL.
     void render();
 

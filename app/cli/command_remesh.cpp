@@ -20,6 +20,7 @@
 #include "params/param_tables.h"
 #include "quality/model_comparison.h"
 #include "remesh/ledger_reconciliation.h"
+#include "remesh/remesh_review.h"
 #include "remesh/surface_remesher.h"
 
 #include <QElapsedTimer>
@@ -84,7 +85,8 @@ int runRemesh(CommandArgs &args)
         plan.add(reportPath->toStdString(), "report");
 
     const Model input = recoverTopology(readModel(path.toStdString()));
-    const RemeshResult result = remeshModel(input, params);
+    const RemeshReview review = remeshAndReview(input, params);
+    const RemeshResult &result = review.result;
     const ValidityReport &outValidity = result.validity;
     if (!outValidity.valid && !allowInvalid) {
         const ValidityProblem &p = outValidity.problems.front();
@@ -102,8 +104,8 @@ int runRemesh(CommandArgs &args)
     plan.write(output->toStdString(),
                [&](const std::string &temporary) { exportModel(result.model, temporary); });
 
-    const ModelComparison comparison = compareModels(input, result.model);
-    const ValidityReport inValidity = checkValidity(input);
+    const ModelComparison &comparison = review.comparison;
+    const ValidityReport &inValidity = review.inputValidity;
     const TopologyEdits edits = countTopologyEdits(result.ledger);
     QJsonArray energy;
     for (double e : result.energy)

@@ -14,44 +14,17 @@ namespace stratamesh {
 
 namespace {
 
-// The engine restarts its fraction at each stage; the bar moves forward through fixed spans:
-// global measures 0–10 %, CVT 10–70 %, counting per cell 70–100 %.
-int overallPercent(double fraction, const std::string &stage)
-{
-    const double f = std::clamp(fraction, 0.0, 1.0);
-    if (stage.rfind("geometric", 0) == 0)
-        return int(10 * f);
-    if (stage.find("CVT") != std::string::npos)
-        return 10 + int(60 * f);
-    if (stage.find("counting") != std::string::npos)
-        return 70 + int(30 * f);
-    return -1; // unknown stage: keep the bar where it is
-}
-
 // Runs in the worker thread: core work only, plus conversion into messages.
 void runComplexity(QPromise<ComplexityRun> &promise, std::shared_ptr<const Model> model,
-                   ComplexityParams params, std::shared_ptr<Progress> cancel)
+                   ComplexityParams params, std::shared_ptr<Progress> progress)
 {
     QElapsedTimer timer;
     timer.start();
     ComplexityRun run;
-    promise.setProgressRange(0, 100);
-    const QString measuring = ComplexityController::tr("Measuring complexity");
-    int percent = 0;
-    Progress progress([&](double fraction, const std::string &stage) {
-        if (cancel->isCancelled() || promise.isCanceled())
-            throw Cancelled();
-        percent = std::max(percent, overallPercent(fraction, stage));
-        const QString text = stage.empty()
-                                 ? measuring
-                                 : measuring + QStringLiteral(": ") + QString::fromStdString(stage);
-        promise.setProgressValueAndText(percent, text);
-    });
     try {
-        promise.setProgressValueAndText(0, measuring);
         auto report =
-            std::make_shared<ComplexityReport>(computeComplexity(*model, params, progress));
-        if (cancel->isCancelled())
+            std::make_shared<ComplexityReport>(computeComplexity(*model, params, *progress));
+        if (progress->isCancelled() || promise.isCanceled())
             throw Cancelled();
         ComplexityOutcome &o = run.outcome;
         o.cells =
@@ -66,7 +39,6 @@ void runComplexity(QPromise<ComplexityRun> &promise, std::shared_ptr<const Model
         run.error = errorMessage(e);
     }
     run.outcome.milliseconds = timer.elapsed();
-    promise.setProgressValueAndText(100, QString());
     promise.addResult(std::move(run));
 }
 
@@ -75,7 +47,6 @@ void runComplexity(QPromise<ComplexityRun> &promise, std::shared_ptr<const Model
 ComplexityController::ComplexityController(QObject *parent) : WorkflowJob(parent)
 {
     qRegisterMetaType<stratamesh::ComplexityOutcome>();
-    relayProgress(m_watcher);
     connect(&m_watcher, &QFutureWatcher<ComplexityRun>::finished, this,
             &ComplexityController::onFinished);
 }
@@ -89,7 +60,7 @@ bool ComplexityController::start(std::shared_ptr<const Model> model, const Compl
 {
     if (!model || params.cells.size() != 1)
         return false;
-    std::shared_ptr<Progress> progress = begin();
+    std::shared_ptr<Progress> progress = begin(tr("Measuring complexity"));
     if (!progress)
         return false;
     m_watcher.setFuture(

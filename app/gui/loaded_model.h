@@ -25,8 +25,9 @@ struct LoadedModel {
 
 struct LoadResult {
     bool ok = false;
-    LoadedModel loaded; // when ok
-    Message error;      // when not ok
+    bool cancelled = false; // stopped because the window closes
+    LoadedModel loaded;     // when ok
+    Message error;          // when not ok
 };
 
 } // namespace stratamesh

@@ -43,10 +43,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
-#include <vtkCamera.h>
 #include <vtkRenderer.h>
-
-#include <cmath>
 
 namespace stratamesh {
 
@@ -74,7 +71,7 @@ MainWindow::MainWindow(QWidget *parent)
     createTetmeshUi();
     retranslate();
 
-    connect(m_controller, &OpenModelController::started, this, &MainWindow::onLoadStarted);
+    connect(m_controller, &OpenModelController::opening, this, &MainWindow::onLoadStarted);
     connect(m_controller, &OpenModelController::progressChanged, this, &MainWindow::onProgress);
     connect(m_controller, &OpenModelController::loaded, this, &MainWindow::onLoaded);
     connect(m_controller, &OpenModelController::failed, this, &MainWindow::onFailed);
@@ -146,6 +143,8 @@ void MainWindow::createActions()
 
     m_openSample = new QAction(this);
     connect(m_openSample, &QAction::triggered, this, &MainWindow::openSample);
+    m_openStudy = new QAction(this);
+    connect(m_openStudy, &QAction::triggered, this, &MainWindow::chooseStudy);
 
     m_quit = new QAction(this);
     m_quit->setShortcut(QKeySequence::Quit);
@@ -196,6 +195,7 @@ void MainWindow::createMenus()
     m_fileMenu = menuBar()->addMenu(QString());
     m_fileMenu->addAction(m_open);
     m_fileMenu->addAction(m_openSample);
+    m_fileMenu->addAction(m_openStudy);
     m_fileMenu->addAction(m_saveRemeshed);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quit);
@@ -287,6 +287,9 @@ void MainWindow::retranslate()
     m_open->setStatusTip(tr("Open a structural model file"));
     m_openSample->setText(tr("Open &Sample Model"));
     m_openSample->setStatusTip(tr("Show the synthetic model bundled with StrataMesh"));
+    m_openStudy->setText(tr("Open S&tudy…"));
+    m_openStudy->setStatusTip(
+        tr("Show the table of a study run by stratamesh-cli study (.smstudy or study.json)"));
     m_quit->setText(tr("&Quit"));
     m_showBox->setText(tr("Show &Box"));
     m_showBox->setStatusTip(tr("Show the surfaces of the model's bounding box"));
@@ -538,12 +541,7 @@ void MainWindow::remesh()
     const auto &model = m_scene->model();
     if (!model || isWorking())
         return;
-    double bounds[6];
-    const double diagonal =
-        m_scene->bounds(bounds)
-            ? std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
-            : 1.0;
-    RemeshDialog dialog(diagonal, this);
+    RemeshDialog dialog(m_scene->diagonal(), this);
     if (m_lastParams.sites > 0 || m_lastParams.edgeLength > 0.0)
         dialog.setParams(m_lastParams);
     if (dialog.exec() != QDialog::Accepted)
@@ -685,23 +683,12 @@ void MainWindow::showLedgerRecord(int recordIndex)
         m_outputView->render();
         return;
     }
-    double bounds[6];
-    const double diagonal =
-        m_outputScene->bounds(bounds)
-            ? std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
-            : 1.0;
     // Big enough to be found at the whole-model zoom, never hiding the change itself entirely.
-    m_marker->show(record->position, std::max(0.015 * diagonal, 0.5 * record->size));
-    // Keep the view direction and distance, move the camera so the record is in the centre.
-    vtkCamera *camera = m_view->renderer()->GetActiveCamera();
-    double focal[3], position[3];
-    camera->GetFocalPoint(focal);
-    camera->GetPosition(position);
-    const Vec3 &p = record->position;
-    camera->SetFocalPoint(p.x(), p.y(), p.z());
-    camera->SetPosition(position[0] + p.x() - focal[0], position[1] + p.y() - focal[1],
-                        position[2] + p.z() - focal[2]);
-    m_view->renderer()->ResetCameraClippingRange();
+    m_marker->show(record->position,
+                   std::max(0.015 * m_outputScene->diagonal(), 0.5 * record->size));
+    // The views share one camera: centred on the record in both.
+    const double centre[3] = {record->position.x(), record->position.y(), record->position.z()};
+    m_view->centreOn(centre);
     m_outputView->renderer()->ResetCameraClippingRange();
     m_view->render();
     m_outputView->render();

@@ -38,6 +38,8 @@ class TetmeshController;
 class TetmeshPanel;
 class VtkViewWidget;
 
+class StudyWindow;
+
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
@@ -88,10 +90,17 @@ public:
     // The last meshes shown, if any (cleared by another model or another remesh).
     const std::optional<TetmeshOutcome> &tetmeshOutcome() const { return m_tetmeshOutcome; }
 
+    // File > Open Study…: the gathered table of a study in its own window.
+    StudyWindow *studyWindow() const { return m_studyWindow; }
+    QAction *openStudyAction() const { return m_openStudy; }
+
 public slots:
     void openFile(const QString &path);
     void openSample();
     void chooseFile();
+    // A .smstudy or a gathered study.json; a message box says what is wrong with it.
+    void openStudy(const QString &path);
+    void chooseStudy();
     void setBoxVisible(bool visible);
     void setEdgesVisible(bool visible);
     void resetCamera();
@@ -230,6 +239,8 @@ private:
 
     QAction *m_open = nullptr;
     QAction *m_openSample = nullptr;
+    QAction *m_openStudy = nullptr;
+    StudyWindow *m_studyWindow = nullptr;
     QAction *m_quit = nullptr;
     QAction *m_showBox = nullptr;
     QAction *m_showEdges = nullptr;

@@ -92,12 +92,7 @@ void MainWindow::tetrahedralise()
 {
     if (!m_scene->model() || isWorking())
         return;
-    double bounds[6];
-    const double diagonal =
-        m_scene->bounds(bounds)
-            ? std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
-            : 1.0;
-    TetmeshDialog dialog(m_outcome.has_value(), diagonal, this);
+    TetmeshDialog dialog(m_outcome.has_value(), m_scene->diagonal(), this);
     if (m_lastTetmeshParams)
         dialog.setParams(*m_lastTetmeshParams);
     if (dialog.exec() != QDialog::Accepted)

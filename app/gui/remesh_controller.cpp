@@ -4,6 +4,7 @@
 #include "common/progress.h"
 #include "error_message.h"
 #include "model/model_counts.h"
+#include "remesh/remesh_review.h"
 
 #include <QElapsedTimer>
 #include <QPromise>
@@ -17,42 +18,21 @@ namespace {
 
 // Runs in the worker thread: core work only, plus conversion into messages.
 void runRemesh(QPromise<RemeshRun> &promise, std::shared_ptr<const Model> input,
-               RemeshParams params, std::shared_ptr<Progress> cancel)
+               RemeshParams params, std::shared_ptr<Progress> progress)
 {
     QElapsedTimer timer;
     timer.start();
     RemeshRun run;
-    promise.setProgressRange(0, 100);
-    // The engine's stages, then the comparison: 0–85 % and 85–100 %.
-    const auto relay = [&](int from, int span, const QString &prefix) {
-        return Progress(
-            [&promise, &cancel, from, span, prefix](double fraction, const std::string &stage) {
-                if (cancel->isCancelled() || promise.isCanceled())
-                    throw Cancelled();
-                const QString text =
-                    stage.empty() ? prefix
-                                  : prefix + QStringLiteral(": ") + QString::fromStdString(stage);
-                promise.setProgressValueAndText(from + int(span * std::clamp(fraction, 0.0, 1.0)),
-                                                text);
-            });
-    };
     try {
-        const QString remeshing = RemeshController::tr("Remeshing");
-        promise.setProgressValueAndText(0, remeshing);
-        Progress remeshProgress = relay(0, 85, remeshing);
-        RemeshResult result = remeshModel(*input, params, remeshProgress);
-        if (cancel->isCancelled())
+        // The input's validity was shown when it was opened.
+        RemeshReviewOptions options;
+        options.checkInput = false;
+        RemeshReview review = remeshAndReview(*input, params, options, *progress);
+        if (progress->isCancelled() || promise.isCanceled())
             throw Cancelled();
-        const QString comparing = RemeshController::tr("Comparing with the input");
-        promise.setProgressValueAndText(85, comparing);
-        Progress compareProgress = relay(85, 15, comparing);
-        HausdorffParams hausdorff;
-        hausdorff.samplesPerSide = RemeshController::kHausdorffSamples;
+        RemeshResult &result = review.result;
         RemeshOutcome &o = run.outcome;
-        o.comparison = compareModels(*input, result.model, hausdorff, compareProgress);
-        o.comparison.output.resolution = std::to_string(result.siteCount);
-        o.comparison.output.samplingSeconds = result.timings.samplingSeconds;
-        o.comparison.output.meshSeconds = result.timings.meshSeconds;
+        o.comparison = std::move(review.comparison);
         o.counts = countEntities(result.model);
         o.siteCount = result.siteCount;
         o.initialSiteCount = result.initialSiteCount;
@@ -68,7 +48,6 @@ void runRemesh(QPromise<RemeshRun> &promise, std::shared_ptr<const Model> input,
         run.error = errorMessage(e);
     }
     run.outcome.milliseconds = timer.elapsed();
-    promise.setProgressValueAndText(100, QString());
     promise.addResult(std::move(run));
 }
 
@@ -77,7 +56,6 @@ void runRemesh(QPromise<RemeshRun> &promise, std::shared_ptr<const Model> input,
 RemeshController::RemeshController(QObject *parent) : WorkflowJob(parent)
 {
     qRegisterMetaType<stratamesh::RemeshOutcome>();
-    relayProgress(m_watcher);
     connect(&m_watcher, &QFutureWatcher<RemeshRun>::finished, this, &RemeshController::onFinished);
 }
 
@@ -90,7 +68,7 @@ bool RemeshController::start(std::shared_ptr<const Model> input, const RemeshPar
 {
     if (!input)
         return false;
-    std::shared_ptr<Progress> progress = begin();
+    std::shared_ptr<Progress> progress = begin(tr("Remeshing"));
     if (!progress)
         return false;
     m_watcher.setFuture(

@@ -1,4 +1,4 @@
-// The "remesh" workflow: remeshModel() then compareModels() on the loaded model in a worker
+// The "remesh" workflow: remeshAndReview() (as the CLI) on the loaded model in a worker
 // thread, reporting progress, cancellable at the engine's next progress tick. The input model is
 // shared read-only and never changed; the window only shows the outcome.
 #pragma once
@@ -20,10 +20,6 @@ public:
 
     // Returns immediately; false when busy or without a model.
     bool start(std::shared_ptr<const Model> input, const RemeshParams &params);
-
-    // Hausdorff samples per side for the comparison: fewer than the CLI's report, as the GUI
-    // shows 3 decimals of a percentage and must answer quickly.
-    static constexpr int kHausdorffSamples = 50000;
 
 signals:
     void succeeded(const stratamesh::RemeshOutcome &outcome);

@@ -17,35 +17,23 @@ namespace {
 // Runs in the worker thread: core work only, plus conversion into messages.
 void runTetmesh(QPromise<TetmeshRun> &promise, std::shared_ptr<const Model> input,
                 std::shared_ptr<const Model> output, TetgenParams params,
-                std::shared_ptr<Progress> cancel)
+                std::shared_ptr<Progress> progress)
 {
     QElapsedTimer timer;
     timer.start();
     TetmeshRun run;
-    promise.setProgressRange(0, 100);
-    const QString onInput = TetmeshController::tr("Tetrahedralising the input");
-    const QString onRemesh = TetmeshController::tr("Tetrahedralising the remesh");
-    // compareTetmeshes() runs the input over 0–50 % and the remesh over 50–100 %.
-    Progress progress([&](double fraction, const std::string &stage) {
-        if (cancel->isCancelled() || promise.isCanceled())
-            throw Cancelled();
-        const QString prefix = output && fraction >= 0.5 ? onRemesh : onInput;
-        const QString text =
-            stage.empty() ? prefix : prefix + QStringLiteral(": ") + QString::fromStdString(stage);
-        promise.setProgressValueAndText(int(100 * std::clamp(fraction, 0.0, 1.0)), text);
-    });
     try {
-        promise.setProgressValueAndText(0, onInput);
         TetmeshOutcome &o = run.outcome;
         if (output) {
-            TetmeshComparison c = compareTetmeshes(*input, *output, params, progress);
+            // compareTetmeshes() names its two sides' stages.
+            TetmeshComparison c = compareTetmeshes(*input, *output, params, *progress);
             o.inputSide = std::make_shared<const TetmeshSide>(std::move(c.input));
             o.outputSide = std::make_shared<const TetmeshSide>(std::move(c.output));
         } else {
             o.inputSide =
-                std::make_shared<const TetmeshSide>(tetmeshModel(*input, params, progress));
+                std::make_shared<const TetmeshSide>(tetmeshModel(*input, params, *progress));
         }
-        if (cancel->isCancelled())
+        if (progress->isCancelled() || promise.isCanceled())
             throw Cancelled();
         o.input = std::move(input);
         o.output = std::move(output);
@@ -57,7 +45,6 @@ void runTetmesh(QPromise<TetmeshRun> &promise, std::shared_ptr<const Model> inpu
         run.error = errorMessage(e);
     }
     run.outcome.milliseconds = timer.elapsed();
-    promise.setProgressValueAndText(100, QString());
     promise.addResult(std::move(run));
 }
 
@@ -66,7 +53,6 @@ void runTetmesh(QPromise<TetmeshRun> &promise, std::shared_ptr<const Model> inpu
 TetmeshController::TetmeshController(QObject *parent) : WorkflowJob(parent)
 {
     qRegisterMetaType<stratamesh::TetmeshOutcome>();
-    relayProgress(m_watcher);
     connect(&m_watcher, &QFutureWatcher<TetmeshRun>::finished, this,
             &TetmeshController::onFinished);
 }
@@ -81,7 +67,9 @@ bool TetmeshController::start(std::shared_ptr<const Model> input,
 {
     if (!input)
         return false;
-    std::shared_ptr<Progress> progress = begin();
+    std::shared_ptr<Progress> progress =
+        begin(output ? tr("Tetrahedralising the input and the remesh")
+                     : tr("Tetrahedralising the input"));
     if (!progress)
         return false;
     m_watcher.setFuture(QtConcurrent::run(&runTetmesh, std::move(input), std::move(output), params,

@@ -15,29 +15,38 @@ WorkflowJob::WorkflowJob(QObject *parent) : QObject(parent)
 
 WorkflowJob::~WorkflowJob() = default;
 
-void WorkflowJob::relayProgress(QFutureWatcherBase &watcher)
-{
-    // The watcher's value and text signals arrive separately, and the value read with a text may
-    // be ahead of a value signal still queued: the worker only moves forward, so the bar does too.
-    connect(&watcher, &QFutureWatcherBase::progressValueChanged, this, [this, &watcher](int value) {
-        m_percent = std::max(m_percent, value);
-        emit progressChanged(m_percent, watcher.progressText());
-    });
-    connect(&watcher, &QFutureWatcherBase::progressTextChanged, this,
-            [this, &watcher](const QString &text) {
-                m_percent = std::max(m_percent, watcher.progressValue());
-                emit progressChanged(m_percent, text);
-            });
-}
-
-std::shared_ptr<Progress> WorkflowJob::begin()
+std::shared_ptr<Progress> WorkflowJob::begin(const QString &title)
 {
     if (m_pending)
         return nullptr;
     m_pending = true;
     m_percent = 0;
-    m_progress = std::make_shared<Progress>();
+    const int run = ++m_run;
+    // Called under the root's lock, in whichever thread ticked: only changes are posted.
+    auto last = std::make_shared<std::pair<int, QString>>(-1, QString());
+    m_progress = std::make_shared<Progress>(
+        [this, run, title, last](double fraction, const std::string &stage) {
+            const int percent = int(100.0 * fraction);
+            const QString text = stage.empty() ? title
+                                 : title.isEmpty()
+                                     ? QString::fromStdString(stage)
+                                     : title + QStringLiteral(": ") + QString::fromStdString(stage);
+            if (percent == last->first && text == last->second)
+                return;
+            *last = {percent, text};
+            QMetaObject::invokeMethod(
+                this,
+                [this, run, percent, text] {
+                    if (run != m_run || !m_pending)
+                        return;
+                    m_percent = std::max(m_percent, percent);
+                    emit progressChanged(m_percent, text);
+                },
+                Qt::QueuedConnection);
+        });
     emit started();
+    if (!title.isEmpty())
+        emit progressChanged(0, title);
     return m_progress;
 }
 

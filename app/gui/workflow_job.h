@@ -1,6 +1,8 @@
-// What the window's background workflows share (remesh, complexity): one run at a time in a
-// worker thread, a progress bar that only moves forward, cancel at the engine's next progress
-// tick, and the end of a run told by signals once the worker has returned.
+// What the window's background workflows share (open, remesh, complexity, tetmesh): one run at a
+// time in a worker thread, one root Progress whose ticks (from any thread, TBB workers included)
+// reach progressChanged() in the GUI thread as a percentage that only moves forward and the
+// stage chain ("Remeshing: Mesh building: dual faces (4/7)"), cancel at the engine's next
+// progress tick, and the end of a run told by signals once the worker has returned.
 #pragma once
 
 #include "message.h"
@@ -37,10 +39,9 @@ signals:
     void finished(bool ok);
 
 protected:
-    // Relays the watcher's progress to progressChanged(); called once by the derived constructor.
-    void relayProgress(QFutureWatcherBase &watcher);
-    // The cancel flag for a new run (started() is emitted); nullptr while a run is under way.
-    std::shared_ptr<Progress> begin();
+    // The root progress of a new run (started() is emitted), whose ticks are relayed to
+    // progressChanged() as "title: stage"; nullptr while a run is under way.
+    std::shared_ptr<Progress> begin(const QString &title = QString());
     // Once the worker has returned: emitSucceeded() for a finished run, cancelled() or failed(),
     // then finished().
     void end(RunStatus status, const Message &error, const std::function<void()> &emitSucceeded);
@@ -51,6 +52,7 @@ private:
     std::shared_ptr<Progress> m_progress;
     bool m_pending = false;
     int m_percent = 0; // last percentage reported in this run
+    int m_run = 0;     // numbers the runs: a late tick of a finished run is dropped
 };
 
 } // namespace stratamesh

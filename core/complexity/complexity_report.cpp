@@ -2,6 +2,7 @@
 
 #include "params/param_tables.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace stratamesh {
@@ -21,14 +22,22 @@ ComplexityReport computeComplexity(const Model &model, const ComplexityParams &p
     lap("counts");
     report.variation = sizeVariation(model);
     lap("variation");
-    report.geometric = geometricComplexity(model, params.geometric, progress);
+    // Global measures 0–10 %, then each number of cells an equal share of the rest.
+    {
+        Progress geometric(progress, 0.0, 0.1);
+        report.geometric = geometricComplexity(model, params.geometric, geometric);
+    }
     lap("geometric");
+    const double share = 0.9 / std::max<std::size_t>(params.cells.size(), 1);
+    double at = 0.1;
     for (int n : params.cells) {
+        Progress cells(progress, at, at + share);
+        at += share;
         LocalComplexityParams local;
         local.cells = n;
         local.seed = params.seed;
         local.iterations = params.iterations;
-        report.local.push_back(localComplexity(model, local, progress));
+        report.local.push_back(localComplexity(model, local, cells));
         report.timings.emplace_back("local_" + std::to_string(n) + "_cvt",
                                     report.local.back().cvtSeconds);
         report.timings.emplace_back("local_" + std::to_string(n) + "_count",

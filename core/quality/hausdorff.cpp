@@ -93,13 +93,19 @@ std::vector<Vec3> samplePoints(const Model &m, int samples)
     return pts;
 }
 
-std::vector<double> parallelDistances(const ModelTree &tree, const std::vector<Vec3> &pts)
+// Ticks from the TBB workers every 1024 points (0.1 s on modelA5 on a loaded machine), so a cancel
+// acts quickly.
+std::vector<double> parallelDistances(const ModelTree &tree, const std::vector<Vec3> &pts,
+                                      Progress &progress = Progress::none(),
+                                      const std::string &stage = {})
 {
     std::vector<double> d(pts.size());
+    ProgressCounter counter(progress, pts.size(), 1024, stage);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pts.size(), 1024),
                       [&](const tbb::blocked_range<std::size_t> &r) {
                           for (std::size_t i = r.begin(); i < r.end(); ++i)
                               d[i] = tree.distance(pts[i]);
+                          counter.add(r.size());
                       });
     return d;
 }
@@ -130,18 +136,35 @@ HausdorffResult hausdorffDistance(const Model &a, const Model &b, const Hausdorf
     const ModelTree treeA(a);
     const ModelTree treeB(b);
     progress.tick(0.1, "Hausdorff distance: input to output");
-    maxAndMean(parallelDistances(treeB, samplePoints(a, params.samplesPerSide)), r.aToB,
-               r.meanAToB);
+    {
+        Progress part(progress, 0.1, 0.5);
+        maxAndMean(parallelDistances(treeB, samplePoints(a, params.samplesPerSide), part,
+                                     "Hausdorff distance: input to output"),
+                   r.aToB, r.meanAToB);
+    }
     progress.tick(0.5, "Hausdorff distance: output to input");
-    maxAndMean(parallelDistances(treeA, samplePoints(b, params.samplesPerSide)), r.bToA,
-               r.meanBToA);
+    {
+        Progress part(progress, 0.5, 0.9);
+        maxAndMean(parallelDistances(treeA, samplePoints(b, params.samplesPerSide), part,
+                                     "Hausdorff distance: output to input"),
+                   r.bToA, r.meanBToA);
+    }
     r.symmetric = std::max(r.aToB, r.bToA);
     r.bboxDiagonal = boundingBoxDiagonal(a);
     r.symmetricPctBbox = r.bboxDiagonal > 0.0 ? 100.0 * r.symmetric / r.bboxDiagonal : 0.0;
     progress.tick(0.9, "Hausdorff distance: per vertex");
     r.vertexDistanceBToA.reserve(b.surfaces.size());
+    std::size_t total = 0, done = 0;
     for (const Surface &s : b.surfaces)
-        r.vertexDistanceBToA.push_back(parallelDistances(treeA, s.vertices));
+        total += s.vertices.size();
+    for (const Surface &s : b.surfaces) {
+        const double from = 0.9 + 0.1 * done / std::max<std::size_t>(total, 1);
+        done += s.vertices.size();
+        Progress part(progress, from, 0.9 + 0.1 * done / std::max<std::size_t>(total, 1));
+        part.tick(0.0, "Hausdorff distance: per vertex");
+        r.vertexDistanceBToA.push_back(
+            parallelDistances(treeA, s.vertices, part, "Hausdorff distance: per vertex"));
+    }
     progress.tick(1.0, "Hausdorff distance");
     return r;
 }

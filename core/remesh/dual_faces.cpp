@@ -36,9 +36,11 @@ public:
             m_facetOf.emplace(pairKey(cells.polygons[f].triangle, cells.polygons[f].site), f);
     }
 
-    std::vector<OutputTriangle> run()
+    std::vector<OutputTriangle> run(Progress &progress)
     {
+        progress.tick(0.0, "attachments");
         attachMultiPointPieces();
+        progress.tick(0.5, "triangles");
         vertexTriangles();
         return std::move(m_triangles);
     }
@@ -321,9 +323,10 @@ private:
 std::vector<OutputTriangle> buildDualFaces(const RestrictionDomain &domain,
                                            const RestrictedVoronoiDiagram &cells,
                                            const CellComponents &components,
-                                           const CellPoints &points, DualFaceCounts &counts)
+                                           const CellPoints &points, DualFaceCounts &counts,
+                                           Progress &progress)
 {
-    return Builder(domain, cells, components, points, counts).run();
+    return Builder(domain, cells, components, points, counts).run(progress);
 }
 
 } // namespace stratamesh

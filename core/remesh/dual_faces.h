@@ -14,6 +14,8 @@
 // triangles keep the input surface's orientation, which keeps region sides valid.
 #pragma once
 
+#include "common/progress.h"
+
 #include "remesh/output_points.h"
 
 namespace stratamesh {
@@ -29,6 +31,7 @@ struct DualFaceCounts {
 std::vector<OutputTriangle> buildDualFaces(const RestrictionDomain &domain,
                                            const RestrictedVoronoiDiagram &cells,
                                            const CellComponents &components,
-                                           const CellPoints &points, DualFaceCounts &counts);
+                                           const CellPoints &points, DualFaceCounts &counts,
+                                           Progress &progress = Progress::none());
 
 } // namespace stratamesh

@@ -200,12 +200,15 @@ std::vector<std::pair<int, int>> soupIntersections(const EditableSoup &soup)
 
 IntersectionRepairResult repairIntersections(EditableSoup &soup, const Model &input,
                                              const IntersectionRepairParams &params,
-                                             SimplificationLedger &ledger)
+                                             SimplificationLedger &ledger, Progress &progress)
 {
     IntersectionRepairResult result;
+    progress.tick(0.0, "search");
     std::vector<std::pair<int, int>> pairs = soupIntersections(soup);
     result.found = static_cast<int>(pairs.size());
+    // Each round is one search of the whole soup: the rounds share the first half of the bar.
     for (int round = 0; round < params.maxRounds && !pairs.empty(); ++round) {
+        progress.tick(0.5 * (round + 1) / (params.maxRounds + 1), "flips and moves");
         for (const auto &[t, u] : pairs) {
             if (!soup.alive(t) || !soup.alive(u) || !pairIntersects(soup, t, u))
                 continue;
@@ -219,6 +222,7 @@ IntersectionRepairResult repairIntersections(EditableSoup &soup, const Model &in
     // Merges go on while they make progress: each one removes at least one intersecting pair.
     for (int round = 0; params.allowMerges && round < 4 * params.maxRounds && !pairs.empty();
          ++round) {
+        progress.tick(0.5 + 0.5 * (round + 1) / (4 * params.maxRounds + 1), "merges");
         bool changed = false;
         for (const auto &[t, u] : pairs) {
             if (!soup.alive(t) || !soup.alive(u) || !pairIntersects(soup, t, u))

@@ -5,6 +5,8 @@
 // is reported as intersection_unresolved records.
 #pragma once
 
+#include "common/progress.h"
+
 #include "remesh/editable_soup.h"
 #include "remesh/simplification_ledger.h"
 
@@ -25,7 +27,8 @@ struct IntersectionRepairResult {
 
 IntersectionRepairResult repairIntersections(EditableSoup &soup, const Model &input,
                                              const IntersectionRepairParams &params,
-                                             SimplificationLedger &ledger);
+                                             SimplificationLedger &ledger,
+                                             Progress &progress = Progress::none());
 
 // Intersecting pairs with a triangle around one of the vertices (a linear scan: for a few).
 int intersectionsAroundVertices(const EditableSoup &soup, const std::vector<int> &vertices);

@@ -8,6 +8,8 @@
 // surface go back where they were.
 #pragma once
 
+#include "common/progress.h"
+
 #include "remesh/editable_soup.h"
 #include "remesh/input_projector.h"
 
@@ -19,7 +21,7 @@ struct SmoothingParams {
 };
 
 // Number of vertex moves kept.
-int relaxVertices(EditableSoup &soup, InputProjector &projector,
-                  const SmoothingParams &params = {});
+int relaxVertices(EditableSoup &soup, InputProjector &projector, const SmoothingParams &params = {},
+                  Progress &progress = Progress::none());
 
 } // namespace stratamesh

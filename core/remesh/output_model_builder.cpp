@@ -248,8 +248,10 @@ void recordEntityChanges(const Model &input, const Model &output, Simplification
                 0.0, "distance", "corner of the output with no counterpart in the input"));
 }
 
-Model buildOutputModel(const Model &input, const OutputMesh &mesh, SimplificationLedger &ledger)
+Model buildOutputModel(const Model &input, const OutputMesh &mesh, SimplificationLedger &ledger,
+                       Progress &progress)
 {
+    progress.tick(0.0, "surfaces");
     Model out;
     out.name = input.name;
     out.zPositiveDepth = input.zPositiveDepth;
@@ -293,7 +295,9 @@ Model buildOutputModel(const Model &input, const OutputMesh &mesh, Simplificatio
         out.regions.push_back({region.name, mapSides(region.boundaries)});
     out.universe = mapSides(input.universe);
     out.layers = input.layers;
+    progress.tick(0.3, "topology");
     out = recoverTopology(std::move(out));
+    progress.tick(0.8, "entity changes");
     recordEntityChanges(input, out, ledger);
     return out;
 }

@@ -5,6 +5,8 @@
 // position) so that every entity lost or created is a ledger record (thesis §4.6.1).
 #pragma once
 
+#include "common/progress.h"
+
 #include "remesh/output_mesh.h"
 #include "remesh/simplification_ledger.h"
 
@@ -12,7 +14,8 @@ namespace stratamesh {
 
 // `input` must have topology. Surfaces left without triangles are dropped from the output and
 // from region boundaries. The output has topology.
-Model buildOutputModel(const Model &input, const OutputMesh &mesh, SimplificationLedger &ledger);
+Model buildOutputModel(const Model &input, const OutputMesh &mesh, SimplificationLedger &ledger,
+                       Progress &progress = Progress::none());
 
 // Records surface, line and corner losses and creations between two models with topology whose
 // surfaces correspond by name.

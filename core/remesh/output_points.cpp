@@ -209,7 +209,8 @@ Vec3 mean(const std::vector<Vec3> &v)
 
 CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain,
                              const RestrictedVoronoiDiagram &cells, const CellComponents &cc,
-                             const CellPointsParams &params, SimplificationLedger &ledger)
+                             const CellPointsParams &params, SimplificationLedger &ledger,
+                             Progress &progress)
 {
     const double dResolution = params.dResolution;
     PointSet set;
@@ -218,7 +219,10 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
     std::vector<int> bcPoint(nb, -1), cellPoint(ncell, -1);
 
     // (1)+(2): one point per line component, at its corner, or its corners merged, or on it.
+    progress.tick(0.0, "points on lines");
     for (int b = 0; b < nb; ++b) {
+        if (b % 256 == 0)
+            progress.tick(0.3 * b / nb, "points on lines");
         OutputPoint p;
         p.site = cc.lineComponentSite[b];
         Part part;
@@ -268,6 +272,7 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
     }
 
     // (1) cell components without lines: centroid projected onto the component.
+    progress.tick(0.3, "points on surfaces");
     for (int c = 0; c < ncell; ++c) {
         if (!cc.cellLineComponents[c].empty() || cc.cellPieces[c].empty())
             continue;
@@ -316,6 +321,7 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
     }
 
     // (3) cell components with more than two points: merged onto the component.
+    progress.tick(0.6, "merges");
     for (int c = 0; c < ncell; ++c) {
         std::vector<int> roots;
         for (int b : cc.cellLineComponents[c])

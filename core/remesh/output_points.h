@@ -9,6 +9,8 @@
 // Every merge is a ledger record naming the input surfaces, lines and corners involved.
 #pragma once
 
+#include "common/progress.h"
+
 #include "remesh/cell_components.h"
 #include "remesh/output_mesh.h"
 #include "remesh/simplification_ledger.h"
@@ -34,6 +36,6 @@ struct CellPointsParams {
 CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain,
                              const RestrictedVoronoiDiagram &cells,
                              const CellComponents &components, const CellPointsParams &params,
-                             SimplificationLedger &ledger);
+                             SimplificationLedger &ledger, Progress &progress = Progress::none());
 
 } // namespace stratamesh

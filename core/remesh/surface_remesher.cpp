@@ -110,44 +110,71 @@ RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec
     result.strips = collapsed.removed;
     result.sites = sites;
     result.siteCount = static_cast<int>(sites.size());
+    // Shares of the mesh-building time measured on modelA5 at 5000 sites.
+    ProgressSteps steps(progress, {30, 5, 20, 15, 15, 10, 5});
     const RestrictionDomain domain = makeRestrictionDomain(input);
-    progress.tick(0.0, "restricted Voronoi diagram");
-    const RestrictedVoronoiDiagram rvd = computeRestrictedVoronoi(domain, sites);
-    progress.tick(0.3, "cell components");
-    const CellComponents components = computeCellComponents(domain, rvd);
+    RestrictedVoronoiDiagram rvd;
+    {
+        Progress step = steps.step(0, "restricted Voronoi diagram");
+        rvd = computeRestrictedVoronoi(domain, sites, step);
+    }
+    CellComponents components;
+    {
+        Progress step = steps.step(1, "cell components");
+        components = computeCellComponents(domain, rvd);
+    }
     CellPointsParams pointParams;
     pointParams.dResolution = params.dResolution;
     pointParams.mergeAllExtraPoints = params.mergeAllExtraPoints;
-    const CellPoints points =
-        computeCellPoints(input, domain, rvd, components, pointParams, result.ledger);
+    CellPoints points;
+    {
+        Progress step = steps.step(2, "cell points");
+        points =
+            computeCellPoints(input, domain, rvd, components, pointParams, result.ledger, step);
+    }
     OutputMesh mesh;
     mesh.points = points.points;
-    mesh.triangles = buildDualFaces(domain, rvd, components, points, result.faces);
-    progress.tick(0.5, "post-processing");
+    {
+        Progress step = steps.step(3, "dual faces");
+        mesh.triangles = buildDualFaces(domain, rvd, components, points, result.faces, step);
+    }
     EditableSoup soup(std::move(mesh));
-    const int fins = removeLineFins(soup);
-    const CleanupCounts v3 = removeValence3Vertices(soup, input, result.ledger);
-    result.cleanup = removeDegenerateTriangles(soup, input, params.cleanup, result.ledger);
-    result.cleanup.valence3 = v3.valence3;
-    result.cleanup.lineFins = fins;
-    result.duplicates = separateDuplicateTriangles(soup, input, result.ledger);
-    if (params.flips)
-        result.cleanup.flips += improveByFlips(soup);
-    if (params.smoothingPasses > 0) {
-        InputProjector projector(input);
-        SmoothingParams smoothing;
-        smoothing.passes = params.smoothingPasses;
-        result.cleanup.relaxed = relaxVertices(soup, projector, smoothing);
+    {
+        Progress step = steps.step(4, "post-processing");
+        step.tick(0.0, "fins and valence 3");
+        const int fins = removeLineFins(soup);
+        const CleanupCounts v3 = removeValence3Vertices(soup, input, result.ledger);
+        step.tick(0.2, "degenerate triangles");
+        result.cleanup = removeDegenerateTriangles(soup, input, params.cleanup, result.ledger);
+        result.cleanup.valence3 = v3.valence3;
+        result.cleanup.lineFins = fins;
+        step.tick(0.4, "duplicates");
+        result.duplicates = separateDuplicateTriangles(soup, input, result.ledger);
+        step.tick(0.6, "flips");
         if (params.flips)
             result.cleanup.flips += improveByFlips(soup);
+        if (params.smoothingPasses > 0) {
+            Progress smoothingStep(step, 0.7, 0.9, "smoothing");
+            InputProjector projector(input);
+            SmoothingParams smoothing;
+            smoothing.passes = params.smoothingPasses;
+            result.cleanup.relaxed = relaxVertices(soup, projector, smoothing, smoothingStep);
+            step.tick(0.9, "flips");
+            if (params.flips)
+                result.cleanup.flips += improveByFlips(soup);
+        }
     }
-    progress.tick(0.7, "intersections");
-    result.intersections = repairIntersections(soup, input, params.repair, result.ledger);
-    progress.tick(0.9, "output model");
-    result.model = buildOutputModel(input, soup.result(), result.ledger);
+    {
+        Progress step = steps.step(5, "intersections");
+        result.intersections = repairIntersections(soup, input, params.repair, result.ledger, step);
+    }
+    {
+        Progress step = steps.step(6, "output model");
+        result.model = buildOutputModel(input, soup.result(), result.ledger, step);
+    }
     result.timings.meshSeconds = secondsSince(start);
     result.timings.totalSeconds = result.timings.meshSeconds;
-    progress.tick(1.0, "done");
+    progress.tick(1.0);
     return result;
 }
 
@@ -214,25 +241,39 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
             "remesh: d_resolution " + number(params.dResolution)
             + " would merge features across a tenth of the model (bounding-box diagonal "
             + number(diagonal) + "); use at most " + number(kMaxDResolutionFraction * diagonal));
+    // The run's share of the bar: strips, CVT, mesh building, validity, then refinement rounds
+    // in the rest (each round half of what is left, so the bar never reaches its end early).
     SimplificationLedger ledger;
-    const StripCollapse collapsed =
-        stripsRemoved(input, edgeLengthForSites(area, n), params, ledger, progress);
+    StripCollapse collapsed;
+    {
+        Progress strips(progress, 0.0, 0.03, "Thin strips");
+        collapsed = stripsRemoved(input, edgeLengthForSites(area, n), params, ledger, strips);
+    }
     const Model &simplified = collapsed.model;
     const RestrictionDomain domain = makeRestrictionDomain(
         simplified, params.adaptive ? adaptiveDensity(simplified, params) : std::vector<double>{});
     CvtParams cvt;
     cvt.iterations = params.iterations;
     cvt.alpha = params.boundaryWeight;
+    Progress cvtProgress(progress, 0.03, 0.55, "CVT");
     const CvtResult optimised =
         params.iterations > 0
-            ? optimizeCvt(domain, sampleSurfaces(domain, n, params.seed), cvt, progress)
+            ? optimizeCvt(domain, sampleSurfaces(domain, n, params.seed), cvt, cvtProgress)
             : CvtResult{};
     std::vector<Vec3> sites =
         params.iterations > 0 ? optimised.sites : sampleSurfaces(domain, n, params.seed);
     const double sampling = secondsSince(start);
     const std::size_t stripRecords = ledger.size();
-    RemeshResult result = meshFromSites(collapsed, sites, params, ledger, progress);
-    result.validity = checkValidity(result.model);
+    RemeshResult result;
+    {
+        Progress building(progress, 0.55, 0.8, "Mesh building");
+        result = meshFromSites(collapsed, sites, params, ledger, building);
+    }
+    {
+        Progress validity(progress, 0.8, 0.85, "Validity");
+        result.validity = checkValidity(result.model, validity);
+    }
+    double at = 0.85; // where the next refinement round starts on this run's bar
 
     // Rounds of local refinement where the output is wrong (topology_refinement.h).
     std::vector<double> density = domain.density;
@@ -281,14 +322,27 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
             break;
         sites.insert(sites.end(), added.begin(), added.end());
         ++rounds;
+        Progress round(progress, at, at + 0.5 * (1.0 - at),
+                       "Refinement round " + std::to_string(rounds));
+        at += 0.5 * (1.0 - at);
+        ProgressSteps roundSteps(round, {4, 5, 1});
         RestrictionDomain refined = domain;
         refined.density = density;
         CvtParams local = cvt;
         local.iterations = params.refinementIterations;
-        if (local.iterations > 0)
-            sites = optimizeCvt(refined, sites, local, progress).sites;
-        RemeshResult again = meshFromSites(collapsed, sites, params, ledger, progress);
-        again.validity = checkValidity(again.model);
+        if (local.iterations > 0) {
+            Progress step = roundSteps.step(0, "CVT");
+            sites = optimizeCvt(refined, sites, local, step).sites;
+        }
+        RemeshResult again;
+        {
+            Progress step = roundSteps.step(1, "Mesh building");
+            again = meshFromSites(collapsed, sites, params, ledger, step);
+        }
+        {
+            Progress step = roundSteps.step(2, "Validity");
+            again.validity = checkValidity(again.model, step);
+        }
         // A round is kept only when it improves (validity first, then topology edits): the next
         // round still starts from its sites, but the result never gets worse by refining.
         const bool fixesValidity = again.validity.problems.size() < best.validity.problems.size();
@@ -322,7 +376,8 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         && params.refinementRounds > 0) {
         RemeshParams keepStrips = params;
         keepStrips.stripWidthFactor = 0.0;
-        RemeshResult again = remeshModel(input, keepStrips, progress);
+        Progress rerun(progress, at, 1.0, "Keeping the thin strips");
+        RemeshResult again = remeshModel(input, keepStrips, rerun);
         if (again.validity.problems.size() < result.validity.problems.size()) {
             again.timings.samplingSeconds += result.timings.samplingSeconds;
             again.timings.meshSeconds += result.timings.meshSeconds;

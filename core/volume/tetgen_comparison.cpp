@@ -1,7 +1,7 @@
 #include "volume/tetgen_comparison.h"
 
+#include "common/progress.h"
 #include "model/region_volume.h"
-#include "volume/progress_range.h"
 
 namespace stratamesh {
 
@@ -29,9 +29,9 @@ TetmeshComparison compareTetmeshes(const Model &input, const Model &output,
                                    const TetgenParams &params, Progress &progress)
 {
     TetmeshComparison c;
-    Progress first = progressRange(progress, 0.0, 0.5);
+    Progress first(progress, 0.0, 0.5, "input");
     c.input = tetmeshModel(input, params, first);
-    Progress second = progressRange(progress, 0.5, 1.0);
+    Progress second(progress, 0.5, 1.0, "remesh");
     c.output = tetmeshModel(output, params, second);
     progress.tick(1.0, "TetGen comparison done");
     return c;

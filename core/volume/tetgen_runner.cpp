@@ -1,12 +1,12 @@
 #include "volume/tetgen_runner.h"
 
 #include "common/error.h"
+#include "common/progress.h"
 #include "io/number_text.h"
 #include "model/validity.h"
 #include "params/param_tables.h"
 #include "volume/child_process.h"
 #include "volume/plc.h"
-#include "volume/progress_range.h"
 #include "volume/region_winding.h"
 #include "volume/tetgen_helper_path.h"
 #include "volume/tetgen_poly_writer.h"

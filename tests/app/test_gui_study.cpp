@@ -5,6 +5,7 @@
 #include "image_compare.h"
 #include "ledger_panel.h"
 #include "ledger_table_model.h"
+#include "main_window.h"
 #include "model_scene.h"
 #include "study_window.h"
 #include "task_result_window.h"
@@ -19,6 +20,8 @@
 #include <QJsonDocument>
 #include <QLineEdit>
 #include <QLineSeries>
+#include <QMenu>
+#include <QMenuBar>
 #include <QSortFilterProxyModel>
 #include <QSurfaceFormat>
 #include <QTableView>
@@ -118,6 +121,19 @@ private slots:
         QDir().mkpath(shots);
         QVERIFY(saveWindowScreenshot(&window, shots + "/study_window.png"));
         QVERIFY(saveWindowScreenshot(task, shots + "/study_task.png"));
+    }
+
+    void fileMenuOpensTheStudy()
+    {
+        MainWindow window;
+        QVERIFY(window.openStudyAction());
+        QVERIFY(!window.openStudyAction()->text().isEmpty());
+        QVERIFY(window.menuBar()->actions().first()->menu()->actions().contains(
+            window.openStudyAction()));
+        window.openStudy(m_dir.filePath("out/study.json"));
+        QVERIFY(window.studyWindow());
+        QVERIFY(QTest::qWaitForWindowExposed(window.studyWindow()));
+        QCOMPARE(window.studyWindow()->table()->model()->rowCount(), 6);
     }
 
     void aStudyWithoutATableSaysSo()

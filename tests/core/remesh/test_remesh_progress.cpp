@@ -1,0 +1,150 @@
+// Scoped progress through a whole remesh of a real model (modelA5 at 5000 sites, the GUI's
+// case, through remeshAndReview()): the fraction never goes back, the stages are named down to the
+// mesh-building steps, the longest gap between two ticks stays short enough for Cancel to act
+// quickly, and a cancel asked during mesh building stops the run at its next tick.
+#include "remesh/remesh_review.h"
+
+#include "common/progress.h"
+#include "io/model_reader.h"
+#include "model/topology.h"
+#include "support/test_data.h"
+
+#include <QtTest>
+
+#include <algorithm>
+#include <chrono>
+#include <functional>
+#include <mutex>
+
+using namespace stratamesh;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Tick {
+    double seconds;
+    double fraction;
+    std::string stage;
+};
+
+// The test hook: every tick the root sees, with its time since the start.
+struct TickRecorder {
+    Clock::time_point start = Clock::now();
+    std::mutex mutex;
+    std::vector<Tick> ticks;
+
+    Progress::Callback callback()
+    {
+        return [this](double fraction, const std::string &stage) {
+            const double s = std::chrono::duration<double>(Clock::now() - start).count();
+            std::lock_guard<std::mutex> lock(mutex);
+            ticks.push_back({s, fraction, stage});
+        };
+    }
+};
+
+RemeshParams paramsAt5000()
+{
+    RemeshParams p;
+    p.sites = 5000;
+    return p;
+}
+
+} // namespace
+
+class TestRemeshProgress : public QObject {
+    Q_OBJECT
+private slots:
+    void ticksOften();
+    void cancelDuringMeshBuilding();
+};
+
+void TestRemeshProgress::ticksOften()
+{
+    STRATAMESH_REQUIRE_DATA(path, "modelA5.ml");
+    const Model model = recoverTopology(readModel(path.toStdString()));
+    TickRecorder recorder;
+    Progress progress(recorder.callback());
+    recorder.start = Clock::now();
+    // The whole workflow the front ends run: remesh, comparison, validity of both sides.
+    const RemeshReview review = remeshAndReview(model, paramsAt5000(), {}, progress);
+    const RemeshResult &result = review.result;
+    const double end = std::chrono::duration<double>(Clock::now() - recorder.start).count();
+    QVERIFY(result.model.surfaces.size() > 0);
+    QVERIFY(recorder.ticks.size() > 20);
+
+    double gap = recorder.ticks.front().seconds;
+    std::string before = "(start)", after = recorder.ticks.front().stage;
+    bool sawDualFaces = false, sawComparison = false;
+    for (std::size_t i = 0; i < recorder.ticks.size(); ++i) {
+        const Tick &t = recorder.ticks[i];
+        if (i > 0) {
+            QVERIFY2(t.fraction >= recorder.ticks[i - 1].fraction, t.stage.c_str());
+            const double g = t.seconds - recorder.ticks[i - 1].seconds;
+            if (g > gap) {
+                gap = g;
+                before = recorder.ticks[i - 1].stage;
+                after = t.stage;
+            }
+        }
+        QVERIFY(t.fraction >= 0.0 && t.fraction <= 1.0);
+        if (t.stage.find("Mesh building: dual faces (4/7)") != std::string::npos)
+            sawDualFaces = true;
+        if (t.stage.find("Comparing with the input: Hausdorff") != std::string::npos)
+            sawComparison = true;
+    }
+    if (end - recorder.ticks.back().seconds > gap) {
+        gap = end - recorder.ticks.back().seconds;
+        before = recorder.ticks.back().stage;
+        after = "(end)";
+    }
+    QVERIFY(sawDualFaces);
+    QVERIFY(sawComparison);
+    QCOMPARE(recorder.ticks.back().fraction, 1.0);
+    QCOMPARE(review.comparison.output.resolution, std::to_string(result.siteCount));
+    // The five longest gaps, named by the tick that ends each: where to add ticks next.
+    std::vector<std::pair<double, std::string>> gaps;
+    for (std::size_t i = 1; i < recorder.ticks.size(); ++i)
+        gaps.push_back({recorder.ticks[i].seconds - recorder.ticks[i - 1].seconds,
+                        recorder.ticks[i - 1].stage + " -> " + recorder.ticks[i].stage});
+    std::sort(gaps.begin(), gaps.end(), std::greater<>());
+    for (std::size_t i = 0; i < gaps.size() && i < 5; ++i)
+        qInfo("gap %.3f s: %s", gaps[i].first, gaps[i].second.c_str());
+    qInfo("%zu ticks in %.2f s; longest gap %.3f s, between '%s' and '%s'", recorder.ticks.size(),
+          end, gap, before.c_str(), after.c_str());
+    // Twice the goal of 0.2 s: the machine running the suite may be shared.
+    QVERIFY2(gap < 0.4, qPrintable(QString::number(gap)));
+}
+
+void TestRemeshProgress::cancelDuringMeshBuilding()
+{
+    STRATAMESH_REQUIRE_DATA(path, "modelA5.ml");
+    const Model model = recoverTopology(readModel(path.toStdString()));
+    Clock::time_point cancelledAt;
+    bool asked = false;
+    Progress *self = nullptr;
+    // Cancel as the GUI does, once mesh building has started; the next tick must throw.
+    Progress progress([&](double, const std::string &stage) {
+        if (!asked && stage.find("Mesh building: cell points") != std::string::npos) {
+            asked = true;
+            cancelledAt = Clock::now();
+            self->cancel();
+        }
+    });
+    self = &progress;
+    bool threw = false;
+    try {
+        remeshModel(model, paramsAt5000(), progress);
+    } catch (const Cancelled &) {
+        threw = true;
+    }
+    const double late = std::chrono::duration<double>(Clock::now() - cancelledAt).count();
+    QVERIFY(asked);
+    QVERIFY(threw);
+    qInfo("stopped %.3f s after the cancel", late);
+    QVERIFY2(late < 0.5, qPrintable(QString::number(late)));
+}
+
+QTEST_GUILESS_MAIN(TestRemeshProgress)
+#include "test_remesh_progress.moc"
