@@ -9,7 +9,9 @@
 // GCC 12 reports a false -Wmaybe-uninitialized inside OpenMesh's property containers (a
 // value-initialized VectorT); it is raised while inlining, so it is silenced for this file.
 #pragma GCC diagnostic push
+#if defined(__GNUC__) && !defined(__clang__) // clang has no such warning group
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 

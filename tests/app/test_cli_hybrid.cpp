@@ -22,7 +22,7 @@ private slots:
     {
         STRATAMESH_REQUIRE_DATA(path, "modelA1.ml");
         QTemporaryDir dir;
-        for (const QString ext : {QStringLiteral("vtu"), QStringLiteral("msh")}) {
+        for (const QString &ext : {QStringLiteral("vtu"), QStringLiteral("msh")}) {
             const QString out = dir.filePath("a1." + ext), report = dir.filePath("a1.json");
             const CliRun run =
                 runCli({"hybrid", path, "--sites", "1000", "-o", out, "--report", report}, 600000);
