@@ -3,7 +3,8 @@
 # each for a bounded time under CTest (label fuzz), seeded with tests/fuzz/seeds, the committed
 # hostile inputs of tests/fuzz/regressions (each also run once as a regression test) and the real
 # models of ../shared/data; then prints how many inputs each fuzzer ran.
-# Usage: scripts/fuzz.sh [SECONDS_EACH]   (default 15; FUZZ_BUILD=dir for another build folder)
+# Usage: scripts/fuzz.sh [SECONDS_EACH]   (default 15; FUZZ_BUILD=dir for another build folder;
+#        FUZZ_SEED=N for a fixed libFuzzer seed, as CI does; unset: random)
 # A finding fails the run and is saved as build-fuzz/fuzz/<harness>-crash-* (or leak-, oom-,
 # timeout-): reproduce with build-fuzz/fuzz/fuzz_<harness> FILE, then commit it to
 # tests/fuzz/regressions/<harness>/ with the fix.
@@ -19,7 +20,8 @@ export CCACHE_MAXSIZE="${CCACHE_MAXSIZE:-5G}"
 start=$(date +%s)
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-    -DSTRATAMESH_FUZZ=ON -DSTRATAMESH_BUILD_GUI=OFF -DSTRATAMESH_FUZZ_SECONDS="$seconds" >/dev/null
+    -DSTRATAMESH_FUZZ=ON -DSTRATAMESH_BUILD_GUI=OFF -DSTRATAMESH_FUZZ_SECONDS="$seconds" \
+    -DSTRATAMESH_FUZZ_SEED="${FUZZ_SEED:-0}" >/dev/null
 cmake --build "$build" -j "$jobs" --target fuzz
 built=$(date +%s)
 echo "fuzz: harnesses built in $((built - start)) s"

@@ -208,6 +208,7 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
     VtkLegacyCounts counts;
     bool version5 = false;
     bool binary = false;
+    int unstructuredLine = 0; // line of DATASET UNSTRUCTURED_GRID, 0 for poly data
     std::string text;
     for (int line = 1; std::getline(in, text); ++line) {
         if (line == 1) {
@@ -234,6 +235,8 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
                     path, line,
                     "DATASET " + (w.size() < 2 ? std::string() : w[1])
                         + " is not read by StrataMesh (UNSTRUCTURED_GRID or POLYDATA only)");
+            if (w[1] == "UNSTRUCTURED_GRID")
+                unstructuredLine = line;
         } else if (key == "POINTS") {
             counts.points = {scan.count(w, 1, 3, line), line};
         } else if (key == "CELLS" || key == "POLYGONS" || key == "LINES" || key == "VERTICES"
@@ -258,6 +261,12 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
         } else if (key == "CELL_TYPES") {
             counts.cellTypes = {scan.count(w, 1, 1, line), line};
         } else if (key == "CELL_DATA") {
+            // VTK 9.1's unstructured grid reader dereferences its cell arrays when cell data
+            // comes before them (fuzz_vtk_legacy finding: a SEGV in ReadMeshSimple).
+            if (unstructuredLine && (counts.cells.value < 0 || counts.cellTypes.value < 0))
+                throw FileError(path, line,
+                                "CELL_DATA comes before the CELLS and CELL_TYPES of the "
+                                "unstructured grid");
             counts.cellData = {scan.count(w, 1, 1, line), line};
         } else if (key == "POINT_DATA") {
             counts.pointData = {scan.count(w, 1, 1, line), line};
