@@ -8,7 +8,9 @@
 // GCC 12 reports a false -Wmaybe-uninitialized inside OpenMesh's property containers while
 // inlining (as in surface_mesh_reader.cpp); silenced for this file.
 #pragma GCC diagnostic push
+#if defined(__GNUC__) && !defined(__clang__) // clang has no such warning group
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 

@@ -8,7 +8,9 @@
 #include "test_roundtrip_meshes.h"
 
 #pragma GCC diagnostic push
+#if defined(__GNUC__) && !defined(__clang__) // clang has no such warning group
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #pragma GCC diagnostic pop
