@@ -1,38 +1,17 @@
 #include "io/atomic_file.h"
 
 #include "common/error.h"
+#include "io/file_mode.h"
 
 #include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <fcntl.h>
-#include <fstream>
 #include <streambuf>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
 
 namespace stratamesh {
-
-namespace {
-
-std::string systemError(int error)
-{
-    return std::strerror(error);
-}
-
-// The process umask without changing it (reading it with umask() races with other threads).
-mode_t currentUmask()
-{
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line))
-        if (line.rfind("Umask:", 0) == 0)
-            return static_cast<mode_t>(std::stoul(line.substr(6), nullptr, 8));
-    return 022;
-}
-
-} // namespace
 
 // A streambuf over a file descriptor that remembers the first write error instead of throwing.
 class AtomicFile::Buffer : public std::streambuf {

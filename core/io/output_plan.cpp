@@ -1,9 +1,9 @@
 #include "io/output_plan.h"
 
 #include "common/error.h"
+#include "io/file_mode.h"
 
 #include <cerrno>
-#include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
@@ -20,22 +20,6 @@ std::string folderOf(const std::string &path)
     if (slash == std::string::npos)
         return ".";
     return slash == 0 ? std::string("/") : path.substr(0, slash);
-}
-
-std::string systemError(int error)
-{
-    return std::strerror(error);
-}
-
-// The process umask without changing it (reading it with umask() races with other threads).
-mode_t currentUmask()
-{
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line))
-        if (line.rfind("Umask:", 0) == 0)
-            return static_cast<mode_t>(std::stoul(line.substr(6), nullptr, 8));
-    return 022;
 }
 
 } // namespace
