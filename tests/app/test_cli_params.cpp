@@ -3,6 +3,7 @@
 // one, and `remesh --params REPORT.json` repeats the reported run bit for bit.
 #include "cli_runner.h"
 #include "support/test_data.h"
+#include "test_files.h"
 
 #include <QFile>
 #include <QJsonDocument>
@@ -11,22 +12,9 @@
 #include <QtTest>
 
 using stratamesh::test::CliRun;
+using stratamesh::test::readAll;
+using stratamesh::test::readJson;
 using stratamesh::test::runCli;
-
-namespace {
-
-QByteArray readAll(const QString &path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
-QJsonObject readObject(const QString &path)
-{
-    return QJsonDocument::fromJson(readAll(path)).object();
-}
-
-} // namespace
 
 class TestCliParams : public QObject {
     Q_OBJECT
@@ -131,7 +119,7 @@ private slots:
                     "--strip-factor", "0.3", "--merge-all", "--refinement-rounds", "1",
                     "--allow-invalid", "-o", first, "--report", report});
         QVERIFY2(run.finished && run.exitCode == 0, qPrintable(run.err));
-        const QJsonObject parameters = readObject(report)[QStringLiteral("parameters")].toObject();
+        const QJsonObject parameters = readJson(report)[QStringLiteral("parameters")].toObject();
         QCOMPARE(parameters[QStringLiteral("merge_all")].toBool(), true);
         QCOMPARE(parameters[QStringLiteral("strip_factor")].toDouble(), 0.3);
         QCOMPARE(parameters[QStringLiteral("edge_length")].toDouble(), 1100.0);
@@ -145,7 +133,7 @@ private slots:
         const QByteArray a = readAll(first), b = readAll(second);
         QVERIFY(!a.isEmpty());
         QVERIFY2(a == b, "the rerun from the report wrote another model");
-        QCOMPARE(readObject(secondReport)[QStringLiteral("parameters")].toObject(), parameters);
+        QCOMPARE(readJson(secondReport)[QStringLiteral("parameters")].toObject(), parameters);
 
         // A flag given with --params overrides the file's value.
         const QString third = dir.filePath(QStringLiteral("third.ml"));
@@ -154,7 +142,7 @@ private slots:
             runCli({"remesh", "--params", report, "--iterations", "3", "--sites", "300", path,
                     "--allow-invalid", "-o", third, "--report", thirdReport});
         QVERIFY2(overridden.finished && overridden.exitCode == 0, qPrintable(overridden.err));
-        const QJsonObject p3 = readObject(thirdReport)[QStringLiteral("parameters")].toObject();
+        const QJsonObject p3 = readJson(thirdReport)[QStringLiteral("parameters")].toObject();
         QCOMPARE(p3[QStringLiteral("iterations")].toInt(), 3);
         QCOMPARE(p3[QStringLiteral("sites")].toInt(), 300);
         QCOMPARE(p3[QStringLiteral("edge_length")].toDouble(), 0.0);

@@ -1,6 +1,7 @@
 // stratamesh-cli study: the plan, clear errors for bad study files, a local run that records a
 // broken model's failure while the other tasks finish, and resumption after a fix or a kill.
 #include "cli_runner.h"
+#include "test_files.h"
 
 #include <QDir>
 #include <QFile>
@@ -17,21 +18,6 @@
 using namespace stratamesh::test;
 
 namespace {
-
-void writeText(const QString &path, const QByteArray &text)
-{
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(text);
-}
-
-QJsonObject readJson(const QString &path)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return {};
-    return QJsonDocument::fromJson(file.readAll()).object();
-}
 
 // Task folders that hold a status.json, by folder name → finished_at.
 QMap<QString, QString> finishedTasks(const QString &output)

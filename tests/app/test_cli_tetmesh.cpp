@@ -5,6 +5,7 @@
 #include "cli_runner.h"
 #include "io/gocad_writer.h"
 #include "io/model_reader.h"
+#include "test_files.h"
 
 #include <QDir>
 #include <QFile>
@@ -21,14 +22,6 @@ using namespace stratamesh;
 using namespace stratamesh::test;
 
 namespace {
-
-QJsonObject readJson(const QString &path)
-{
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return {};
-    return QJsonDocument::fromJson(f.readAll()).object();
-}
 
 // The pid of a child of `parent` named stratamesh-tetgen (comm is cut at 15 characters), or 0.
 int helperChild(qint64 parent)

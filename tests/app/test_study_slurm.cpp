@@ -4,6 +4,7 @@
 // after its fix. Needs root, as slurmd does; the services it started are stopped by their pids.
 #include "cli_runner.h"
 #include "support/test_data.h"
+#include "test_files.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -22,21 +23,6 @@
 using namespace stratamesh::test;
 
 namespace {
-
-void writeText(const QString &path, const QByteArray &text)
-{
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(text);
-}
-
-QJsonObject readJson(const QString &path)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return {};
-    return QJsonDocument::fromJson(file.readAll()).object();
-}
 
 QJsonObject statusOf(const QString &study)
 {
