@@ -72,7 +72,13 @@ Vec3 closestOn(const Part &part, const Vec3 &x)
             continue;
         const K::Point_3 p = tri.supporting_plane().projection(cg(x));
         Vec3 q = eg(p);
-        if (!tri.has_on(p)) {
+        // Inside by the signs of the edge normals: Triangle_3::has_on in Simple_cartesian<double>
+        // asks an exact barycentric sum, so points well inside were taken for outside.
+        const Vec3 n = (t.b - t.a).cross(t.c - t.a);
+        const bool inside = n.dot((t.b - t.a).cross(q - t.a)) >= 0
+                            && n.dot((t.c - t.b).cross(q - t.b)) >= 0
+                            && n.dot((t.a - t.c).cross(q - t.c)) >= 0;
+        if (!inside) {
             // Outside: the nearest point is on an edge.
             double edgeBest = std::numeric_limits<double>::max();
             for (const auto &[u, v] :

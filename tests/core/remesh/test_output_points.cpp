@@ -76,11 +76,7 @@ private slots:
             offCentroid = std::max(offCentroid, d.norm());
             sitesWithPoint.insert(point.site);
         }
-        // The centroid of a square cell is its site. Known defect: closestOn() in
-        // output_points.cpp tests "inside the facet" with CGAL Simple_cartesian<double>
-        // Triangle_3::has_on, which asks alpha + beta + gamma == 1 exactly, so most centroids
-        // fall back to the nearest facet edge (here up to 1/56 away, an input grid line).
-        QEXPECT_FAIL("", "output_points.cpp closestOn: inexact Triangle_3::has_on", Continue);
+        // The centroid of a square cell is its site (inside its facet, not snapped to an edge).
         QVERIFY2(offCentroid < 1e-12, qPrintable(QString::number(offCentroid)));
         QCOMPARE(int(sitesWithPoint.size()), k * k);
     }
