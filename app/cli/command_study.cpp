@@ -36,6 +36,44 @@ bool commandHasOption(const QString &step, const QString &flag)
     return QString::fromStdString(commandArguments(*command)).contains(word);
 }
 
+// A grid value must lie in its option's range, so that a study fails at --plan, not in its tasks.
+QString optionValueError(const QString &step, const QString &flag, const QJsonValue &value)
+{
+    const Command *command = findCommand(step);
+    if (!command)
+        return {};
+    for (const ParamInfo &info : commandParams(*command)) {
+        if (QString::fromStdString(info.flag) != flag)
+            continue;
+        if (info.type == ParamType::Flag)
+            return value.isBool() ? QString()
+                                  : QStringLiteral("%1 is on or off: true or false").arg(flag);
+        std::vector<double> numbers;
+        if (value.isDouble()) {
+            numbers.push_back(value.toDouble());
+        } else if (value.isString()) {
+            // "1000" as the command line would take it; "100,1000" for a list.
+            const QStringList parts = info.type == ParamType::IntList
+                                          ? value.toString().split(QLatin1Char(','))
+                                          : QStringList{value.toString()};
+            for (const QString &part : parts) {
+                bool ok = false;
+                numbers.push_back(part.trimmed().toDouble(&ok));
+                if (!ok)
+                    return QStringLiteral("%1 takes a number, not '%2'")
+                        .arg(flag, value.toString());
+            }
+        } else {
+            return QStringLiteral("%1 takes a number, not true/false").arg(flag);
+        }
+        for (double v : numbers)
+            if (const std::string why = paramValueError(info, v); !why.empty())
+                return QString::fromStdString(why);
+        return {};
+    }
+    return {}; // an option outside the tables (an output path, a switch): the command checks it
+}
+
 QString cliPath()
 {
     return QCoreApplication::applicationFilePath();
@@ -104,7 +142,7 @@ int runStudy(CommandArgs &args)
     if (submit && *submit != QLatin1String("slurm"))
         throw UsageError(QStringLiteral("--submit knows only 'slurm', not '%1'").arg(*submit));
 
-    const Study study = readStudy(path, commandHasOption);
+    const Study study = readStudy(path, commandHasOption, optionValueError);
     const std::vector<StudyTask> tasks = planTasks(study);
 
     if (plan) {

@@ -81,7 +81,7 @@ const std::vector<GridAxis> &Study::axes(const QString &step) const
     return none;
 }
 
-Study readStudy(const QString &path, const OptionCheck &hasOption)
+Study readStudy(const QString &path, const OptionCheck &hasOption, const ValueCheck &checkValue)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
@@ -189,6 +189,11 @@ Study readStudy(const QString &path, const OptionCheck &hasOption)
                          where
                              + QStringLiteral(": values are numbers, strings or "
                                               "true/false"));
+                if (checkValue) {
+                    if (const QString why = checkValue(step, QStringLiteral("--") + key, value);
+                        !why.isEmpty())
+                        fail(path, 0, where + QStringLiteral(": ") + why);
+                }
                 axis.values.push_back(value);
             }
             axes.push_back(std::move(axis));

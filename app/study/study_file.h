@@ -38,9 +38,14 @@ const QStringList &knownSteps();
 
 // True when stratamesh-cli's command `step` has the option `flag` ("--sites").
 using OptionCheck = std::function<bool(const QString &step, const QString &flag)>;
+// Why `value` makes no sense for the option (its range, from the parameter table), or empty.
+using ValueCheck =
+    std::function<QString(const QString &step, const QString &flag, const QJsonValue &value)>;
 
 // Reads and checks a study file; FileError names the file, the line where there is one, and
-// the cause (unknown key or step, an option the step does not have, a model matching no file).
-Study readStudy(const QString &path, const OptionCheck &hasOption);
+// the cause (unknown key or step, an option the step does not have, a value out of the option's
+// range, a model matching no file).
+Study readStudy(const QString &path, const OptionCheck &hasOption,
+                const ValueCheck &checkValue = {});
 
 } // namespace stratamesh::study

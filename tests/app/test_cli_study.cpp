@@ -102,6 +102,16 @@ private slots:
         QTest::newRow("option the study sets")
             << "{\"schema_version\": 1, \"grid\": {\"remesh\": {\"o\": [\"x.ml\"]}}, " + ok + "}"
             << "the study sets --o itself";
+        QTest::newRow("value out of range")
+            << "{\"schema_version\": 1, \"grid\": {\"remesh\": {\"sites\": [100, 2]}}, " + ok + "}"
+            << "grid.remesh.sites: is 2, outside [4,";
+        QTest::newRow("text for a number")
+            << "{\"schema_version\": 1, \"grid\": {\"remesh\": {\"sites\": [\"many\"]}}, " + ok
+                   + "}"
+            << "--sites takes a number, not 'many'";
+        QTest::newRow("number for a switch")
+            << "{\"schema_version\": 1, \"grid\": {\"remesh\": {\"adaptive\": [1]}}, " + ok + "}"
+            << "--adaptive is on or off";
         QTest::newRow("missing model")
             << QByteArray(R"({"schema_version": 1, "models": ["nowhere.ml"], "steps": ["remesh"],
                 "output": "o"})")
