@@ -1,13 +1,16 @@
-// stratamesh-bench [--case a|b|complexity|remesh|all] [--data-dir DIR] [--iterations N] [--threads
-// N] [--alpha A]
+// stratamesh-bench [--case a|b|complexity|remesh|hybrid|all] [--data-dir DIR] [--iterations N]
+// [--threads N] [--alpha A]
 //                  [--neighbours delaunay|nearest|both] [--repeat N]
 // Prints the Voronoi engine figures of issue 3: (a) modelA5 at 5000 sites, (b) a generated
 // surface of 1,000,000 triangles at 30,000 sites, 100 iterations each by default, with the
 // Delaunay neighbours and with the k nearest ones (same diagram, voronoi_neighbours.h); and the
 // complexity section (issue 5: Tables 3.2-3.4 beside the thesis, 10,000 cells on modelA5).
-// --repeat N runs cases (a), (b) and our remesh N times and prints the spread of their timings.
+// The hybrid section (issue 19): modelA1 at 5000 sites, the share of each stage.
+// --repeat N runs cases (a), (b), our remesh and the hybrid mesh N times and prints the spread of
+// their timings.
 #include "bench_cases.h"
 #include "bench_complexity.h"
+#include "bench_hybrid.h"
 #include "bench_remesh.h"
 
 #include "io/model_reader.h"
@@ -96,7 +99,8 @@ int main(int argc, char **argv)
         else {
             std::fprintf(
                 stderr,
-                "usage: stratamesh-bench [--case a|b|complexity|remesh|all] [--data-dir DIR] "
+                "usage: stratamesh-bench [--case a|b|complexity|remesh|hybrid|all] [--data-dir "
+                "DIR] "
                 "[--iterations N] "
                 "[--threads N] [--alpha A] [--neighbours delaunay|nearest|both] [--repeat N]\n");
             return 2;
@@ -141,6 +145,9 @@ int main(int argc, char **argv)
             return 1;
         if ((which == "remesh" || which == "all")
             && bench::runRemeshBench(dataDir, threads, iterations, repeat) != 0)
+            return 1;
+        if ((which == "hybrid" || which == "all")
+            && bench::runHybridBench(dataDir, threads, repeat) != 0)
             return 1;
     } catch (const std::exception &e) {
         std::fprintf(stderr, "stratamesh-bench: %s\n", e.what());
