@@ -1167,6 +1167,38 @@ angle (°)</source>
         <source>When TetGen refines the surfaces it merges nearly coplanar triangles, which moves region volumes by about 1e-6; this keeps them exact (its M switch) but refines much more.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Number of volume &amp;sites:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sites of the volumetric centroidal Voronoi diagram of the model&apos;s box; the surfaces are remeshed from them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Thin-layer ratio:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A cell between two surface triangles becomes a prism or a pyramid when its height is below this ratio times its triangles&apos; size.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Volume CVT &amp;iterations:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lloyd iterations of the volumetric centroidal Voronoi diagram.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest quad &amp;warp:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Angle between the two halves of a prism&apos;s or pyramid&apos;s quad face above which the cell is left to the tets.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RemeshController</name>

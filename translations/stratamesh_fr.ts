@@ -1169,6 +1169,38 @@ min. (°)</translation>
         <source>When TetGen refines the surfaces it merges nearly coplanar triangles, which moves region volumes by about 1e-6; this keeps them exact (its M switch) but refines much more.</source>
         <translation>Quand TetGen raffine les surfaces, il fusionne les triangles presque coplanaires, ce qui change les volumes des régions d&apos;environ 1e-6 ; cette option les garde exacts (son option M) mais raffine bien plus.</translation>
     </message>
+    <message>
+        <source>Number of volume &amp;sites:</source>
+        <translation>Nombre de &amp;sites volumiques :</translation>
+    </message>
+    <message>
+        <source>Sites of the volumetric centroidal Voronoi diagram of the model&apos;s box; the surfaces are remeshed from them.</source>
+        <translation>Sites du diagramme de Voronoï centroïdal volumique de la boîte du modèle ; les surfaces sont remaillées à partir d&apos;eux.</translation>
+    </message>
+    <message>
+        <source>&amp;Thin-layer ratio:</source>
+        <translation>Rapport de couche &amp;mince :</translation>
+    </message>
+    <message>
+        <source>A cell between two surface triangles becomes a prism or a pyramid when its height is below this ratio times its triangles&apos; size.</source>
+        <translation>Une cellule entre deux triangles de surface devient un prisme ou une pyramide quand sa hauteur est inférieure à ce rapport fois la taille de ses triangles.</translation>
+    </message>
+    <message>
+        <source>Volume CVT &amp;iterations:</source>
+        <translation>&amp;Itérations du CVT volumique :</translation>
+    </message>
+    <message>
+        <source>Lloyd iterations of the volumetric centroidal Voronoi diagram.</source>
+        <translation>Itérations de Lloyd du diagramme de Voronoï centroïdal volumique.</translation>
+    </message>
+    <message>
+        <source>Largest quad &amp;warp:</source>
+        <translation>&amp;Gauchissement maximal des quadrangles :</translation>
+    </message>
+    <message>
+        <source>Angle between the two halves of a prism&apos;s or pyramid&apos;s quad face above which the cell is left to the tets.</source>
+        <translation>Angle entre les deux moitiés d&apos;une face quadrangulaire de prisme ou de pyramide au-delà duquel la cellule est laissée aux tétraèdres.</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RemeshController</name>

@@ -1,8 +1,9 @@
-// stratamesh-cli hybrid MODEL --sites N [--thin-ratio 1.5] [--iterations 30] [--seed S]
-//     [--max-warp 30] [--quality 1.414] -o OUT.(vtu|msh) [--report R.json] [--json]
+// stratamesh-cli hybrid MODEL [PARAMETERS: hybridParamTable()] -o OUT.(vtu|msh) [--report R.json]
+//     [--json] [--overwrite]
 // A hybrid tet/prism/pyramid mesh (thesis ch. 5, core/hybrid/hybrid_mesher.h): prisms where
 // Voronoi edges cross thin layers, tets from TetGen elsewhere, checked by the mixed-mesh checker.
-// Nothing is written and the exit status is 1 when no valid mesh could be made.
+// Nothing is written and the exit status is 1 when no valid mesh could be made; every output is
+// planned before the run (io/output_plan.h).
 #include "cli_output.h"
 #include "command_args.h"
 #include "common/error.h"
@@ -10,24 +11,17 @@
 #include "hybrid/hybrid_mesher.h"
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
+#include "io/output_plan.h"
+#include "param_json.h"
+#include "params/param_tables.h"
 
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QSaveFile>
 
 namespace stratamesh::cli {
 
 namespace {
-
-void writeReport(const QJsonObject &report, const QString &path)
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)
-        || file.write(QJsonDocument(report).toJson(QJsonDocument::Indented)) < 0 || !file.commit())
-        throw FileError(path.toStdString(), 0,
-                        "cannot write the report: " + file.errorString().toStdString());
-}
 
 QJsonObject qualityJson(const VolumeMesh &mesh)
 {
@@ -52,16 +46,11 @@ QJsonObject qualityJson(const VolumeMesh &mesh)
 int runHybrid(CommandArgs &args)
 {
     HybridParams params;
-    params.sites = args.intOption(QStringLiteral("--sites"), 1000, 4, 1000000);
-    params.cells.thinRatio = args.doubleOption(QStringLiteral("--thin-ratio"), 1.5, 0.0, 1e6);
-    params.cvtIterations = args.intOption(QStringLiteral("--iterations"), 30, 0, 100000);
-    params.seed = static_cast<unsigned>(args.intOption(QStringLiteral("--seed"), 1, 0, 1 << 30));
-    params.cells.maxQuadWarpDegrees =
-        args.doubleOption(QStringLiteral("--max-warp"), 30.0, 0.0, 90.0);
-    params.tetgen.quality = args.doubleOption(QStringLiteral("--quality"), 1.414, 0.0, 1e6);
+    args.params(hybridParamTable(), params);
     const bool json = args.flag(QStringLiteral("--json"));
     const std::optional<QString> output = args.option(QStringLiteral("-o"));
     const std::optional<QString> reportPath = args.option(QStringLiteral("--report"));
+    const bool overwrite = args.flag(QStringLiteral("--overwrite"));
     const QString path = args.positional(QStringLiteral("MODEL"));
     args.finish();
     if (output) {
@@ -71,23 +60,27 @@ int runHybrid(CommandArgs &args)
                 QStringLiteral("the output must be a .vtu or .msh file, not '%1'").arg(*output));
     }
 
+    OutputPlan plan({path.toStdString()}, overwrite);
+    if (output)
+        plan.add(output->toStdString(), "mesh");
+    if (reportPath)
+        plan.add(reportPath->toStdString(), "report");
+
     const Model model = readModel(path.toStdString());
     const HybridResult r = buildHybridMesh(model, params);
     const VolumeMesh &m = r.mesh;
     const bool valid = m.hasCells() && r.validity.valid();
     if (valid && output)
-        exportVolumeMesh(m, output->toStdString());
+        plan.write(output->toStdString(),
+                   [&](const std::string &temporary) { exportVolumeMesh(m, temporary); });
+    else if (output)
+        plan.discard(output->toStdString());
 
     const HybridTimings &t = r.timings;
     const QJsonObject report{
         {"file", path},
         {"output_file", valid && output ? *output : QString()},
-        {"parameters", QJsonObject{{"sites", params.sites},
-                                   {"thin_ratio", params.cells.thinRatio},
-                                   {"iterations", params.cvtIterations},
-                                   {"seed", static_cast<qint64>(params.seed)},
-                                   {"max_warp_deg", params.cells.maxQuadWarpDegrees},
-                                   {"quality", params.tetgen.quality}}},
+        {"parameters", paramsToJson(hybridParamTable(), params)},
         {"tets", static_cast<qint64>(m.countCells(CellType::Tet))},
         {"prisms", static_cast<qint64>(m.countCells(CellType::Prism))},
         {"pyramids", static_cast<qint64>(m.countCells(CellType::Pyramid))},
@@ -123,7 +116,10 @@ int runHybrid(CommandArgs &args)
                                  {"fill", t.fillSeconds},
                                  {"check", t.checkSeconds}}}};
     if (reportPath)
-        writeReport(report, *reportPath);
+        plan.writeText(reportPath->toStdString(), [&](std::ostream &o) {
+            o << QJsonDocument(report).toJson(QJsonDocument::Indented).toStdString();
+        });
+    plan.commit();
     if (json)
         printJson(report);
     else

@@ -18,6 +18,8 @@ std::vector<ParamInfo> commandParams(const Command &command)
         return tetgenParamTable().infos();
     if (name == "cvt")
         return cvtParamTable().infos();
+    if (name == "hybrid")
+        return hybridParamTable().infos();
     return {};
 }
 

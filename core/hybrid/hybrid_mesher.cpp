@@ -6,6 +6,7 @@
 #include "hybrid/cell_faces.h"
 #include "model/region_volume.h"
 #include "model/topology.h"
+#include "params/param_tables.h"
 #include "remesh/surface_remesher.h"
 #include "volume/region_winding.h"
 
@@ -295,9 +296,7 @@ VolumeMesh assemble(const Model &remesh, const Fill &fill)
 
 HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Progress &progress)
 {
-    if (params.sites < 4)
-        throw InputError("hybrid mesh: sites must be at least 4 (got "
-                         + std::to_string(params.sites) + ")");
+    checkParams(hybridParamTable(), params);
     if (input.surfaces.empty())
         throw InputError("hybrid mesh: the model has no surface");
     HybridResult result;

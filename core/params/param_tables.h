@@ -4,6 +4,7 @@
 
 #include "complexity/complexity_report.h"
 #include "cvt/cvt_optimizer.h"
+#include "hybrid/hybrid_mesher.h"
 #include "params/param_table.h"
 #include "remesh/surface_remesher.h"
 #include "volume/tetgen_runner.h"
@@ -19,5 +20,7 @@ const ParamTable<ComplexityParams> &complexityParamTable();
 const ParamTable<TetgenParams> &tetgenParamTable();
 // iterations, alpha, lloyd (thesis §4.3).
 const ParamTable<CvtParams> &cvtParamTable();
+// sites, thin_ratio, iterations, seed, max_warp, quality (thesis ch. 5).
+const ParamTable<HybridParams> &hybridParamTable();
 
 } // namespace stratamesh

@@ -1,0 +1,86 @@
+// The hybrid-mesh parameters (thesis ch. 5); the defaults are HybridParams'.
+#include "params/param_tables.h"
+
+// lupdate reads the texts from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
+namespace stratamesh {
+
+namespace {
+
+// An entry for a number held by a member of a member (the cells' or TetGen's parameters).
+template <class Outer, class Inner>
+Param<HybridParams> nestedParam(Outer HybridParams::*outer, double Inner::*field, ParamInfo info)
+{
+    Param<HybridParams> p;
+    p.info = std::move(info);
+    p.get = [outer, field](const HybridParams &params) { return (params.*outer).*field; };
+    p.set = [outer, field](HybridParams &params, double v) { (params.*outer).*field = v; };
+    return p;
+}
+
+ParamTable<HybridParams> makeTable()
+{
+    using P = HybridParams;
+    ParamTable<P> t("hybrid");
+    ParamInfo i;
+
+    i = {};
+    i.key = "sites", i.flag = "--sites", i.jsonKey = "sites", i.type = ParamType::Int;
+    i.minimum = 4, i.maximum = 1000000, i.valueName = "N", i.thesis = "§5.2";
+    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "Number of volume &sites:");
+    i.help = QT_TRANSLATE_NOOP("stratamesh::Params",
+                               "Sites of the volumetric centroidal Voronoi diagram of the model's "
+                               "box; the surfaces are remeshed from them.");
+    t.add(memberParam(&P::sites, i));
+
+    i = {};
+    i.key = "thin_ratio", i.flag = "--thin-ratio", i.jsonKey = "thin_ratio", i.minimum = 0.0;
+    i.maximum = 1e6, i.valueName = "R", i.decimals = 2, i.thesis = "§5.3.2";
+    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "&Thin-layer ratio:");
+    i.help = QT_TRANSLATE_NOOP("stratamesh::Params",
+                               "A cell between two surface triangles becomes a prism or a pyramid "
+                               "when its height is below this ratio times its triangles' size.");
+    t.add(nestedParam(&P::cells, &SegmentDualParams::thinRatio, i));
+
+    i = {};
+    i.key = "iterations", i.flag = "--iterations", i.jsonKey = "iterations";
+    i.type = ParamType::Int, i.minimum = 0, i.maximum = 100000, i.valueName = "N";
+    i.thesis = "§5.2";
+    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "Volume CVT &iterations:");
+    i.help = QT_TRANSLATE_NOOP("stratamesh::Params",
+                               "Lloyd iterations of the volumetric centroidal Voronoi diagram.");
+    t.add(memberParam(&P::cvtIterations, i));
+
+    i = {};
+    i.key = "seed", i.flag = "--seed", i.jsonKey = "seed", i.type = ParamType::Seed;
+    i.minimum = 0, i.maximum = 1073741824, i.valueName = "S";
+    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "Ra&ndom seed:");
+    i.help = QT_TRANSLATE_NOOP(
+        "stratamesh::Params",
+        "Seed of the initial random sampling: the same seed gives the same mesh.");
+    t.add(memberParam(&P::seed, i));
+
+    i = {};
+    i.key = "max_warp", i.flag = "--max-warp", i.jsonKey = "max_warp_deg", i.minimum = 0.0;
+    i.maximum = 90.0, i.unit = "°", i.valueName = "DEG", i.decimals = 1, i.thesis = "§5.4";
+    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "Largest quad &warp:");
+    i.help = QT_TRANSLATE_NOOP("stratamesh::Params",
+                               "Angle between the two halves of a prism's or pyramid's quad face "
+                               "above which the cell is left to the tets.");
+    t.add(nestedParam(&P::cells, &SegmentDualParams::maxQuadWarpDegrees, i));
+
+    i = tetgenParamTable().info("quality");
+    t.add(nestedParam(&P::tetgen, &TetgenParams::quality, i));
+    return t;
+}
+
+} // namespace
+
+const ParamTable<HybridParams> &hybridParamTable()
+{
+    static const ParamTable<HybridParams> table = makeTable();
+    return table;
+}
+
+} // namespace stratamesh
