@@ -16,18 +16,23 @@
 #include "model_scene.h"
 #include "open_workflow.h"
 #include "position_marker.h"
+#include "progress_strip.h"
 #include "remesh_controller.h"
 #include "remesh_dialog.h"
 #include "remesh_workflow.h"
 #include "translations.h"
 #include "vtk_view_widget.h"
+#include "window_screenshot.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
+#include <QProgressBar>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
+#include <QToolButton>
 #include <QtTest>
 
 #include <vtkRenderer.h>
@@ -138,6 +143,38 @@ private slots:
         QVERIFY(!m_window->remeshWorkflow()->cancelAction()->isEnabled());
         QVERIFY(!m_window->remeshWorkflow()->saveAction()->isEnabled());
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), 0);
+    }
+
+    // One strip for every workflow: the running one's stage, bar and Cancel, gone once it ends.
+    void progressStripFollowsTheRun()
+    {
+        ProgressStrip *strip = m_window->progressStrip();
+        QToolButton *cancel = strip->findChild<QToolButton *>();
+        QVERIFY(cancel);
+        QVERIFY(!strip->progressBar()->isVisible());
+        QVERIFY(!cancel->isVisible());
+        RemeshParams big;
+        big.sites = 50000;
+        QSignalSpy progress(m_window->remeshWorkflow()->controller(),
+                            &RemeshController::progressChanged);
+        QSignalSpy finished(m_window->remeshWorkflow(), &RemeshWorkflow::finished);
+        QVERIFY(m_window->remeshWorkflow()->start(big));
+        QVERIFY(strip->progressBar()->isVisible());
+        QVERIFY(cancel->isVisible());
+        QCOMPARE(cancel->defaultAction(), m_window->remeshWorkflow()->cancelAction());
+        while (progress.size() < 3)
+            QVERIFY(progress.wait(kTimeoutMs));
+        QVERIFY2(strip->text().startsWith(QLatin1String("Remeshing")), qPrintable(strip->text()));
+        const QString shots = QStringLiteral(STRATAMESH_SCREENSHOT_DIR);
+        QDir().mkpath(shots);
+        QVERIFY(saveWindowScreenshot(m_window.get(), shots + "/remesh_running.png"));
+        QTest::mouseClick(cancel, Qt::LeftButton);
+        QVERIFY(finished.wait(kTimeoutMs));
+        QVERIFY(!finished.first().first().toBool());
+        QVERIFY(!strip->progressBar()->isVisible());
+        QVERIFY(!cancel->isVisible());
+        QCOMPARE(strip->text(), QStringLiteral("Remeshing cancelled"));
+        QVERIFY(!m_window->remeshWorkflow()->outcome());
     }
 
     void remeshShowsOutputLedgerAndComparison()
