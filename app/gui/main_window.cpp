@@ -10,7 +10,6 @@
 #include "study_workflow.h"
 #include "tetmesh_workflow.h"
 #include "view_pair.h"
-#include "vtk_view_widget.h"
 #include "workbench.h"
 
 #include <QAction>
