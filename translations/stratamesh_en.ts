@@ -294,6 +294,90 @@
     </message>
 </context>
 <context>
+    <name>stratamesh::ComplexityWorkflow</name>
+    <message>
+        <source>&amp;Complexity…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measure the complexity of the model and show the elements per cell as a heat map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C&amp;ancel Complexity Analysis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop the complexity analysis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Export Complexity Cells…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the cells with their element counts as a VTK unstructured grid (.vtu)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Complexity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Elements
+per cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measuring the complexity of %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity measured with %1 cells in %2 s: %3 elements per cell at most, %4 on average</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity measured — see Complexity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity analysis failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity analysis failed — see Messages</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity analysis cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Complexity Cells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>VTK unstructured grid (*.vtu)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity cells exported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not export the complexity cells</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::FeatureLegend</name>
     <message>
         <source>Horizons</source>
@@ -483,22 +567,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>&amp;Open Model…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open a structural model file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open &amp;Sample Model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show the synthetic model bundled with StrataMesh</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -550,37 +618,6 @@
         <source>%1 — StrataMesh</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <source>Open Model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Opening %1…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No validity problem found</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ready</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>%n validity problem(s) — see Messages</source>
-        <translation>
-            <numerusform>%n validity problem — see Messages</numerusform>
-            <numerusform>%n validity problems — see Messages</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Could not open the model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Could not open %1</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message numerus="yes">
         <source>%n surface(s)</source>
         <translation>
@@ -614,10 +651,6 @@
         </translation>
     </message>
     <message>
-        <source>%1 opened in %2 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1 (box excluded)  ·  %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -634,281 +667,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>&amp;Remesh…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remesh all the surfaces at a chosen resolution, keeping the model conformal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Cancel Remeshing</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stop the remeshing; the input model is left as it is</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Simplifications</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Simplifications</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Input vs Output</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Input vs Output</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancelling…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remeshing %1…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>Remeshed with %1 sites in %2 s: %3 triangles, %n simplification(s) recorded</source>
-        <translation>
-            <numerusform>Remeshed with %1 sites in %2 s: %3 triangles, %n simplification recorded</numerusform>
-            <numerusform>Remeshed with %1 sites in %2 s: %3 triangles, %n simplifications recorded</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>Remeshed: %n simplification(s) — see Simplifications</source>
-        <translation>
-            <numerusform>Remeshed: %n simplification — see Simplifications</numerusform>
-            <numerusform>Remeshed: %n simplifications — see Simplifications</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Remeshing failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remeshing failed — see Messages</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remeshing cancelled</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Input: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Output: %1 sites, %2 triangles</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save Remeshed Model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remeshed model saved</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Could not save the remeshed model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save Remeshed Model &amp;As…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&amp;Analyse</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Complexity…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Measure the complexity of the model and show the elements per cell as a heat map</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>C&amp;ancel Complexity Analysis</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stop the complexity analysis</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Export Complexity Cells…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Write the cells with their element counts as a VTK unstructured grid (.vtu)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Complexity</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Complexity</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Elements
-per cell</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Measuring the complexity of %1…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Complexity measured with %1 cells in %2 s: %3 elements per cell at most, %4 on average</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Complexity measured — see Complexity</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Complexity analysis failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Complexity analysis failed — see Messages</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Complexity analysis cancelled</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Export Complexity Cells</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>VTK unstructured grid (*.vtu)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Complexity cells exported</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Could not export the complexity cells</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Tetrahedralise…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Mesh the regions of the input and of the remesh with TetGen and compare the tetrahedra</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancel &amp;Tetrahedralisation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stop TetGen; nothing is kept of this run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tetrahedra</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Tetrahedra</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Region</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Min dihedral
-angle (°)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tetrahedralising %1…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Input: %1 tets, %2 slivers, min dihedral %3° in %4 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remesh: %1 tets, %2 slivers, min dihedral %3° in %4 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tetrahedralised — see Tetrahedra</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>TetGen failed on a model — see Tetrahedra</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tetrahedralisation failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tetrahedralisation failed — see Messages</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tetrahedralisation cancelled</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>The remeshed model is NOT valid: %n problem(s) left after local refinement; saving it is at your own risk</source>
-        <translation>
-            <numerusform>The remeshed model is NOT valid: %n problem left after local refinement; saving it is at your own risk</numerusform>
-            <numerusform>The remeshed model is NOT valid: %n problems left after local refinement; saving it is at your own risk</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>Remeshed, NOT valid: %n problem(s) — see Messages</source>
-        <translation>
-            <numerusform>Remeshed, NOT valid: %n problem — see Messages</numerusform>
-            <numerusform>Remeshed, NOT valid: %n problems — see Messages</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Write the remeshed model as a Gocad, RINGMesh, Gmsh or VTK file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open S&amp;tudy…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show the table of a study run by stratamesh-cli study (.smstudy or study.json)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open Study</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>StrataMesh studies (*.smstudy);;Gathered study tables (study.json)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cannot open the study</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -971,6 +730,60 @@ angle (°)</source>
     </message>
     <message>
         <source>All files</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::OpenWorkflow</name>
+    <message>
+        <source>&amp;Open Model…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a structural model file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;Sample Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the synthetic model bundled with StrataMesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opening %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 opened in %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No validity problem found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n validity problem(s) — see Messages</source>
+        <translation>
+            <numerusform>%n validity problem — see Messages</numerusform>
+            <numerusform>%n validity problems — see Messages</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Could not open the model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not open %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1227,6 +1040,117 @@ angle (°)</source>
     </message>
 </context>
 <context>
+    <name>stratamesh::RemeshWorkflow</name>
+    <message>
+        <source>&amp;Remesh…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remesh all the surfaces at a chosen resolution, keeping the model conformal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Cancel Remeshing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop the remeshing; the input model is left as it is</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Remeshed Model &amp;As…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the remeshed model as a Gocad, RINGMesh, Gmsh or VTK file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simplifications</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Simplifications</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input vs Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Input vs Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remeshing %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed with %1 sites in %2 s: %3 triangles, %n simplification(s) recorded</source>
+        <translation>
+            <numerusform>Remeshed with %1 sites in %2 s: %3 triangles, %n simplification recorded</numerusform>
+            <numerusform>Remeshed with %1 sites in %2 s: %3 triangles, %n simplifications recorded</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The remeshed model is NOT valid: %n problem(s) left after local refinement; saving it is at your own risk</source>
+        <translation>
+            <numerusform>The remeshed model is NOT valid: %n problem left after local refinement; saving it is at your own risk</numerusform>
+            <numerusform>The remeshed model is NOT valid: %n problems left after local refinement; saving it is at your own risk</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed, NOT valid: %n problem(s) — see Messages</source>
+        <translation>
+            <numerusform>Remeshed, NOT valid: %n problem — see Messages</numerusform>
+            <numerusform>Remeshed, NOT valid: %n problems — see Messages</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed: %n simplification(s) — see Simplifications</source>
+        <translation>
+            <numerusform>Remeshed: %n simplification — see Simplifications</numerusform>
+            <numerusform>Remeshed: %n simplifications — see Simplifications</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remeshing failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remeshing failed — see Messages</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remeshing cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output: %1 sites, %2 triangles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Remeshed Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remeshed model saved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not save the remeshed model</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::StudyWindow</name>
     <message>
         <source>Task</source>
@@ -1286,6 +1210,29 @@ angle (°)</source>
             <numerusform>%n task, %1 ok; double-click a row to see its input and output</numerusform>
             <numerusform>%n tasks, %1 ok; double-click a row to see its input and output</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::StudyWorkflow</name>
+    <message>
+        <source>Open S&amp;tudy…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the table of a study run by stratamesh-cli study (.smstudy or study.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Study</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>StrataMesh studies (*.smstudy);;Gathered study tables (study.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot open the study</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1446,6 +1393,81 @@ angle (°)</source>
     </message>
     <message>
         <source>Radius ratio 3r/R (% of tets)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::TetmeshWorkflow</name>
+    <message>
+        <source>&amp;Tetrahedralise…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mesh the regions of the input and of the remesh with TetGen and compare the tetrahedra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel &amp;Tetrahedralisation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop TetGen; nothing is kept of this run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Tetrahedra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min dihedral
+angle (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralising %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input: %1 tets, %2 slivers, min dihedral %3° in %4 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remesh: %1 tets, %2 slivers, min dihedral %3° in %4 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralised — see Tetrahedra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen failed on a model — see Tetrahedra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation failed — see Messages</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::Workflow</name>
+    <message>
+        <source>Cancelling…</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

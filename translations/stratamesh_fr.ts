@@ -294,6 +294,91 @@
     </message>
 </context>
 <context>
+    <name>stratamesh::ComplexityWorkflow</name>
+    <message>
+        <source>&amp;Complexity…</source>
+        <translation>&amp;Complexité…</translation>
+    </message>
+    <message>
+        <source>Measure the complexity of the model and show the elements per cell as a heat map</source>
+        <translation>Mesurer la complexité du modèle et afficher les éléments par cellule en carte de chaleur</translation>
+    </message>
+    <message>
+        <source>C&amp;ancel Complexity Analysis</source>
+        <translation>A&amp;nnuler l&apos;analyse de complexité</translation>
+    </message>
+    <message>
+        <source>Stop the complexity analysis</source>
+        <translation>Arrêter l&apos;analyse de complexité</translation>
+    </message>
+    <message>
+        <source>&amp;Export Complexity Cells…</source>
+        <translation>&amp;Exporter les cellules de complexité…</translation>
+    </message>
+    <message>
+        <source>Write the cells with their element counts as a VTK unstructured grid (.vtu)</source>
+        <translation>Écrire les cellules avec leur nombre d&apos;éléments en grille non structurée VTK (.vtu)</translation>
+    </message>
+    <message>
+        <source>Complexity</source>
+        <translation>Complexité</translation>
+    </message>
+    <message>
+        <source>&amp;Complexity</source>
+        <translation>&amp;Complexité</translation>
+    </message>
+    <message>
+        <source>Elements
+per cell</source>
+        <translation>Éléments
+par cellule</translation>
+    </message>
+    <message>
+        <source>Measuring the complexity of %1…</source>
+        <translation>Mesure de la complexité de %1…</translation>
+    </message>
+    <message>
+        <source>Complexity measured with %1 cells in %2 s: %3 elements per cell at most, %4 on average</source>
+        <translation>Complexité mesurée avec %1 cellules en %2 s : %3 éléments par cellule au plus, %4 en moyenne</translation>
+    </message>
+    <message>
+        <source>Complexity measured — see Complexity</source>
+        <translation>Complexité mesurée — voir Complexité</translation>
+    </message>
+    <message>
+        <source>Complexity analysis failed: %1</source>
+        <translation>Échec de l&apos;analyse de complexité : %1</translation>
+    </message>
+    <message>
+        <source>Complexity analysis failed — see Messages</source>
+        <translation>Échec de l&apos;analyse de complexité — voir Messages</translation>
+    </message>
+    <message>
+        <source>Complexity analysis cancelled</source>
+        <translation>Analyse de complexité annulée</translation>
+    </message>
+    <message>
+        <source>Export Complexity Cells</source>
+        <translation>Exporter les cellules de complexité</translation>
+    </message>
+    <message>
+        <source>VTK unstructured grid (*.vtu)</source>
+        <translation>Grille non structurée VTK (*.vtu)</translation>
+    </message>
+    <message>
+        <source>Complexity cells exported</source>
+        <translation>Cellules de complexité exportées</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 enregistré</translation>
+    </message>
+    <message>
+        <source>Could not export the complexity cells</source>
+        <translation>Impossible d&apos;exporter les cellules de complexité</translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::FeatureLegend</name>
     <message>
         <source>Horizons</source>
@@ -483,22 +568,6 @@
         <translation>&amp;Aide</translation>
     </message>
     <message>
-        <source>&amp;Open Model…</source>
-        <translation>&amp;Ouvrir un modèle…</translation>
-    </message>
-    <message>
-        <source>Open a structural model file</source>
-        <translation>Ouvrir un fichier de modèle structural</translation>
-    </message>
-    <message>
-        <source>Open &amp;Sample Model</source>
-        <translation>Ouvrir le modèle d&apos;&amp;exemple</translation>
-    </message>
-    <message>
-        <source>Show the synthetic model bundled with StrataMesh</source>
-        <translation>Afficher le modèle synthétique fourni avec StrataMesh</translation>
-    </message>
-    <message>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
@@ -550,37 +619,6 @@
         <source>%1 — StrataMesh</source>
         <translation>%1 — StrataMesh</translation>
     </message>
-    <message>
-        <source>Open Model</source>
-        <translation>Ouvrir un modèle</translation>
-    </message>
-    <message>
-        <source>Opening %1…</source>
-        <translation>Ouverture de %1…</translation>
-    </message>
-    <message>
-        <source>No validity problem found</source>
-        <translation>Aucun problème de validité détecté</translation>
-    </message>
-    <message>
-        <source>Ready</source>
-        <translation>Prêt</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n validity problem(s) — see Messages</source>
-        <translation>
-            <numerusform>%n problème de validité — voir Messages</numerusform>
-            <numerusform>%n problèmes de validité — voir Messages</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Could not open the model</source>
-        <translation>Impossible d&apos;ouvrir le modèle</translation>
-    </message>
-    <message>
-        <source>Could not open %1</source>
-        <translation>Impossible d&apos;ouvrir %1</translation>
-    </message>
     <message numerus="yes">
         <source>%n surface(s)</source>
         <translation>
@@ -614,10 +652,6 @@
         </translation>
     </message>
     <message>
-        <source>%1 opened in %2 s</source>
-        <translation>%1 ouvert en %2 s</translation>
-    </message>
-    <message>
         <source>%1 (box excluded)  ·  %2</source>
         <translation>%1 (hors boîte)  ·  %2</translation>
     </message>
@@ -634,284 +668,8 @@
         <translation>&amp;Maillage</translation>
     </message>
     <message>
-        <source>&amp;Remesh…</source>
-        <translation>&amp;Remailler…</translation>
-    </message>
-    <message>
-        <source>Remesh all the surfaces at a chosen resolution, keeping the model conformal</source>
-        <translation>Remailler toutes les surfaces à la résolution choisie en gardant le modèle conforme</translation>
-    </message>
-    <message>
-        <source>&amp;Cancel Remeshing</source>
-        <translation>&amp;Annuler le remaillage</translation>
-    </message>
-    <message>
-        <source>Stop the remeshing; the input model is left as it is</source>
-        <translation>Arrêter le remaillage ; le modèle d&apos;entrée reste tel quel</translation>
-    </message>
-    <message>
-        <source>Simplifications</source>
-        <translation>Simplifications</translation>
-    </message>
-    <message>
-        <source>&amp;Simplifications</source>
-        <translation>&amp;Simplifications</translation>
-    </message>
-    <message>
-        <source>Input vs Output</source>
-        <translation>Entrée et sortie</translation>
-    </message>
-    <message>
-        <source>&amp;Input vs Output</source>
-        <translation>&amp;Entrée et sortie</translation>
-    </message>
-    <message>
-        <source>Cancelling…</source>
-        <translation>Annulation…</translation>
-    </message>
-    <message>
-        <source>Remeshing %1…</source>
-        <translation>Remaillage de %1…</translation>
-    </message>
-    <message numerus="yes">
-        <source>Remeshed with %1 sites in %2 s: %3 triangles, %n simplification(s) recorded</source>
-        <translation>
-            <numerusform>Remaillé avec %1 sites en %2 s : %3 triangles, %n simplification enregistrée</numerusform>
-            <numerusform>Remaillé avec %1 sites en %2 s : %3 triangles, %n simplifications enregistrées</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>Remeshed: %n simplification(s) — see Simplifications</source>
-        <translation>
-            <numerusform>Remaillé : %n simplification — voir Simplifications</numerusform>
-            <numerusform>Remaillé : %n simplifications — voir Simplifications</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Remeshing failed: %1</source>
-        <translation>Échec du remaillage : %1</translation>
-    </message>
-    <message>
-        <source>Remeshing failed — see Messages</source>
-        <translation>Échec du remaillage — voir Messages</translation>
-    </message>
-    <message>
-        <source>Remeshing cancelled</source>
-        <translation>Remaillage annulé</translation>
-    </message>
-    <message>
-        <source>Input: %1</source>
-        <translation>Entrée : %1</translation>
-    </message>
-    <message>
-        <source>Output: %1 sites, %2 triangles</source>
-        <translation>Sortie : %1 sites, %2 triangles</translation>
-    </message>
-    <message>
-        <source>Save Remeshed Model</source>
-        <translation>Enregistrer le modèle remaillé</translation>
-    </message>
-    <message>
-        <source>Remeshed model saved</source>
-        <translation>Modèle remaillé enregistré</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>%1 enregistré</translation>
-    </message>
-    <message>
-        <source>Could not save the remeshed model</source>
-        <translation>Impossible d&apos;enregistrer le modèle remaillé</translation>
-    </message>
-    <message>
-        <source>Save Remeshed Model &amp;As…</source>
-        <translation>Enregistrer le modèle remaillé &amp;sous…</translation>
-    </message>
-    <message>
         <source>&amp;Analyse</source>
         <translation>A&amp;nalyse</translation>
-    </message>
-    <message>
-        <source>&amp;Complexity…</source>
-        <translation>&amp;Complexité…</translation>
-    </message>
-    <message>
-        <source>Measure the complexity of the model and show the elements per cell as a heat map</source>
-        <translation>Mesurer la complexité du modèle et afficher les éléments par cellule en carte de chaleur</translation>
-    </message>
-    <message>
-        <source>C&amp;ancel Complexity Analysis</source>
-        <translation>A&amp;nnuler l&apos;analyse de complexité</translation>
-    </message>
-    <message>
-        <source>Stop the complexity analysis</source>
-        <translation>Arrêter l&apos;analyse de complexité</translation>
-    </message>
-    <message>
-        <source>&amp;Export Complexity Cells…</source>
-        <translation>&amp;Exporter les cellules de complexité…</translation>
-    </message>
-    <message>
-        <source>Write the cells with their element counts as a VTK unstructured grid (.vtu)</source>
-        <translation>Écrire les cellules avec leur nombre d&apos;éléments en grille non structurée VTK (.vtu)</translation>
-    </message>
-    <message>
-        <source>Complexity</source>
-        <translation>Complexité</translation>
-    </message>
-    <message>
-        <source>&amp;Complexity</source>
-        <translation>&amp;Complexité</translation>
-    </message>
-    <message>
-        <source>Elements
-per cell</source>
-        <translation>Éléments
-par cellule</translation>
-    </message>
-    <message>
-        <source>Measuring the complexity of %1…</source>
-        <translation>Mesure de la complexité de %1…</translation>
-    </message>
-    <message>
-        <source>Complexity measured with %1 cells in %2 s: %3 elements per cell at most, %4 on average</source>
-        <translation>Complexité mesurée avec %1 cellules en %2 s : %3 éléments par cellule au plus, %4 en moyenne</translation>
-    </message>
-    <message>
-        <source>Complexity measured — see Complexity</source>
-        <translation>Complexité mesurée — voir Complexité</translation>
-    </message>
-    <message>
-        <source>Complexity analysis failed: %1</source>
-        <translation>Échec de l&apos;analyse de complexité : %1</translation>
-    </message>
-    <message>
-        <source>Complexity analysis failed — see Messages</source>
-        <translation>Échec de l&apos;analyse de complexité — voir Messages</translation>
-    </message>
-    <message>
-        <source>Complexity analysis cancelled</source>
-        <translation>Analyse de complexité annulée</translation>
-    </message>
-    <message>
-        <source>Export Complexity Cells</source>
-        <translation>Exporter les cellules de complexité</translation>
-    </message>
-    <message>
-        <source>VTK unstructured grid (*.vtu)</source>
-        <translation>Grille non structurée VTK (*.vtu)</translation>
-    </message>
-    <message>
-        <source>Complexity cells exported</source>
-        <translation>Cellules de complexité exportées</translation>
-    </message>
-    <message>
-        <source>Could not export the complexity cells</source>
-        <translation>Impossible d&apos;exporter les cellules de complexité</translation>
-    </message>
-    <message>
-        <source>&amp;Tetrahedralise…</source>
-        <translation>&amp;Tétraédriser…</translation>
-    </message>
-    <message>
-        <source>Mesh the regions of the input and of the remesh with TetGen and compare the tetrahedra</source>
-        <translation>Mailler les régions du modèle d&apos;entrée et du remaillage avec TetGen et comparer les tétraèdres</translation>
-    </message>
-    <message>
-        <source>Cancel &amp;Tetrahedralisation</source>
-        <translation>Annuler la &amp;tétraédrisation</translation>
-    </message>
-    <message>
-        <source>Stop TetGen; nothing is kept of this run</source>
-        <translation>Arrêter TetGen ; rien n&apos;est gardé de cette exécution</translation>
-    </message>
-    <message>
-        <source>Tetrahedra</source>
-        <translation>Tétraèdres</translation>
-    </message>
-    <message>
-        <source>&amp;Tetrahedra</source>
-        <translation>&amp;Tétraèdres</translation>
-    </message>
-    <message>
-        <source>Region</source>
-        <translation>Région</translation>
-    </message>
-    <message>
-        <source>Min dihedral
-angle (°)</source>
-        <translation>Angle dièdre
-min. (°)</translation>
-    </message>
-    <message>
-        <source>Tetrahedralising %1…</source>
-        <translation>Tétraédrisation de %1…</translation>
-    </message>
-    <message>
-        <source>Input: %1 tets, %2 slivers, min dihedral %3° in %4 s</source>
-        <translation>Entrée : %1 tétraèdres, %2 tétraèdres plats, angle dièdre min. %3° en %4 s</translation>
-    </message>
-    <message>
-        <source>Remesh: %1 tets, %2 slivers, min dihedral %3° in %4 s</source>
-        <translation>Remaillage : %1 tétraèdres, %2 tétraèdres plats, angle dièdre min. %3° en %4 s</translation>
-    </message>
-    <message>
-        <source>Tetrahedralised — see Tetrahedra</source>
-        <translation>Tétraédrisé — voir Tétraèdres</translation>
-    </message>
-    <message>
-        <source>TetGen failed on a model — see Tetrahedra</source>
-        <translation>Échec de TetGen sur un modèle — voir Tétraèdres</translation>
-    </message>
-    <message>
-        <source>Tetrahedralisation failed: %1</source>
-        <translation>Échec de la tétraédrisation : %1</translation>
-    </message>
-    <message>
-        <source>Tetrahedralisation failed — see Messages</source>
-        <translation>Échec de la tétraédrisation — voir Messages</translation>
-    </message>
-    <message>
-        <source>Tetrahedralisation cancelled</source>
-        <translation>Tétraédrisation annulée</translation>
-    </message>
-    <message numerus="yes">
-        <source>The remeshed model is NOT valid: %n problem(s) left after local refinement; saving it is at your own risk</source>
-        <translation>
-            <numerusform>Le modèle remaillé n’est PAS valide : %n problème après le raffinement local ; l’enregistrer est à vos risques</numerusform>
-            <numerusform>Le modèle remaillé n’est PAS valide : %n problèmes après le raffinement local ; l’enregistrer est à vos risques</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>Remeshed, NOT valid: %n problem(s) — see Messages</source>
-        <translation>
-            <numerusform>Remaillé, NON valide : %n problème — voir Messages</numerusform>
-            <numerusform>Remaillé, NON valide : %n problèmes — voir Messages</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Write the remeshed model as a Gocad, RINGMesh, Gmsh or VTK file</source>
-        <translation>Écrire le modèle remaillé dans un fichier Gocad, RINGMesh, Gmsh ou VTK</translation>
-    </message>
-    <message>
-        <source>Open S&amp;tudy…</source>
-        <translation>Ouvrir une é&amp;tude…</translation>
-    </message>
-    <message>
-        <source>Show the table of a study run by stratamesh-cli study (.smstudy or study.json)</source>
-        <translation>Afficher le tableau d’une étude lancée par stratamesh-cli study (.smstudy ou study.json)</translation>
-    </message>
-    <message>
-        <source>Open Study</source>
-        <translation>Ouvrir une étude</translation>
-    </message>
-    <message>
-        <source>StrataMesh studies (*.smstudy);;Gathered study tables (study.json)</source>
-        <translation>Études StrataMesh (*.smstudy);;Tableaux d’études rassemblés (study.json)</translation>
-    </message>
-    <message>
-        <source>Cannot open the study</source>
-        <translation>Impossible d’ouvrir l’étude</translation>
     </message>
 </context>
 <context>
@@ -974,6 +732,60 @@ min. (°)</translation>
     <message>
         <source>All files</source>
         <translation>Tous les fichiers</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::OpenWorkflow</name>
+    <message>
+        <source>&amp;Open Model…</source>
+        <translation>&amp;Ouvrir un modèle…</translation>
+    </message>
+    <message>
+        <source>Open a structural model file</source>
+        <translation>Ouvrir un fichier de modèle structural</translation>
+    </message>
+    <message>
+        <source>Open &amp;Sample Model</source>
+        <translation>Ouvrir le modèle d&apos;&amp;exemple</translation>
+    </message>
+    <message>
+        <source>Show the synthetic model bundled with StrataMesh</source>
+        <translation>Afficher le modèle synthétique fourni avec StrataMesh</translation>
+    </message>
+    <message>
+        <source>Open Model</source>
+        <translation>Ouvrir un modèle</translation>
+    </message>
+    <message>
+        <source>Opening %1…</source>
+        <translation>Ouverture de %1…</translation>
+    </message>
+    <message>
+        <source>%1 opened in %2 s</source>
+        <translation>%1 ouvert en %2 s</translation>
+    </message>
+    <message>
+        <source>No validity problem found</source>
+        <translation>Aucun problème de validité détecté</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Prêt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n validity problem(s) — see Messages</source>
+        <translation>
+            <numerusform>%n problème de validité — voir Messages</numerusform>
+            <numerusform>%n problèmes de validité — voir Messages</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Could not open the model</source>
+        <translation>Impossible d&apos;ouvrir le modèle</translation>
+    </message>
+    <message>
+        <source>Could not open %1</source>
+        <translation>Impossible d&apos;ouvrir %1</translation>
     </message>
 </context>
 <context>
@@ -1229,6 +1041,117 @@ min. (°)</translation>
     </message>
 </context>
 <context>
+    <name>stratamesh::RemeshWorkflow</name>
+    <message>
+        <source>&amp;Remesh…</source>
+        <translation>&amp;Remailler…</translation>
+    </message>
+    <message>
+        <source>Remesh all the surfaces at a chosen resolution, keeping the model conformal</source>
+        <translation>Remailler toutes les surfaces à la résolution choisie en gardant le modèle conforme</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel Remeshing</source>
+        <translation>&amp;Annuler le remaillage</translation>
+    </message>
+    <message>
+        <source>Stop the remeshing; the input model is left as it is</source>
+        <translation>Arrêter le remaillage ; le modèle d&apos;entrée reste tel quel</translation>
+    </message>
+    <message>
+        <source>Save Remeshed Model &amp;As…</source>
+        <translation>Enregistrer le modèle remaillé &amp;sous…</translation>
+    </message>
+    <message>
+        <source>Write the remeshed model as a Gocad, RINGMesh, Gmsh or VTK file</source>
+        <translation>Écrire le modèle remaillé dans un fichier Gocad, RINGMesh, Gmsh ou VTK</translation>
+    </message>
+    <message>
+        <source>Simplifications</source>
+        <translation>Simplifications</translation>
+    </message>
+    <message>
+        <source>&amp;Simplifications</source>
+        <translation>&amp;Simplifications</translation>
+    </message>
+    <message>
+        <source>Input vs Output</source>
+        <translation>Entrée et sortie</translation>
+    </message>
+    <message>
+        <source>&amp;Input vs Output</source>
+        <translation>&amp;Entrée et sortie</translation>
+    </message>
+    <message>
+        <source>Remeshing %1…</source>
+        <translation>Remaillage de %1…</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed with %1 sites in %2 s: %3 triangles, %n simplification(s) recorded</source>
+        <translation>
+            <numerusform>Remaillé avec %1 sites en %2 s : %3 triangles, %n simplification enregistrée</numerusform>
+            <numerusform>Remaillé avec %1 sites en %2 s : %3 triangles, %n simplifications enregistrées</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The remeshed model is NOT valid: %n problem(s) left after local refinement; saving it is at your own risk</source>
+        <translation>
+            <numerusform>Le modèle remaillé n’est PAS valide : %n problème après le raffinement local ; l’enregistrer est à vos risques</numerusform>
+            <numerusform>Le modèle remaillé n’est PAS valide : %n problèmes après le raffinement local ; l’enregistrer est à vos risques</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed, NOT valid: %n problem(s) — see Messages</source>
+        <translation>
+            <numerusform>Remaillé, NON valide : %n problème — voir Messages</numerusform>
+            <numerusform>Remaillé, NON valide : %n problèmes — voir Messages</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed: %n simplification(s) — see Simplifications</source>
+        <translation>
+            <numerusform>Remaillé : %n simplification — voir Simplifications</numerusform>
+            <numerusform>Remaillé : %n simplifications — voir Simplifications</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remeshing failed: %1</source>
+        <translation>Échec du remaillage : %1</translation>
+    </message>
+    <message>
+        <source>Remeshing failed — see Messages</source>
+        <translation>Échec du remaillage — voir Messages</translation>
+    </message>
+    <message>
+        <source>Remeshing cancelled</source>
+        <translation>Remaillage annulé</translation>
+    </message>
+    <message>
+        <source>Input: %1</source>
+        <translation>Entrée : %1</translation>
+    </message>
+    <message>
+        <source>Output: %1 sites, %2 triangles</source>
+        <translation>Sortie : %1 sites, %2 triangles</translation>
+    </message>
+    <message>
+        <source>Save Remeshed Model</source>
+        <translation>Enregistrer le modèle remaillé</translation>
+    </message>
+    <message>
+        <source>Remeshed model saved</source>
+        <translation>Modèle remaillé enregistré</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 enregistré</translation>
+    </message>
+    <message>
+        <source>Could not save the remeshed model</source>
+        <translation>Impossible d&apos;enregistrer le modèle remaillé</translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::StudyWindow</name>
     <message>
         <source>Task</source>
@@ -1288,6 +1211,29 @@ min. (°)</translation>
             <numerusform>%n tâche, %1 réussie ; double-cliquer sur une ligne pour voir son entrée et sa sortie</numerusform>
             <numerusform>%n tâches, %1 réussies ; double-cliquer sur une ligne pour voir son entrée et sa sortie</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::StudyWorkflow</name>
+    <message>
+        <source>Open S&amp;tudy…</source>
+        <translation>Ouvrir une é&amp;tude…</translation>
+    </message>
+    <message>
+        <source>Show the table of a study run by stratamesh-cli study (.smstudy or study.json)</source>
+        <translation>Afficher le tableau d’une étude lancée par stratamesh-cli study (.smstudy ou study.json)</translation>
+    </message>
+    <message>
+        <source>Open Study</source>
+        <translation>Ouvrir une étude</translation>
+    </message>
+    <message>
+        <source>StrataMesh studies (*.smstudy);;Gathered study tables (study.json)</source>
+        <translation>Études StrataMesh (*.smstudy);;Tableaux d’études rassemblés (study.json)</translation>
+    </message>
+    <message>
+        <source>Cannot open the study</source>
+        <translation>Impossible d’ouvrir l’étude</translation>
     </message>
 </context>
 <context>
@@ -1449,6 +1395,82 @@ min. (°)</translation>
     <message>
         <source>Radius ratio 3r/R (% of tets)</source>
         <translation>Rapport des rayons 3r/R (% des tétraèdres)</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::TetmeshWorkflow</name>
+    <message>
+        <source>&amp;Tetrahedralise…</source>
+        <translation>&amp;Tétraédriser…</translation>
+    </message>
+    <message>
+        <source>Mesh the regions of the input and of the remesh with TetGen and compare the tetrahedra</source>
+        <translation>Mailler les régions du modèle d&apos;entrée et du remaillage avec TetGen et comparer les tétraèdres</translation>
+    </message>
+    <message>
+        <source>Cancel &amp;Tetrahedralisation</source>
+        <translation>Annuler la &amp;tétraédrisation</translation>
+    </message>
+    <message>
+        <source>Stop TetGen; nothing is kept of this run</source>
+        <translation>Arrêter TetGen ; rien n&apos;est gardé de cette exécution</translation>
+    </message>
+    <message>
+        <source>Tetrahedra</source>
+        <translation>Tétraèdres</translation>
+    </message>
+    <message>
+        <source>&amp;Tetrahedra</source>
+        <translation>&amp;Tétraèdres</translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation>Région</translation>
+    </message>
+    <message>
+        <source>Min dihedral
+angle (°)</source>
+        <translation>Angle dièdre
+min. (°)</translation>
+    </message>
+    <message>
+        <source>Tetrahedralising %1…</source>
+        <translation>Tétraédrisation de %1…</translation>
+    </message>
+    <message>
+        <source>Input: %1 tets, %2 slivers, min dihedral %3° in %4 s</source>
+        <translation>Entrée : %1 tétraèdres, %2 tétraèdres plats, angle dièdre min. %3° en %4 s</translation>
+    </message>
+    <message>
+        <source>Remesh: %1 tets, %2 slivers, min dihedral %3° in %4 s</source>
+        <translation>Remaillage : %1 tétraèdres, %2 tétraèdres plats, angle dièdre min. %3° en %4 s</translation>
+    </message>
+    <message>
+        <source>Tetrahedralised — see Tetrahedra</source>
+        <translation>Tétraédrisé — voir Tétraèdres</translation>
+    </message>
+    <message>
+        <source>TetGen failed on a model — see Tetrahedra</source>
+        <translation>Échec de TetGen sur un modèle — voir Tétraèdres</translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation failed: %1</source>
+        <translation>Échec de la tétraédrisation : %1</translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation failed — see Messages</source>
+        <translation>Échec de la tétraédrisation — voir Messages</translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation cancelled</source>
+        <translation>Tétraédrisation annulée</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::Workflow</name>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Annulation…</translation>
     </message>
 </context>
 </TS>

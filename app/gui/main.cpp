@@ -1,8 +1,11 @@
 // stratamesh: the desktop application.
 #include "common/version.h"
+#include "complexity_workflow.h"
 #include "gui_options.h"
 #include "ledger_panel.h"
 #include "main_window.h"
+#include "open_workflow.h"
+#include "remesh_workflow.h"
 #include "translations.h"
 #include "vtk_view_widget.h"
 #include "window_screenshot.h"
@@ -44,11 +47,11 @@ int main(int argc, char **argv)
     };
     if (options.remeshSites > 0) {
         QObject::connect(
-            &window, &stratamesh::MainWindow::loadFinished, &window,
+            window.openWorkflow(), &stratamesh::OpenWorkflow::finished, &window,
             [&](bool ok) {
                 stratamesh::RemeshParams params;
                 params.sites = options.remeshSites;
-                if (!ok || !window.startRemesh(params)) {
+                if (!ok || !window.remeshWorkflow()->start(params)) {
                     if (!options.screenshotPath.isEmpty())
                         screenshot(false);
                 }
@@ -56,30 +59,32 @@ int main(int argc, char **argv)
             Qt::SingleShotConnection);
         if (!options.screenshotPath.isEmpty())
             QObject::connect(
-                &window, &stratamesh::MainWindow::remeshFinished, &window, [&](bool ok) {
+                window.remeshWorkflow(), &stratamesh::RemeshWorkflow::finished, &window,
+                [&](bool ok) {
                     if (ok) {
-                        window.ledgerPanel()->selectRow(0);
+                        window.remeshWorkflow()->ledgerPanel()->selectRow(0);
                         window.resetCamera(); // the whole model, the marked record somewhere in it
                     }
                     screenshot(ok);
                 });
     } else if (options.complexityCells > 0) {
         QObject::connect(
-            &window, &stratamesh::MainWindow::loadFinished, &window,
+            window.openWorkflow(), &stratamesh::OpenWorkflow::finished, &window,
             [&](bool ok) {
                 stratamesh::ComplexityParams params;
                 params.cells = {options.complexityCells};
-                if (!ok || !window.startComplexity(params)) {
+                if (!ok || !window.complexityWorkflow()->start(params)) {
                     if (!options.screenshotPath.isEmpty())
                         screenshot(false);
                 }
             },
             Qt::SingleShotConnection);
         if (!options.screenshotPath.isEmpty())
-            QObject::connect(&window, &stratamesh::MainWindow::complexityFinished, &window,
-                             screenshot);
+            QObject::connect(window.complexityWorkflow(), &stratamesh::ComplexityWorkflow::finished,
+                             &window, screenshot);
     } else if (!options.screenshotPath.isEmpty()) {
-        QObject::connect(&window, &stratamesh::MainWindow::loadFinished, &window, screenshot);
+        QObject::connect(window.openWorkflow(), &stratamesh::OpenWorkflow::finished, &window,
+                         screenshot);
     }
     window.show();
     if (options.openPath.isEmpty())

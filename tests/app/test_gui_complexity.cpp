@@ -10,10 +10,13 @@
 #include "complexity_controller.h"
 #include "complexity_dialog.h"
 #include "complexity_panel.h"
+#include "complexity_workflow.h"
 #include "gui_options.h"
 #include "main_window.h"
 #include "message_panel.h"
 #include "model_scene.h"
+#include "open_workflow.h"
+#include "remesh_workflow.h"
 #include "translations.h"
 #include "vtk_view_widget.h"
 
@@ -46,11 +49,11 @@ constexpr int kTimeoutMs = 60000;
 bool waitForComplexity(MainWindow &window, const ComplexityParams &params,
                        bool cancelAtOnce = false)
 {
-    QSignalSpy finished(&window, &MainWindow::complexityFinished);
-    if (!window.startComplexity(params))
+    QSignalSpy finished(window.complexityWorkflow(), &ComplexityWorkflow::finished);
+    if (!window.complexityWorkflow()->start(params))
         return false;
     if (cancelAtOnce)
-        window.cancelComplexityAction()->trigger();
+        window.complexityWorkflow()->cancelAction()->trigger();
     if (!finished.wait(kTimeoutMs))
         return false;
     return finished.first().first().toBool();
@@ -85,13 +88,15 @@ private slots:
         m_window->resize(1200, 800);
         m_window->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        QVERIFY(!m_window->complexityAction()->isEnabled()); // nothing to measure yet
-        QSignalSpy loaded(m_window.get(), &MainWindow::loadFinished);
+        QVERIFY(!m_window->complexityWorkflow()
+                     ->analyseAction()
+                     ->isEnabled()); // nothing to measure yet
+        QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
         m_window->openSample();
         QVERIFY(loaded.wait(kTimeoutMs));
         QVERIFY(loaded.first().first().toBool());
-        QVERIFY(m_window->complexityAction()->isEnabled());
-        QVERIFY(!m_window->exportCellsAction()->isEnabled());
+        QVERIFY(m_window->complexityWorkflow()->analyseAction()->isEnabled());
+        QVERIFY(!m_window->complexityWorkflow()->exportAction()->isEnabled());
         m_model = m_window->scene()->model();
         QVERIFY(m_model);
     }
@@ -140,20 +145,22 @@ private slots:
     {
         ComplexityParams big;
         big.cells = {200000};
-        QSignalSpy cancelled(m_window->complexityController(), &ComplexityController::cancelled);
+        QSignalSpy cancelled(m_window->complexityWorkflow()->controller(),
+                             &ComplexityController::cancelled);
         QVERIFY(!waitForComplexity(*m_window, big, true));
         QCOMPARE(cancelled.size(), 1);
-        QVERIFY(!m_window->complexityOutcome());
-        QVERIFY(!m_window->heatMap()->hasCells());
-        QCOMPARE(m_window->heatMap()->polyData()->GetNumberOfCells(), vtkIdType(0));
-        QVERIFY(!m_window->heatMap()->actor()->GetVisibility());
-        QVERIFY(!m_window->complexityPanel()->hasReport());
+        QVERIFY(!m_window->complexityWorkflow()->outcome());
+        QVERIFY(!m_window->complexityWorkflow()->heatMap()->hasCells());
+        QCOMPARE(m_window->complexityWorkflow()->heatMap()->polyData()->GetNumberOfCells(),
+                 vtkIdType(0));
+        QVERIFY(!m_window->complexityWorkflow()->heatMap()->actor()->GetVisibility());
+        QVERIFY(!m_window->complexityWorkflow()->panel()->hasReport());
         // The window is usable again.
-        QVERIFY(!m_window->complexityController()->isBusy());
-        QVERIFY(m_window->complexityAction()->isEnabled());
-        QVERIFY(m_window->remeshAction()->isEnabled());
-        QVERIFY(!m_window->cancelComplexityAction()->isEnabled());
-        QVERIFY(!m_window->exportCellsAction()->isEnabled());
+        QVERIFY(!m_window->complexityWorkflow()->controller()->isBusy());
+        QVERIFY(m_window->complexityWorkflow()->analyseAction()->isEnabled());
+        QVERIFY(m_window->remeshWorkflow()->remeshAction()->isEnabled());
+        QVERIFY(!m_window->complexityWorkflow()->cancelAction()->isEnabled());
+        QVERIFY(!m_window->complexityWorkflow()->exportAction()->isEnabled());
         QCOMPARE(m_window->scene()->model(), m_model);
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), 0);
     }
@@ -161,7 +168,7 @@ private slots:
     void dockShowsTheCoreFigures()
     {
         const ComplexityParams params = smallRun();
-        QSignalSpy progress(m_window->complexityController(),
+        QSignalSpy progress(m_window->complexityWorkflow()->controller(),
                             &ComplexityController::progressChanged);
         QVERIFY(waitForComplexity(*m_window, params));
         // The bar only moves forward through the stages and ends full.
@@ -169,13 +176,13 @@ private slots:
         for (qsizetype k = 1; k < progress.size(); ++k)
             QVERIFY(progress[k].first().toInt() >= progress[k - 1].first().toInt());
         QCOMPARE(progress.last().first().toInt(), 100);
-        const auto &outcome = m_window->complexityOutcome();
+        const auto &outcome = m_window->complexityWorkflow()->outcome();
         QVERIFY(outcome);
         QCOMPARE(outcome->model, m_model);
         // The same computation by the core, here in the test thread.
         const ComplexityReport core = computeComplexity(*m_model, params);
         QCOMPARE(core.local.size(), std::size_t(1));
-        const ComplexityPanel *panel = m_window->complexityPanel();
+        const ComplexityPanel *panel = m_window->complexityWorkflow()->panel();
         QVERIFY(panel->hasReport());
         const QLocale c = QLocale::c();
         using P = ComplexityPanel;
@@ -214,7 +221,7 @@ private slots:
         QCOMPARE(panel->localText(P::MeanRow), c.toString(s.mean, 'f', 3));
         QCOMPARE(panel->localText(P::VarCoeffRow), c.toString(s.varCoeff, 'f', 3));
         QVERIFY(s.max > s.q10); // some cells meet more elements than others: a real heat map
-        QVERIFY(m_window->exportCellsAction()->isEnabled());
+        QVERIFY(m_window->complexityWorkflow()->exportAction()->isEnabled());
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), 0);
     }
 
@@ -222,10 +229,10 @@ private slots:
     // out, every other face of a drawn cell is there, coloured by that cell's count.
     void heatMapHasTheCellsAboveTheThreshold()
     {
-        const auto &outcome = m_window->complexityOutcome();
+        const auto &outcome = m_window->complexityWorkflow()->outcome();
         QVERIFY(outcome);
         const LocalComplexity &local = outcome->local();
-        CellHeatMap *heatMap = m_window->heatMap();
+        CellHeatMap *heatMap = m_window->complexityWorkflow()->heatMap();
         QCOMPARE(heatMap->threshold(), ComplexityPanel::kDefaultThreshold);
         const auto check = [&](int threshold) {
             QCOMPARE(heatMap->shownCellCount(), cellsAtLeast(local, threshold));
@@ -261,28 +268,29 @@ private slots:
         const int before = heatMap->shownCellCount();
         const int higher = local.statistics.q90;
         QVERIFY(cellsAtLeast(local, higher) != before);
-        m_window->complexityPanel()->thresholdBox()->setValue(higher);
+        m_window->complexityWorkflow()->panel()->thresholdBox()->setValue(higher);
         QCOMPARE(heatMap->threshold(), higher);
         check(higher);
         QVERIFY(heatMap->shownCellCount() != before);
-        m_window->complexityPanel()->thresholdBox()->setValue(0);
+        m_window->complexityWorkflow()->panel()->thresholdBox()->setValue(0);
         check(0);
         QCOMPARE(heatMap->shownCellCount(), int(local.counts.size()));
-        m_window->complexityPanel()->thresholdBox()->setValue(ComplexityPanel::kDefaultThreshold);
+        m_window->complexityWorkflow()->panel()->thresholdBox()->setValue(
+            ComplexityPanel::kDefaultThreshold);
         check(ComplexityPanel::kDefaultThreshold);
     }
 
     void toggleChangesTheImage()
     {
-        QVERIFY(m_window->complexityOutcome());
+        QVERIFY(m_window->complexityWorkflow()->outcome());
         m_window->resetCamera();
-        QCheckBox *toggle = m_window->complexityPanel()->heatMapBox();
+        QCheckBox *toggle = m_window->complexityWorkflow()->panel()->heatMapBox();
         QVERIFY(toggle->isChecked());
         m_window->view()->render();
         const QImage with = m_window->view()->grabFramebuffer();
         toggle->setChecked(false);
-        QVERIFY(!m_window->heatMap()->actor()->GetVisibility());
-        QVERIFY(!m_window->heatMap()->scalarBar()->GetVisibility());
+        QVERIFY(!m_window->complexityWorkflow()->heatMap()->actor()->GetVisibility());
+        QVERIFY(!m_window->complexityWorkflow()->heatMap()->scalarBar()->GetVisibility());
         m_window->view()->render();
         const QImage without = m_window->view()->grabFramebuffer();
         const int changed = test::differingPixels(with, without);
@@ -294,12 +302,12 @@ private slots:
 
     void exportedCellsReadBack()
     {
-        const auto &outcome = m_window->complexityOutcome();
+        const auto &outcome = m_window->complexityWorkflow()->outcome();
         QVERIFY(outcome);
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(QStringLiteral("cells.vtu"));
-        QVERIFY(m_window->exportComplexityCells(path));
+        QVERIFY(m_window->complexityWorkflow()->exportCells(path));
         vtkNew<vtkXMLUnstructuredGridReader> reader;
         reader->SetFileName(path.toUtf8().constData());
         reader->Update();
@@ -310,7 +318,8 @@ private slots:
         for (vtkIdType k = 0; k < grid->GetNumberOfCells(); ++k)
             QCOMPARE(int(total->GetTuple1(k)), outcome->local().counts[std::size_t(k)].total());
         // An unwritable path is an error message, not a crash.
-        QVERIFY(!m_window->exportComplexityCells(QStringLiteral("/nonexistent/dir/cells.vtu")));
+        QVERIFY(!m_window->complexityWorkflow()->exportCells(
+            QStringLiteral("/nonexistent/dir/cells.vtu")));
         QVERIFY(m_window->messagePanel()->count(Message::Severity::Error) >= 1);
     }
 
@@ -318,30 +327,30 @@ private slots:
     {
         auto window = std::make_unique<MainWindow>();
         window->show();
-        QSignalSpy loaded(window.get(), &MainWindow::loadFinished);
+        QSignalSpy loaded(window->openWorkflow(), &OpenWorkflow::finished);
         window->openSample();
         QVERIFY(loaded.wait(kTimeoutMs));
         ComplexityParams big;
         big.cells = {200000};
-        QVERIFY(window->startComplexity(big));
-        QVERIFY(window->complexityController()->isBusy());
-        QVERIFY(!window->complexityAction()->isEnabled()); // one job at a time
-        QVERIFY(!window->remeshAction()->isEnabled());
-        QVERIFY(!window->startRemesh(RemeshParams{}));
+        QVERIFY(window->complexityWorkflow()->start(big));
+        QVERIFY(window->complexityWorkflow()->controller()->isBusy());
+        QVERIFY(!window->complexityWorkflow()->analyseAction()->isEnabled()); // one job at a time
+        QVERIFY(!window->remeshWorkflow()->remeshAction()->isEnabled());
+        QVERIFY(!window->remeshWorkflow()->start(RemeshParams{}));
         window.reset(); // cancels and waits for the worker; nothing may arrive afterwards
         QTest::qWait(50);
     }
 
     void openingAnotherModelClearsTheHeatMap()
     {
-        QSignalSpy loaded(m_window.get(), &MainWindow::loadFinished);
+        QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
         m_window->openSample();
         QVERIFY(loaded.wait(kTimeoutMs));
-        QVERIFY(!m_window->complexityOutcome());
-        QVERIFY(!m_window->heatMap()->hasCells());
-        QVERIFY(!m_window->heatMap()->actor()->GetVisibility());
-        QVERIFY(!m_window->complexityPanel()->hasReport());
-        QVERIFY(!m_window->exportCellsAction()->isEnabled());
+        QVERIFY(!m_window->complexityWorkflow()->outcome());
+        QVERIFY(!m_window->complexityWorkflow()->heatMap()->hasCells());
+        QVERIFY(!m_window->complexityWorkflow()->heatMap()->actor()->GetVisibility());
+        QVERIFY(!m_window->complexityWorkflow()->panel()->hasReport());
+        QVERIFY(!m_window->complexityWorkflow()->exportAction()->isEnabled());
     }
 
 private:

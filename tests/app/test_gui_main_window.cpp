@@ -12,6 +12,7 @@
 #include "model/model_counts.h"
 #include "model_scene.h"
 #include "open_model_controller.h"
+#include "open_workflow.h"
 #include "translations.h"
 #include "vtk_view_widget.h"
 
@@ -32,7 +33,7 @@ constexpr int kLoadTimeoutMs = 120000;
 // Opens through the real controller (worker thread) and waits for the window to show the outcome.
 bool load(MainWindow &window, const QString &path)
 {
-    QSignalSpy finished(&window, &MainWindow::loadFinished);
+    QSignalSpy finished(window.openWorkflow(), &OpenWorkflow::finished);
     if (path.isEmpty())
         window.openSample();
     else

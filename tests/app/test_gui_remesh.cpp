@@ -14,18 +14,25 @@
 #include "message_panel.h"
 #include "model/model_counts.h"
 #include "model_scene.h"
+#include "open_workflow.h"
 #include "position_marker.h"
+#include "progress_strip.h"
 #include "remesh_controller.h"
 #include "remesh_dialog.h"
+#include "remesh_workflow.h"
 #include "translations.h"
 #include "vtk_view_widget.h"
+#include "window_screenshot.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
+#include <QProgressBar>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
+#include <QToolButton>
 #include <QtTest>
 
 #include <vtkRenderer.h>
@@ -38,11 +45,11 @@ constexpr int kTimeoutMs = 60000;
 
 bool waitForRemesh(MainWindow &window, const RemeshParams &params, bool cancelAtOnce = false)
 {
-    QSignalSpy finished(&window, &MainWindow::remeshFinished);
-    if (!window.startRemesh(params))
+    QSignalSpy finished(window.remeshWorkflow(), &RemeshWorkflow::finished);
+    if (!window.remeshWorkflow()->start(params))
         return false;
     if (cancelAtOnce)
-        window.cancelRemeshAction()->trigger();
+        window.remeshWorkflow()->cancelAction()->trigger();
     if (!finished.wait(kTimeoutMs))
         return false;
     return finished.first().first().toBool();
@@ -68,13 +75,13 @@ private slots:
         m_window->resize(1200, 800);
         m_window->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        QVERIFY(!m_window->remeshAction()->isEnabled()); // nothing to remesh yet
-        QSignalSpy loaded(m_window.get(), &MainWindow::loadFinished);
+        QVERIFY(!m_window->remeshWorkflow()->remeshAction()->isEnabled()); // nothing to remesh yet
+        QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
         m_window->openSample();
         QVERIFY(loaded.wait(kTimeoutMs));
         QVERIFY(loaded.first().first().toBool());
-        QVERIFY(m_window->remeshAction()->isEnabled());
-        QVERIFY(!m_window->saveRemeshedAction()->isEnabled());
+        QVERIFY(m_window->remeshWorkflow()->remeshAction()->isEnabled());
+        QVERIFY(!m_window->remeshWorkflow()->saveAction()->isEnabled());
         m_input = m_window->scene()->model();
         QVERIFY(m_input);
         m_inputTriangles = m_input->triangleCount();
@@ -119,28 +126,61 @@ private slots:
         RemeshParams big;
         big.sites = 50000;
         big.iterations = 100;
-        QSignalSpy cancelled(m_window->remeshController(), &RemeshController::cancelled);
+        QSignalSpy cancelled(m_window->remeshWorkflow()->controller(),
+                             &RemeshController::cancelled);
         QVERIFY(!waitForRemesh(*m_window, big, true));
         QCOMPARE(cancelled.size(), 1);
-        QVERIFY(!m_window->remeshOutcome());
+        QVERIFY(!m_window->remeshWorkflow()->outcome());
         QVERIFY(!m_window->outputScene()->model());
         QVERIFY(!m_window->outputView()->isVisible());
-        QCOMPARE(m_window->ledgerPanel()->tableModel()->rowCount(), 0);
+        QCOMPARE(m_window->remeshWorkflow()->ledgerPanel()->tableModel()->rowCount(), 0);
         QCOMPARE(m_window->scene()->model(), m_input);
         QCOMPARE(m_input->triangleCount(), m_inputTriangles);
         QCOMPARE(m_input->vertices.size(), m_inputVertices);
         // The window is usable again.
-        QVERIFY(!m_window->remeshController()->isBusy());
-        QVERIFY(m_window->remeshAction()->isEnabled());
-        QVERIFY(!m_window->cancelRemeshAction()->isEnabled());
-        QVERIFY(!m_window->saveRemeshedAction()->isEnabled());
+        QVERIFY(!m_window->remeshWorkflow()->controller()->isBusy());
+        QVERIFY(m_window->remeshWorkflow()->remeshAction()->isEnabled());
+        QVERIFY(!m_window->remeshWorkflow()->cancelAction()->isEnabled());
+        QVERIFY(!m_window->remeshWorkflow()->saveAction()->isEnabled());
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), 0);
+    }
+
+    // One strip for every workflow: the running one's stage, bar and Cancel, gone once it ends.
+    void progressStripFollowsTheRun()
+    {
+        ProgressStrip *strip = m_window->progressStrip();
+        QToolButton *cancel = strip->findChild<QToolButton *>();
+        QVERIFY(cancel);
+        QVERIFY(!strip->progressBar()->isVisible());
+        QVERIFY(!cancel->isVisible());
+        RemeshParams big;
+        big.sites = 50000;
+        QSignalSpy progress(m_window->remeshWorkflow()->controller(),
+                            &RemeshController::progressChanged);
+        QSignalSpy finished(m_window->remeshWorkflow(), &RemeshWorkflow::finished);
+        QVERIFY(m_window->remeshWorkflow()->start(big));
+        QVERIFY(strip->progressBar()->isVisible());
+        QVERIFY(cancel->isVisible());
+        QCOMPARE(cancel->defaultAction(), m_window->remeshWorkflow()->cancelAction());
+        while (progress.size() < 3)
+            QVERIFY(progress.wait(kTimeoutMs));
+        QVERIFY2(strip->text().startsWith(QLatin1String("Remeshing")), qPrintable(strip->text()));
+        const QString shots = QStringLiteral(STRATAMESH_SCREENSHOT_DIR);
+        QDir().mkpath(shots);
+        QVERIFY(saveWindowScreenshot(m_window.get(), shots + "/remesh_running.png"));
+        QTest::mouseClick(cancel, Qt::LeftButton);
+        QVERIFY(finished.wait(kTimeoutMs));
+        QVERIFY(!finished.first().first().toBool());
+        QVERIFY(!strip->progressBar()->isVisible());
+        QVERIFY(!cancel->isVisible());
+        QCOMPARE(strip->text(), QStringLiteral("Remeshing cancelled"));
+        QVERIFY(!m_window->remeshWorkflow()->outcome());
     }
 
     void remeshShowsOutputLedgerAndComparison()
     {
         QVERIFY(waitForRemesh(*m_window, smallRun()));
-        const auto &outcome = m_window->remeshOutcome();
+        const auto &outcome = m_window->remeshWorkflow()->outcome();
         QVERIFY(outcome);
         QVERIFY(outcome->output && outcome->ledger);
         // The input is the one on screen, untouched.
@@ -166,7 +206,7 @@ private slots:
         QVERIFY2(drawn > output.width() * output.height() / 20, qPrintable(QString::number(drawn)));
 
         // One row per ledger record, the summary names every kind present.
-        LedgerPanel *ledger = m_window->ledgerPanel();
+        LedgerPanel *ledger = m_window->remeshWorkflow()->ledgerPanel();
         QCOMPARE(ledger->tableModel()->rowCount(), int(outcome->ledger->size()));
         QCOMPARE(ledger->visibleRowCount(), int(outcome->ledger->size()));
         for (LedgerKind kind : LedgerTableModel::allKinds())
@@ -176,7 +216,7 @@ private slots:
                          qPrintable(ledger->summaryText()));
 
         // Table 4.2 figures are the core's comparison of these two models.
-        ComparisonTable *table = m_window->comparisonTable();
+        ComparisonTable *table = m_window->remeshWorkflow()->comparisonTable();
         QVERIFY(table->hasComparison());
         const ModelCounts outCounts = countEntities(*outcome->output);
         QCOMPARE(table->cellText(ComparisonTable::TrianglesRow, ComparisonTable::InputColumn),
@@ -213,17 +253,17 @@ private slots:
         QVERIFY2(qAbs(inSum - 100.0) < 1e-6 && qAbs(outSum - 100.0) < 1e-6,
                  qPrintable(QStringLiteral("%1 %2").arg(inSum).arg(outSum)));
 
-        QVERIFY(m_window->saveRemeshedAction()->isEnabled());
-        QVERIFY(m_window->remeshAction()->isEnabled());
+        QVERIFY(m_window->remeshWorkflow()->saveAction()->isEnabled());
+        QVERIFY(m_window->remeshWorkflow()->remeshAction()->isEnabled());
     }
 
     void filterAndMarker()
     {
-        const auto &outcome = m_window->remeshOutcome();
+        const auto &outcome = m_window->remeshWorkflow()->outcome();
         QVERIFY(outcome);
         if (outcome->ledger->empty())
             QSKIP("this run recorded no simplification");
-        LedgerPanel *ledger = m_window->ledgerPanel();
+        LedgerPanel *ledger = m_window->remeshWorkflow()->ledgerPanel();
         const LedgerKind kind = (*outcome->ledger).back().kind;
         ledger->setKindFilter(kind);
         QCOMPARE(ledger->visibleRowCount(), countKind(*outcome->ledger, kind));
@@ -236,15 +276,15 @@ private slots:
         const int recordIndex = ledger->filter()->recordIndex(last);
         const QImage unmarked = m_window->outputView()->grabFramebuffer();
         ledger->selectRow(last);
-        QVERIFY(m_window->marker()->isVisible());
-        QVERIFY(
-            (m_window->marker()->position() - (*outcome->ledger)[std::size_t(recordIndex)].position)
-                .norm()
-            < 1e-12);
+        QVERIFY(m_window->remeshWorkflow()->marker()->isVisible());
+        QVERIFY((m_window->remeshWorkflow()->marker()->position()
+                 - (*outcome->ledger)[std::size_t(recordIndex)].position)
+                    .norm()
+                < 1e-12);
         const QImage marked = m_window->outputView()->grabFramebuffer();
         QVERIFY(test::differingPixels(marked, unmarked, 6) > 0);
         ledger->selectRow(-1);
-        QVERIFY(!m_window->marker()->isVisible());
+        QVERIFY(!m_window->remeshWorkflow()->marker()->isVisible());
 
         ledger->setKindFilter(std::nullopt);
         QCOMPARE(ledger->visibleRowCount(), int(outcome->ledger->size()));
@@ -252,19 +292,19 @@ private slots:
 
     void savedModelReadsBack()
     {
-        const auto &outcome = m_window->remeshOutcome();
+        const auto &outcome = m_window->remeshWorkflow()->outcome();
         QVERIFY(outcome);
         QTemporaryDir dir;
         for (const QString &name : {QStringLiteral("remeshed.ml"), QStringLiteral("remeshed.ts"),
                                     QStringLiteral("remeshed.gm")}) {
             const QString path = dir.filePath(name);
-            QVERIFY(m_window->saveRemeshedModel(path));
+            QVERIFY(m_window->remeshWorkflow()->save(path));
             const Model back = readModel(path.toStdString());
             QCOMPARE(back.surfaces.size(), outcome->output->surfaces.size());
             QCOMPARE(back.triangleCount(), outcome->output->triangleCount());
         }
         // An unwritable path is an error message, not a crash.
-        QVERIFY(!m_window->saveRemeshedModel(QStringLiteral("/nonexistent/dir/out.ml")));
+        QVERIFY(!m_window->remeshWorkflow()->save(QStringLiteral("/nonexistent/dir/out.ml")));
         QVERIFY(m_window->messagePanel()->count(Message::Severity::Error) >= 1);
     }
 
@@ -272,28 +312,28 @@ private slots:
     {
         auto window = std::make_unique<MainWindow>();
         window->show();
-        QSignalSpy loaded(window.get(), &MainWindow::loadFinished);
+        QSignalSpy loaded(window->openWorkflow(), &OpenWorkflow::finished);
         window->openSample();
         QVERIFY(loaded.wait(kTimeoutMs));
         RemeshParams big;
         big.sites = 50000;
-        QVERIFY(window->startRemesh(big));
-        QVERIFY(window->remeshController()->isBusy());
-        QVERIFY(!window->remeshAction()->isEnabled()); // one job at a time
+        QVERIFY(window->remeshWorkflow()->start(big));
+        QVERIFY(window->remeshWorkflow()->controller()->isBusy());
+        QVERIFY(!window->remeshWorkflow()->remeshAction()->isEnabled()); // one job at a time
         window.reset(); // cancels and waits for the worker; nothing may arrive afterwards
         QTest::qWait(50);
     }
 
     void openingAnotherModelClearsTheOutput()
     {
-        QSignalSpy loaded(m_window.get(), &MainWindow::loadFinished);
+        QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
         m_window->openSample();
         QVERIFY(loaded.wait(kTimeoutMs));
-        QVERIFY(!m_window->remeshOutcome());
+        QVERIFY(!m_window->remeshWorkflow()->outcome());
         QVERIFY(!m_window->outputScene()->model());
         QVERIFY(!m_window->outputView()->isVisible());
-        QCOMPARE(m_window->ledgerPanel()->tableModel()->rowCount(), 0);
-        QVERIFY(!m_window->saveRemeshedAction()->isEnabled());
+        QCOMPARE(m_window->remeshWorkflow()->ledgerPanel()->tableModel()->rowCount(), 0);
+        QVERIFY(!m_window->remeshWorkflow()->saveAction()->isEnabled());
     }
 
 private:

@@ -3,7 +3,9 @@
 // back and named the mesh-building steps, and the previous remesh stays shown.
 #include "main_window.h"
 #include "model_scene.h"
+#include "open_workflow.h"
 #include "remesh_controller.h"
+#include "remesh_workflow.h"
 #include "support/test_data.h"
 
 #include <QAction>
@@ -27,7 +29,7 @@ void TestGuiRemeshCancel::cancelDuringMeshBuilding()
     window.resize(1200, 800);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QSignalSpy loaded(&window, &MainWindow::loadFinished);
+    QSignalSpy loaded(window.openWorkflow(), &OpenWorkflow::finished);
     window.openFile(path);
     QVERIFY(loaded.wait(120000));
     QVERIFY(loaded.first().first().toBool());
@@ -37,16 +39,16 @@ void TestGuiRemeshCancel::cancelDuringMeshBuilding()
     quick.sites = 500;
     quick.iterations = 5;
     quick.refinementRounds = 0;
-    QSignalSpy finished(&window, &MainWindow::remeshFinished);
-    QVERIFY(window.startRemesh(quick));
+    QSignalSpy finished(window.remeshWorkflow(), &RemeshWorkflow::finished);
+    QVERIFY(window.remeshWorkflow()->start(quick));
     QVERIFY(finished.wait(180000));
     QVERIFY(finished.first().first().toBool());
-    QVERIFY(window.remeshOutcome());
-    const auto previous = window.remeshOutcome()->output;
-    const int previousSites = window.remeshOutcome()->siteCount;
+    QVERIFY(window.remeshWorkflow()->outcome());
+    const auto previous = window.remeshWorkflow()->outcome()->output;
+    const int previousSites = window.remeshWorkflow()->outcome()->siteCount;
     finished.clear();
 
-    RemeshController *job = window.remeshController();
+    RemeshController *job = window.remeshWorkflow()->controller();
     std::vector<int> percents;
     QStringList stages;
     QElapsedTimer sinceCancel;
@@ -55,7 +57,7 @@ void TestGuiRemeshCancel::cancelDuringMeshBuilding()
         stages << stage;
         if (!sinceCancel.isValid() && stage.contains(QLatin1String("Mesh building: cell points"))) {
             sinceCancel.start();
-            window.cancelRemeshAction()->trigger();
+            window.remeshWorkflow()->cancelAction()->trigger();
         }
     });
     qint64 stoppedAfter = -1;
@@ -63,7 +65,7 @@ void TestGuiRemeshCancel::cancelDuringMeshBuilding()
             [&] { stoppedAfter = sinceCancel.isValid() ? sinceCancel.elapsed() : -1; });
     RemeshParams big;
     big.sites = 5000;
-    QVERIFY(window.startRemesh(big));
+    QVERIFY(window.remeshWorkflow()->start(big));
     QVERIFY(finished.wait(300000));
     QVERIFY(!finished.first().first().toBool());
     QVERIFY(sinceCancel.isValid());
@@ -79,13 +81,13 @@ void TestGuiRemeshCancel::cancelDuringMeshBuilding()
     QVERIFY(percents.back() >= 30);
 
     // The previous result stays, and the window is usable again.
-    QVERIFY(window.remeshOutcome());
-    QCOMPARE(window.remeshOutcome()->output, previous);
-    QCOMPARE(window.remeshOutcome()->siteCount, previousSites);
+    QVERIFY(window.remeshWorkflow()->outcome());
+    QCOMPARE(window.remeshWorkflow()->outcome()->output, previous);
+    QCOMPARE(window.remeshWorkflow()->outcome()->siteCount, previousSites);
     QCOMPARE(window.outputScene()->model(), previous);
     QVERIFY(!job->isBusy());
-    QVERIFY(window.remeshAction()->isEnabled());
-    QVERIFY(!window.cancelRemeshAction()->isEnabled());
+    QVERIFY(window.remeshWorkflow()->remeshAction()->isEnabled());
+    QVERIFY(!window.remeshWorkflow()->cancelAction()->isEnabled());
 }
 
 QTEST_MAIN(TestGuiRemeshCancel)

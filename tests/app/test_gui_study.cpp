@@ -8,6 +8,7 @@
 #include "main_window.h"
 #include "model_scene.h"
 #include "study_window.h"
+#include "study_workflow.h"
 #include "task_result_window.h"
 #include "vtk_view_widget.h"
 #include "window_screenshot.h"
@@ -126,14 +127,14 @@ private slots:
     void fileMenuOpensTheStudy()
     {
         MainWindow window;
-        QVERIFY(window.openStudyAction());
-        QVERIFY(!window.openStudyAction()->text().isEmpty());
+        QVERIFY(window.studyWorkflow()->openAction());
+        QVERIFY(!window.studyWorkflow()->openAction()->text().isEmpty());
         QVERIFY(window.menuBar()->actions().first()->menu()->actions().contains(
-            window.openStudyAction()));
-        window.openStudy(m_dir.filePath("out/study.json"));
-        QVERIFY(window.studyWindow());
-        QVERIFY(QTest::qWaitForWindowExposed(window.studyWindow()));
-        QCOMPARE(window.studyWindow()->table()->model()->rowCount(), 6);
+            window.studyWorkflow()->openAction()));
+        window.studyWorkflow()->openStudy(m_dir.filePath("out/study.json"));
+        QVERIFY(window.studyWorkflow()->studyWindow());
+        QVERIFY(QTest::qWaitForWindowExposed(window.studyWorkflow()->studyWindow()));
+        QCOMPARE(window.studyWorkflow()->studyWindow()->table()->model()->rowCount(), 6);
     }
 
     void aStudyWithoutATableSaysSo()

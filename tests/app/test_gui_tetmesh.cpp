@@ -10,11 +10,14 @@
 #include "main_window.h"
 #include "message_panel.h"
 #include "model_scene.h"
+#include "open_workflow.h"
 #include "remesh_controller.h"
+#include "remesh_workflow.h"
 #include "tet_mesh_pair.h"
 #include "tetmesh_controller.h"
 #include "tetmesh_dialog.h"
 #include "tetmesh_panel.h"
+#include "tetmesh_workflow.h"
 #include "translations.h"
 #include "vtk_view_widget.h"
 #include "window_screenshot.h"
@@ -39,11 +42,11 @@ constexpr int kTimeoutMs = 120000;
 bool waitForTetmesh(MainWindow &window, const TetgenParams &params, bool withRemesh,
                     bool cancelAtOnce = false)
 {
-    QSignalSpy finished(&window, &MainWindow::tetmeshFinished);
-    if (!window.startTetmesh(params, withRemesh))
+    QSignalSpy finished(window.tetmeshWorkflow(), &TetmeshWorkflow::finished);
+    if (!window.tetmeshWorkflow()->start(params, withRemesh))
         return false;
     if (cancelAtOnce)
-        window.cancelTetmeshAction()->trigger();
+        window.tetmeshWorkflow()->cancelAction()->trigger();
     if (!finished.wait(kTimeoutMs))
         return false;
     return finished.first().first().toBool();
@@ -69,12 +72,12 @@ private slots:
         m_window->resize(1500, 900);
         m_window->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        QVERIFY(!m_window->tetmeshAction()->isEnabled()); // nothing to mesh yet
-        QSignalSpy loaded(m_window.get(), &MainWindow::loadFinished);
+        QVERIFY(!m_window->tetmeshWorkflow()->tetmeshAction()->isEnabled()); // nothing to mesh yet
+        QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
         m_window->openSample();
         QVERIFY(loaded.wait(kTimeoutMs));
         QVERIFY(loaded.first().first().toBool());
-        QVERIFY(m_window->tetmeshAction()->isEnabled());
+        QVERIFY(m_window->tetmeshWorkflow()->tetmeshAction()->isEnabled());
     }
 
     void cleanupTestCase() { m_window.reset(); }
@@ -109,28 +112,30 @@ private slots:
         TetgenParams params;
         params.timeLimitSeconds = 60.0;
         QVERIFY(waitForTetmesh(*m_window, params, true)); // no remesh yet: the input alone
-        const auto &outcome = m_window->tetmeshOutcome();
+        const auto &outcome = m_window->tetmeshWorkflow()->outcome();
         QVERIFY(outcome && outcome->inputSide && !outcome->outputSide);
         QCOMPARE(outcome->inputSide->result.outcome, TetgenOutcome::Ok);
-        TetmeshPanel *panel = m_window->tetmeshPanel();
+        TetmeshPanel *panel = m_window->tetmeshWorkflow()->panel();
         QCOMPARE(panel->cellText(TetmeshPanel::OutcomeRow, TetmeshPanel::InputColumn),
                  QStringLiteral("ok"));
         QVERIFY(panel->cellText(TetmeshPanel::OutcomeRow, TetmeshPanel::RemeshColumn).isEmpty());
-        QCOMPARE(m_window->tetScenes()->input().tetCount(), int(outcome->inputSide->quality.tets));
-        QVERIFY(!m_window->tetScenes()->output().mesh());
+        QCOMPARE(m_window->tetmeshWorkflow()->scenes()->input().tetCount(),
+                 int(outcome->inputSide->quality.tets));
+        QVERIFY(!m_window->tetmeshWorkflow()->scenes()->output().mesh());
         QVERIFY(!m_window->scene()->isVisible()); // the tets are drawn in place of the surfaces
         QVERIFY(qAbs(percentSum(*panel->minDihedralChart(), true) - 100.0) < 1e-6);
     }
 
     void cancelLeavesNothing()
     {
-        QSignalSpy cancelled(m_window->tetmeshController(), &TetmeshController::cancelled);
+        QSignalSpy cancelled(m_window->tetmeshWorkflow()->controller(),
+                             &TetmeshController::cancelled);
         QVERIFY(!waitForTetmesh(*m_window, TetgenParams{}, false, true));
         QCOMPARE(cancelled.size(), 1);
-        QVERIFY(!m_window->tetmeshOutcome());
-        QVERIFY(!m_window->tetScenes()->hasMesh());
+        QVERIFY(!m_window->tetmeshWorkflow()->outcome());
+        QVERIFY(!m_window->tetmeshWorkflow()->scenes()->hasMesh());
         QVERIFY(m_window->scene()->isVisible());
-        QVERIFY(m_window->tetmeshAction()->isEnabled());
+        QVERIFY(m_window->tetmeshWorkflow()->tetmeshAction()->isEnabled());
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), 0);
     }
 
@@ -143,9 +148,11 @@ private slots:
         MainWindow *window = m_window.get();
         params.onStarted = [&helper, window](int pid) {
             helper = pid;
-            QMetaObject::invokeMethod(window, &MainWindow::cancelTetmesh, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(window->tetmeshWorkflow(), &TetmeshWorkflow::cancel,
+                                      Qt::QueuedConnection);
         };
-        QSignalSpy cancelled(m_window->tetmeshController(), &TetmeshController::cancelled);
+        QSignalSpy cancelled(m_window->tetmeshWorkflow()->controller(),
+                             &TetmeshController::cancelled);
         QElapsedTimer timer;
         timer.start();
         QVERIFY(!waitForTetmesh(*m_window, params, false));
@@ -153,8 +160,8 @@ private slots:
         QVERIFY(helper > 0);
         QVERIFY2(timer.elapsed() < 20000, qPrintable(QString::number(timer.elapsed())));
         QVERIFY(::kill(pid_t(helper.load()), 0) != 0); // gone, not left running
-        QVERIFY(!m_window->tetmeshOutcome());
-        QVERIFY(m_window->tetmeshAction()->isEnabled());
+        QVERIFY(!m_window->tetmeshWorkflow()->outcome());
+        QVERIFY(m_window->tetmeshWorkflow()->tetmeshAction()->isEnabled());
     }
 
     void inputAndRemeshSideBySide()
@@ -162,23 +169,23 @@ private slots:
         RemeshParams remesh;
         remesh.sites = 300;
         remesh.iterations = 20;
-        QSignalSpy remeshed(m_window.get(), &MainWindow::remeshFinished);
-        QVERIFY(m_window->startRemesh(remesh));
+        QSignalSpy remeshed(m_window->remeshWorkflow(), &RemeshWorkflow::finished);
+        QVERIFY(m_window->remeshWorkflow()->start(remesh));
         QVERIFY(remeshed.wait(kTimeoutMs));
         QVERIFY(remeshed.first().first().toBool());
 
         TetgenParams params;
         params.timeLimitSeconds = 60.0;
         QVERIFY(waitForTetmesh(*m_window, params, true));
-        const auto &outcome = m_window->tetmeshOutcome();
+        const auto &outcome = m_window->tetmeshWorkflow()->outcome();
         QVERIFY(outcome && outcome->inputSide && outcome->outputSide);
-        QCOMPARE(outcome->output, m_window->remeshOutcome()->output);
+        QCOMPARE(outcome->output, m_window->remeshWorkflow()->outcome()->output);
         const TetmeshSide &in = *outcome->inputSide, &out = *outcome->outputSide;
         QCOMPARE(in.result.outcome, TetgenOutcome::Ok);
         QCOMPARE(out.result.outcome, TetgenOutcome::Ok);
 
         // The table holds the core's figures of both sides.
-        TetmeshPanel *panel = m_window->tetmeshPanel();
+        TetmeshPanel *panel = m_window->tetmeshWorkflow()->panel();
         for (auto [column, side] : {std::pair{TetmeshPanel::InputColumn, &in},
                                     std::pair{TetmeshPanel::RemeshColumn, &out}}) {
             QCOMPARE(panel->cellText(TetmeshPanel::OutcomeRow, column), QStringLiteral("ok"));
@@ -211,7 +218,7 @@ private slots:
         }
 
         // The tets are drawn in both views, in place of the surfaces.
-        TetMeshPair *scenes = m_window->tetScenes();
+        TetMeshPair *scenes = m_window->tetmeshWorkflow()->scenes();
         QCOMPARE(scenes->input().tetCount(), int(in.quality.tets));
         QCOMPARE(scenes->output().tetCount(), int(out.quality.tets));
         QVERIFY(!m_window->scene()->isVisible() && !m_window->outputScene()->isVisible());
@@ -257,11 +264,11 @@ private slots:
         };
         const int errors = m_window->messagePanel()->count(Message::Severity::Error);
         QVERIFY(waitForTetmesh(*m_window, params, true));
-        const auto &outcome = m_window->tetmeshOutcome();
+        const auto &outcome = m_window->tetmeshWorkflow()->outcome();
         QVERIFY(outcome && outcome->inputSide && outcome->outputSide);
         QCOMPARE(outcome->inputSide->result.outcome, TetgenOutcome::Killed);
         QCOMPARE(outcome->outputSide->result.outcome, TetgenOutcome::Ok);
-        TetmeshPanel *panel = m_window->tetmeshPanel();
+        TetmeshPanel *panel = m_window->tetmeshWorkflow()->panel();
         QCOMPARE(panel->cellText(TetmeshPanel::OutcomeRow, TetmeshPanel::InputColumn),
                  QStringLiteral("killed"));
         QCOMPARE(panel->cellText(TetmeshPanel::TetsRow, TetmeshPanel::InputColumn),
@@ -271,18 +278,18 @@ private slots:
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), errors);
         // The input's surfaces stay on screen; the remesh's tets are drawn.
         QVERIFY(m_window->scene()->isVisible());
-        QVERIFY(!m_window->tetScenes()->input().mesh());
-        QVERIFY(m_window->tetScenes()->output().tetCount() > 0);
+        QVERIFY(!m_window->tetmeshWorkflow()->scenes()->input().mesh());
+        QVERIFY(m_window->tetmeshWorkflow()->scenes()->output().tetCount() > 0);
     }
 
     void openingAnotherModelClearsTheTets()
     {
-        QSignalSpy loaded(m_window.get(), &MainWindow::loadFinished);
+        QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
         m_window->openSample();
         QVERIFY(loaded.wait(kTimeoutMs));
-        QVERIFY(!m_window->tetmeshOutcome());
-        QVERIFY(!m_window->tetScenes()->hasMesh());
-        QVERIFY(!m_window->tetmeshPanel()->hasResult());
+        QVERIFY(!m_window->tetmeshWorkflow()->outcome());
+        QVERIFY(!m_window->tetmeshWorkflow()->scenes()->hasMesh());
+        QVERIFY(!m_window->tetmeshWorkflow()->panel()->hasResult());
         QVERIFY(m_window->scene()->isVisible());
     }
 

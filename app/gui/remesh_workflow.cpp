@@ -1,0 +1,318 @@
+#include "remesh_workflow.h"
+
+#include "comparison_table.h"
+#include "error_message.h"
+#include "ledger_panel.h"
+#include "model_scene.h"
+#include "position_marker.h"
+#include "remesh_controller.h"
+#include "remesh_dialog.h"
+#include "validity_messages.h"
+#include "view_pair.h"
+#include "vtk_view_widget.h"
+#include "workbench.h"
+
+#include "io/formats.h"
+#include "io/mesh_writer.h"
+#include "io/output_plan.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLayout>
+#include <QLocale>
+#include <QMainWindow>
+#include <QSettings>
+#include <QStyle>
+
+#include <vtkRenderer.h>
+
+#include <algorithm>
+
+namespace stratamesh {
+
+RemeshWorkflow::RemeshWorkflow(Workbench &bench, QObject *parent)
+    : Workflow(bench, parent), m_controller(new RemeshController(this)),
+      m_marker(std::make_unique<PositionMarker>(bench.outputView()->renderer())),
+      m_ledger(new LedgerPanel(bench.window())), m_ledgerDock(new QDockWidget(bench.window())),
+      m_comparison(new ComparisonTable(bench.window())),
+      m_comparisonDock(new QDockWidget(bench.window())), m_remesh(new QAction(this)),
+      m_cancel(new QAction(this)), m_save(new QAction(this))
+{
+    const QStyle *style = bench.window()->style();
+    m_remesh->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_remesh->setIcon(QIcon::fromTheme(QStringLiteral("system-run"),
+                                       style->standardIcon(QStyle::SP_BrowserReload)));
+    m_remesh->setEnabled(false);
+    connect(m_remesh, &QAction::triggered, this, &RemeshWorkflow::remesh);
+    m_cancel->setIcon(style->standardIcon(QStyle::SP_DialogCancelButton));
+    m_cancel->setEnabled(false);
+    connect(m_cancel, &QAction::triggered, this, &RemeshWorkflow::cancel);
+    m_save->setShortcut(QKeySequence::SaveAs);
+    m_save->setIcon(QIcon::fromTheme(QStringLiteral("document-save-as"),
+                                     style->standardIcon(QStyle::SP_DialogSaveButton)));
+    m_save->setEnabled(false);
+    connect(m_save, &QAction::triggered, this, &RemeshWorkflow::chooseFile);
+
+    m_ledgerDock->setObjectName(QStringLiteral("SimplificationsDock"));
+    m_ledgerDock->setWidget(m_ledger);
+    m_comparisonDock->setObjectName(QStringLiteral("ComparisonDock"));
+    m_comparisonDock->setWidget(m_comparison);
+    connect(m_ledger, &LedgerPanel::recordSelected, this, &RemeshWorkflow::showLedgerRecord);
+
+    connect(m_controller, &RemeshController::started, this, &RemeshWorkflow::onStarted);
+    connect(m_controller, &RemeshController::succeeded, this, &RemeshWorkflow::onRemeshed);
+    connect(m_controller, &RemeshController::failed, this, &RemeshWorkflow::onFailed);
+    connect(m_controller, &RemeshController::cancelled, this, &RemeshWorkflow::onCancelled);
+    relay(m_controller);
+}
+
+RemeshWorkflow::~RemeshWorkflow()
+{
+    m_controller->disconnect(this);
+    delete m_controller;
+}
+
+QList<QAction *> RemeshWorkflow::menuActions(Menu menu) const
+{
+    switch (menu) {
+    case Menu::File:
+        return {m_save};
+    case Menu::Mesh:
+        return {m_remesh, m_cancel};
+    case Menu::Analyse:
+        break;
+    }
+    return {};
+}
+
+QList<QAction *> RemeshWorkflow::toolBarActions() const
+{
+    return {m_remesh};
+}
+
+QList<Workflow::Dock> RemeshWorkflow::docks() const
+{
+    return {{m_ledgerDock, DockPlace::WithMessages}, {m_comparisonDock, DockPlace::Review}};
+}
+
+WorkflowJob *RemeshWorkflow::job() const
+{
+    return m_controller;
+}
+
+void RemeshWorkflow::retranslate()
+{
+    m_remesh->setText(tr("&Remesh…"));
+    m_remesh->setStatusTip(
+        tr("Remesh all the surfaces at a chosen resolution, keeping the model conformal"));
+    m_cancel->setText(tr("&Cancel Remeshing"));
+    m_cancel->setStatusTip(tr("Stop the remeshing; the input model is left as it is"));
+    m_save->setText(tr("Save Remeshed Model &As…"));
+    m_save->setStatusTip(tr("Write the remeshed model as a Gocad, RINGMesh, Gmsh or VTK file"));
+    m_ledgerDock->setWindowTitle(tr("Simplifications"));
+    m_ledgerDock->toggleViewAction()->setText(tr("&Simplifications"));
+    m_comparisonDock->setWindowTitle(tr("Input vs Output"));
+    m_comparisonDock->toggleViewAction()->setText(tr("&Input vs Output"));
+    updateViewTitles();
+}
+
+void RemeshWorkflow::clear()
+{
+    m_outcome.reset();
+    m_marker->hide();
+    m_bench.outputScene()->setModel(nullptr);
+    m_ledger->setLedger(nullptr);
+    m_comparison->setComparison(std::nullopt);
+    m_bench.views()->setOutputShown(false);
+    m_ledgerDock->hide();
+    m_comparisonDock->hide();
+    m_save->setEnabled(false);
+    updateViewTitles();
+}
+
+void RemeshWorkflow::enableActions(bool busy)
+{
+    m_remesh->setEnabled(!busy && m_bench.model());
+    m_save->setEnabled(!busy && m_outcome.has_value());
+}
+
+void RemeshWorkflow::remesh()
+{
+    if (!m_bench.model() || m_bench.isBusy())
+        return;
+    RemeshDialog dialog(m_bench.inputScene()->diagonal(), m_bench.window());
+    if (m_lastParams.sites > 0 || m_lastParams.edgeLength > 0.0)
+        dialog.setParams(m_lastParams);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    start(dialog.params());
+}
+
+bool RemeshWorkflow::start(const RemeshParams &params)
+{
+    if (m_bench.isBusy())
+        return false;
+    m_lastParams = params;
+    return m_controller->start(m_bench.model(), params);
+}
+
+void RemeshWorkflow::onStarted()
+{
+    m_cancel->setEnabled(true);
+    m_bench.setStatus(tr("Remeshing %1…").arg(m_bench.displayName()));
+}
+
+void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
+{
+    emit outputReplaced();
+    m_outcome = outcome;
+    m_cancel->setEnabled(false);
+    ModelScene *input = m_bench.inputScene();
+    ModelScene *output = m_bench.outputScene();
+    m_marker->hide();
+    output->setBoxVisible(input->boxVisible());
+    output->setEdgesVisible(input->edgesVisible());
+    output->setModel(outcome.output);
+    m_bench.views()->setOutputShown(true);
+    m_ledgerDock->show();
+    m_ledgerDock->raise();
+    m_comparisonDock->show();
+    m_ledger->setLedger(outcome.ledger);
+    m_comparison->setComparison(outcome.comparison);
+    QMainWindow *window = m_bench.window();
+    window->resizeDocks({m_comparisonDock}, {m_comparison->sizeHint().width()}, Qt::Horizontal);
+    window->resizeDocks({m_ledgerDock}, {220}, Qt::Vertical);
+    // Lay the new panes out now: the camera is framed for the views' final sizes.
+    window->layout()->activate();
+    m_bench.views()->splitEvenly();
+    updateViewTitles();
+    m_bench.resetCamera();
+
+    Message done;
+    done.text = tr("Remeshed with %1 sites in %2 s: %3 triangles, %n simplification(s) recorded",
+                   nullptr, int(outcome.ledger->size()))
+                    .arg(QLocale().toString(outcome.siteCount),
+                         QLocale().toString(outcome.milliseconds / 1000.0, 'f', 2),
+                         QLocale().toString(qulonglong(outcome.output->triangleCount())));
+    m_bench.addMessage(done);
+    if (!outcome.validity.valid) {
+        // Never announced as a plain success: a volume mesher would fail on it.
+        Message invalid;
+        invalid.severity = Message::Severity::Warning;
+        invalid.text = tr(
+            "The remeshed model is NOT valid: %n problem(s) left after local refinement; saving it "
+            "is at your own risk",
+            nullptr, int(outcome.validity.problems.size()));
+        m_bench.addMessage(invalid);
+        for (const Message &m : validityMessages(outcome.validity, QString()))
+            m_bench.addMessage(m);
+        m_bench.showMessages();
+        m_bench.setStatus(tr("Remeshed, NOT valid: %n problem(s) — see Messages", nullptr,
+                             int(outcome.validity.problems.size())));
+        return;
+    }
+    m_bench.setStatus(tr("Remeshed: %n simplification(s) — see Simplifications", nullptr,
+                         int(outcome.ledger->size())));
+}
+
+void RemeshWorkflow::onFailed(const Message &error)
+{
+    m_cancel->setEnabled(false);
+    Message shown = error;
+    shown.text = tr("Remeshing failed: %1").arg(error.text);
+    m_bench.addMessage(shown);
+    m_bench.showMessages();
+    m_bench.setStatus(tr("Remeshing failed — see Messages"));
+}
+
+void RemeshWorkflow::onCancelled()
+{
+    m_cancel->setEnabled(false);
+    m_bench.setStatus(tr("Remeshing cancelled"));
+}
+
+void RemeshWorkflow::updateViewTitles()
+{
+    const QString input = tr("Input: %1").arg(m_bench.displayName());
+    if (!m_outcome) {
+        m_bench.views()->setTitles(input, QString());
+        return;
+    }
+    const QLocale locale;
+    m_bench.views()->setTitles(
+        input, tr("Output: %1 sites, %2 triangles")
+                   .arg(locale.toString(m_outcome->siteCount),
+                        locale.toString(qulonglong(m_outcome->output->triangleCount()))));
+}
+
+void RemeshWorkflow::showLedgerRecord(int recordIndex)
+{
+    const LedgerRecord *record =
+        m_outcome && recordIndex >= 0 && recordIndex < int(m_outcome->ledger->size())
+            ? &(*m_outcome->ledger)[std::size_t(recordIndex)]
+            : nullptr;
+    VtkViewWidget *outputView = m_bench.outputView();
+    if (!record) {
+        m_marker->hide();
+        outputView->render();
+        return;
+    }
+    // Big enough to be found at the whole-model zoom, never hiding the change itself entirely.
+    m_marker->show(record->position,
+                   std::max(0.015 * m_bench.outputScene()->diagonal(), 0.5 * record->size));
+    // The views share one camera: centred on the record in both.
+    const double centre[3] = {record->position.x(), record->position.y(), record->position.z()};
+    m_bench.inputView()->centreOn(centre);
+    outputView->renderer()->ResetCameraClippingRange();
+    m_bench.render();
+}
+
+void RemeshWorkflow::chooseFile()
+{
+    if (!m_outcome)
+        return;
+    QSettings settings;
+    const QString dir = settings.value(QStringLiteral("lastDirectory")).toString();
+    QString selected;
+    QString path = QFileDialog::getSaveFileName(
+        m_bench.window(), tr("Save Remeshed Model"), dir,
+        QString::fromStdString(fileDialogFilter(FormatUse::WriteModel, {}, {})), &selected);
+    if (path.isEmpty())
+        return;
+    path = QString::fromStdString(
+        withFormatExtension(path.toStdString(), FormatUse::WriteModel, selected.toStdString()));
+    settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
+    save(path);
+}
+
+bool RemeshWorkflow::save(const QString &path)
+{
+    if (!m_outcome)
+        return false;
+    Message message;
+    message.file = path;
+    try {
+        // As the command line does (io/output_plan.h): never over the open model, checked before
+        // writing, through a temporary file (which keeps the extension) and a rename.
+        OutputPlan plan({m_bench.modelPath().toStdString()});
+        plan.add(path.toStdString(), "remeshed model");
+        plan.write(path.toStdString(), [&](const std::string &temporary) {
+            exportModel(*m_outcome->output, temporary);
+        });
+        plan.commit();
+        message.text = tr("Remeshed model saved");
+        m_bench.addMessage(message);
+        m_bench.setStatus(tr("Saved %1").arg(QFileInfo(path).fileName()));
+        return true;
+    } catch (const std::exception &e) {
+        message = errorMessage(e, path);
+    }
+    m_bench.addMessage(message);
+    m_bench.showMessages();
+    m_bench.setStatus(tr("Could not save the remeshed model"));
+    return false;
+}
+
+} // namespace stratamesh

@@ -1,0 +1,79 @@
+// Mesh > Remesh…: the dialog, the run (RemeshController), and the result beside the input in the
+// output view with its Simplifications ledger and its Input vs Output comparison; File > Save
+// Remeshed Model As….
+#pragma once
+
+#include "remesh_outcome.h"
+#include "workflow.h"
+
+#include <memory>
+#include <optional>
+
+namespace stratamesh {
+
+class ComparisonTable;
+class LedgerPanel;
+class PositionMarker;
+class RemeshController;
+
+class RemeshWorkflow : public Workflow {
+    Q_OBJECT
+public:
+    explicit RemeshWorkflow(Workbench &bench, QObject *parent = nullptr);
+    // A running remeshing is cancelled and its outcome dropped.
+    ~RemeshWorkflow() override;
+
+    RemeshController *controller() const { return m_controller; }
+    // The last remeshing shown, if any (cleared when another model is opened).
+    const std::optional<RemeshOutcome> &outcome() const { return m_outcome; }
+    LedgerPanel *ledgerPanel() const { return m_ledger; }
+    ComparisonTable *comparisonTable() const { return m_comparison; }
+    PositionMarker *marker() const { return m_marker.get(); }
+    QAction *remeshAction() const { return m_remesh; }
+    QAction *saveAction() const { return m_save; }
+
+    QList<QAction *> menuActions(Menu menu) const override;
+    QList<QAction *> toolBarActions() const override;
+    QList<Dock> docks() const override;
+    WorkflowJob *job() const override;
+    QAction *cancelAction() const override { return m_cancel; }
+    void retranslate() override;
+    void clear() override;
+    void enableActions(bool busy) override;
+
+public slots:
+    // Opens the parameter dialog, then remeshes the shown model.
+    void remesh();
+    // Remeshes the shown model with these parameters (no dialog); false when it cannot start.
+    bool start(const RemeshParams &params);
+    void chooseFile();
+    // Writes the remeshed model (exportModel: format from the extension); errors go to messages.
+    bool save(const QString &path);
+    // Marks a ledger record in the output view and centres the camera on it (-1: no mark).
+    void showLedgerRecord(int recordIndex);
+
+signals:
+    // A new remesh replaces the last, before it is shown: what was made of the last one goes.
+    void outputReplaced();
+
+private:
+    void onStarted();
+    void onRemeshed(const RemeshOutcome &outcome);
+    void onFailed(const Message &error);
+    void onCancelled();
+    void updateViewTitles();
+
+    RemeshController *m_controller;
+    std::optional<RemeshOutcome> m_outcome;
+    RemeshParams m_lastParams;
+    std::unique_ptr<PositionMarker> m_marker;
+    LedgerPanel *m_ledger;
+    QDockWidget *m_ledgerDock;
+    ComparisonTable *m_comparison;
+    QDockWidget *m_comparisonDock;
+    QAction *m_remesh;
+    QAction *m_cancel;
+    QAction *m_save;
+};
+
+} // namespace stratamesh

@@ -1,0 +1,59 @@
+#include "view_pair.h"
+
+#include "vtk_view_widget.h"
+
+#include <QLabel>
+#include <QVBoxLayout>
+
+#include <vtkRenderer.h>
+
+namespace stratamesh {
+
+ViewPair::ViewPair(QWidget *parent)
+    : QSplitter(Qt::Horizontal, parent), m_input(new VtkViewWidget(this)),
+      m_output(new VtkViewWidget(this)), m_inputTitle(new QLabel(this)),
+      m_outputTitle(new QLabel(this))
+{
+    const auto pane = [this](QLabel *title, VtkViewWidget *view) {
+        auto *widget = new QWidget(this);
+        auto *layout = new QVBoxLayout(widget);
+        layout->setContentsMargins(0, 0, 0, 0);
+        layout->setSpacing(2);
+        title->setAlignment(Qt::AlignCenter);
+        layout->addWidget(title);
+        layout->addWidget(view, 1);
+        return widget;
+    };
+    m_inputTitle->setObjectName(QStringLiteral("InputViewTitle"));
+    m_outputTitle->setObjectName(QStringLiteral("OutputViewTitle"));
+    addWidget(pane(m_inputTitle, m_input));
+    m_outputPane = pane(m_outputTitle, m_output);
+    addWidget(m_outputPane);
+    setChildrenCollapsible(false);
+    m_outputPane->hide();
+    m_inputTitle->hide();
+
+    m_output->renderer()->SetActiveCamera(m_input->renderer()->GetActiveCamera());
+    connect(m_input, &VtkViewWidget::cameraMovedByUser, m_output, &VtkViewWidget::render);
+    connect(m_output, &VtkViewWidget::cameraMovedByUser, m_input, &VtkViewWidget::render);
+}
+
+void ViewPair::setOutputShown(bool shown)
+{
+    m_outputPane->setVisible(shown);
+    m_inputTitle->setVisible(shown);
+}
+
+void ViewPair::setTitles(const QString &input, const QString &output)
+{
+    m_inputTitle->setText(input);
+    m_outputTitle->setText(output);
+}
+
+void ViewPair::splitEvenly()
+{
+    const int half = width() / 2;
+    setSizes({half, width() - half});
+}
+
+} // namespace stratamesh

@@ -1,0 +1,82 @@
+// What the main window's workflows share: the input and output views with their scenes, the
+// message dock, the status line, the open model, and whether any of them is running. A workflow
+// reaches the window only through it, so one workflow is written without reading the others.
+#pragma once
+
+#include "loaded_model.h"
+
+#include <QList>
+#include <QString>
+
+#include <memory>
+
+class QDockWidget;
+class QMainWindow;
+
+namespace stratamesh {
+
+class FeatureLegend;
+class MessagePanel;
+class ModelScene;
+class ProgressStrip;
+class ViewPair;
+class VtkViewWidget;
+class WorkflowJob;
+
+class Workbench {
+public:
+    Workbench(QMainWindow *window, ViewPair *views, MessagePanel *messages,
+              QDockWidget *messageDock, ProgressStrip *strip);
+    // The scenes' actors leave the renderers here: before the views go.
+    ~Workbench();
+
+    // Parent of the workflows' docks and dialogs.
+    QMainWindow *window() const { return m_window; }
+    ViewPair *views() const { return m_views; }
+    VtkViewWidget *inputView() const;
+    VtkViewWidget *outputView() const;
+    ModelScene *inputScene() const { return m_inputScene.get(); }
+    ModelScene *outputScene() const { return m_outputScene.get(); }
+    FeatureLegend *legend() const { return m_legend; }
+    MessagePanel *messages() const { return m_messages; }
+    ProgressStrip *strip() const { return m_strip; }
+
+    // The open model (nullptr before the first); its file is never overwritten by a save.
+    const std::shared_ptr<const Model> &model() const;
+    const QString &displayName() const { return m_displayName; }
+    const QString &modelPath() const { return m_modelPath; }
+    const ModelCounts &counts() const { return m_counts; }
+    void setModel(const LoadedModel &loaded);
+
+    void addMessage(const Message &message);
+    // Shows the message dock, in front of its tabs when `raise`: something there needs reading.
+    void showMessages(bool raise = true);
+    void setStatus(const QString &text);
+
+    // Frames the input model; the output view shares the camera.
+    void resetCamera();
+    void render();
+    // While tets are drawn in place of the surfaces, the surface legend would describe nothing
+    // shown.
+    void updateLegend();
+
+    // One long run at a time: every workflow's job is registered, and none starts while any runs.
+    void addJob(WorkflowJob *job);
+    bool isBusy() const;
+
+private:
+    QMainWindow *m_window;
+    ViewPair *m_views;
+    MessagePanel *m_messages;
+    QDockWidget *m_messageDock;
+    ProgressStrip *m_strip;
+    FeatureLegend *m_legend;
+    std::unique_ptr<ModelScene> m_inputScene;
+    std::unique_ptr<ModelScene> m_outputScene;
+    QString m_displayName;
+    QString m_modelPath;
+    ModelCounts m_counts;
+    QList<WorkflowJob *> m_jobs;
+};
+
+} // namespace stratamesh

@@ -1,0 +1,74 @@
+#include "workflow.h"
+
+#include "workbench.h"
+#include "workflow_job.h"
+
+#include <QAction>
+
+namespace stratamesh {
+
+Workflow::Workflow(Workbench &bench, QObject *parent) : QObject(parent), m_bench(bench) {}
+
+Workflow::~Workflow() = default;
+
+QList<QAction *> Workflow::menuActions(Menu) const
+{
+    return {};
+}
+
+QList<QAction *> Workflow::toolBarActions() const
+{
+    return {};
+}
+
+QList<Workflow::Dock> Workflow::docks() const
+{
+    return {};
+}
+
+WorkflowJob *Workflow::job() const
+{
+    return nullptr;
+}
+
+QAction *Workflow::cancelAction() const
+{
+    return nullptr;
+}
+
+void Workflow::clear() {}
+
+void Workflow::enableActions(bool) {}
+
+bool Workflow::isBusy() const
+{
+    return job() && job()->isBusy();
+}
+
+void Workflow::cancel()
+{
+    if (!isBusy())
+        return;
+    job()->cancel();
+    if (QAction *action = cancelAction())
+        action->setEnabled(false);
+    m_bench.setStatus(tr("Cancelling…"));
+}
+
+void Workflow::relay(WorkflowJob *job)
+{
+    connect(job, &WorkflowJob::started, this, &Workflow::busyChanged);
+    connect(job, &WorkflowJob::finished, this, [this](bool ok) {
+        emit busyChanged();
+        emit finished(ok);
+    });
+}
+
+QAction *Workflow::separator()
+{
+    auto *action = new QAction(this);
+    action->setSeparator(true);
+    return action;
+}
+
+} // namespace stratamesh

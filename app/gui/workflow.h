@@ -1,0 +1,70 @@
+// One step of the work on a model (open, remesh, complexity, tetmesh, …): its actions, its docks,
+// its run on a WorkflowJob and what the run leaves to review. MainWindow places the actions in its
+// menus and tool bar and the docks around the views, points the shared progress strip at the job
+// running, and tells every workflow when a model is opened or the language changes.
+#pragma once
+
+#include <QList>
+#include <QObject>
+
+class QAction;
+class QDockWidget;
+
+namespace stratamesh {
+
+class Workbench;
+class WorkflowJob;
+
+class Workflow : public QObject {
+    Q_OBJECT
+public:
+    enum class Menu { File, Mesh, Analyse };
+    // Below the views tabbed with Messages; on the right tabbed with the other reviews of a
+    // result; on the right on its own.
+    enum class DockPlace { WithMessages, Review, Side };
+    struct Dock {
+        QDockWidget *dock;
+        DockPlace place;
+    };
+
+    explicit Workflow(Workbench &bench, QObject *parent = nullptr);
+    ~Workflow() override;
+
+    // In menu order; a separator is an action with isSeparator().
+    virtual QList<QAction *> menuActions(Menu menu) const;
+    virtual QList<QAction *> toolBarActions() const;
+    // Placed hidden: a workflow shows its docks once it has something in them.
+    virtual QList<Dock> docks() const;
+    // nullptr for a step without a background run.
+    virtual WorkflowJob *job() const;
+    // The strip's Cancel button while job() runs (nullptr: the run cannot be cancelled).
+    virtual QAction *cancelAction() const;
+    virtual void retranslate() = 0;
+    // Another model was opened: what this step showed of the previous one goes.
+    virtual void clear();
+    // `busy`: some workflow runs, so none may start.
+    virtual void enableActions(bool busy);
+
+    bool isBusy() const;
+
+public slots:
+    // Asks the run to stop; finished(false) follows once the worker has returned.
+    void cancel();
+
+signals:
+    // A run started or ended (before finished()): the window re-enables the actions.
+    void busyChanged();
+    // A run has ended and its outcome (result, cancel or error) was shown.
+    void finished(bool ok);
+
+protected:
+    // Relays job's start and end to busyChanged() and finished(); called once the workflow's own
+    // handlers are connected, so finished() comes after the outcome is shown.
+    void relay(WorkflowJob *job);
+    // A separator for menuActions().
+    QAction *separator();
+
+    Workbench &m_bench;
+};
+
+} // namespace stratamesh
