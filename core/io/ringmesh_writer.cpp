@@ -5,6 +5,7 @@
 #include "io/geogram_mesh.h"
 #include "io/zip_archive.h"
 #include "mesh/model_conversion.h"
+#include "model/feature_type.h"
 #include "model/topology.h"
 
 #include <algorithm>
@@ -28,22 +29,11 @@ std::string field(const std::string &name)
     return out;
 }
 
-// RINGMesh's words for the geological features (GeoModelGeologicalEntity::geol_name).
+// RINGMesh's words for the geological features (GeoModelGeologicalEntity::geol_name) are Gocad's,
+// except for a surface of no feature.
 std::string ringMeshFeature(FeatureType type)
 {
-    switch (type) {
-    case FeatureType::Horizon:
-        return "top";
-    case FeatureType::Fault:
-        return "fault";
-    case FeatureType::Unconformity:
-        return "unconformity";
-    case FeatureType::Boundary:
-        return "boundary";
-    case FeatureType::Unknown:
-        break;
-    }
-    return "no_geological_feature";
+    return type == FeatureType::Unknown ? "no_geological_feature" : gocadTypeName(type);
 }
 
 struct GmLine {
