@@ -1,5 +1,6 @@
 // stratamesh-cli hybrid MODEL --sites N [--thin-ratio 1.5] [--iterations 30] [--seed S]
 //     [--max-warp 30] [--quality 1.414] -o OUT.(vtu|msh) [--report R.json] [--json]
+//     [--cavity-poly PLC.poly]
 // A hybrid tet/prism/pyramid mesh (thesis ch. 5, core/hybrid/hybrid_mesher.h): prisms where
 // Voronoi edges cross thin layers, tets from TetGen elsewhere, checked by the mixed-mesh checker.
 // Nothing is written and the exit status is 1 when no valid mesh could be made.
@@ -59,6 +60,8 @@ int runHybrid(CommandArgs &args)
     params.cells.maxQuadWarpDegrees =
         args.doubleOption(QStringLiteral("--max-warp"), 30.0, 0.0, 90.0);
     params.tetgen.quality = args.doubleOption(QStringLiteral("--quality"), 1.414, 0.0, 1e6);
+    if (const std::optional<QString> poly = args.option(QStringLiteral("--cavity-poly")))
+        params.cavityPolyPath = poly->toStdString(); // for `tetgen -d`
     const bool json = args.flag(QStringLiteral("--json"));
     const std::optional<QString> output = args.option(QStringLiteral("-o"));
     const std::optional<QString> reportPath = args.option(QStringLiteral("--report"));
@@ -103,6 +106,8 @@ int runHybrid(CommandArgs &args)
                                {"rejected_shape", static_cast<qint64>(r.segmentDual.rejectedShape)},
                                {"rejected_thick", static_cast<qint64>(r.segmentDual.rejectedThick)},
                                {"rejected_taken", static_cast<qint64>(r.segmentDual.rejectedTaken)},
+                               {"rejected_quad_on_surface",
+                                static_cast<qint64>(r.segmentDual.rejectedQuadOnSurface)},
                                {"repair_rounds", r.repairRounds},
                                {"fell_back_to_tetgen", r.fellBackToTetgen}}},
         {"repair_log",

@@ -6,7 +6,8 @@
 //   stay dual to restricted Voronoi vertices) → segment-dual cells in thin layers (§5.3.2) →
 //   transition pyramids on their quad faces that face the rest of the region → the rest of each
 //   region filled with tets by TetGen (out of process), constrained to the remesh and to the
-//   faces of the cells → mixed-mesh check; cells found invalid are removed and the cavity
+//   triangle faces of the cells, with a hole point in every cell so that TetGen leaves their
+//   zones empty → mixed-mesh check; cells found invalid are removed and the cavity
 //   refilled (repair rounds), down to the plain TetGen mesh of the remesh as the last resort.
 // Not done: the Voronoi-vertex-dual cells of §5.3.3 and the splits of §5.4; TetGen's tets stand in
 // for them (counted as fill tets).
@@ -33,6 +34,9 @@ struct HybridParams {
     double pyramidHeightRatio = 0.15; // apex height over the square root of the quad area
     int repairRounds = 4;
     TetgenParams tetgen; // pq1.414AY by default
+    // When set, the PLC of the first fill (cavity facets and hole points) is written there as a
+    // TetGen .poly, to check it with `tetgen -d` outside StrataMesh.
+    std::string cavityPolyPath;
 };
 
 struct HybridTimings {
