@@ -117,7 +117,15 @@ int runHybrid(CommandArgs &args)
                  a.append(QString::fromStdString(line));
              return a;
          }()},
-        {"remesh", QJsonObject{{"sites", r.remeshSites}, {"valid", r.remeshValid}}},
+        {"remesh", QJsonObject{{"sites", r.remeshSites},
+                               {"valid", r.remeshValid},
+                               {"problems",
+                                [&] {
+                                    QJsonObject o;
+                                    for (const auto &[check, n] : r.remeshProblems)
+                                        o[QString::fromStdString(check)] = static_cast<qint64>(n);
+                                    return o;
+                                }()}}},
         {"tetgen_outcome", tetgenOutcomeName(r.tetgenOutcome)},
         {"max_quad_warp_deg", r.validity.maxQuadWarpDegrees},
         {"quality", qualityJson(m)},

@@ -319,6 +319,7 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     const Model &remesh = remeshed.model;
     result.remeshSites = remeshed.siteCount;
     result.remeshValid = remeshed.validity.valid;
+    result.remeshProblems = remeshed.validity.counts;
     result.timings.remeshSeconds = since(t);
 
     t = Clock::now();
@@ -334,7 +335,8 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     std::vector<Cell> kept = result.segmentDual.cells;
     std::vector<int> keptRegion = result.segmentDual.region;
     for (int round = 0;; ++round) {
-        const bool lastResort = round > params.repairRounds;
+        // Without thesis cells the fill is the last resort already.
+        const bool lastResort = round > params.repairRounds || kept.empty();
         if (lastResort) {
             result.repaired += kept.size();
             kept.clear();
@@ -363,6 +365,14 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
                 result.fillTets = fill.tetgen.mesh.cells.size();
                 if (!result.validity.valid())
                     result.message = result.validity.firstProblem;
+                if (!result.validity.valid() && !result.remeshValid) {
+                    // No fill can mend the surfaces: say where the trouble starts.
+                    std::string checks;
+                    for (const auto &[check, n] : result.remeshProblems)
+                        checks += (checks.empty() ? "" : ", ") + check;
+                    result.message =
+                        "the surface remesh is not valid (" + checks + "): " + result.message;
+                }
                 break;
             }
             firstProblem = validity.firstProblem;

@@ -21,6 +21,7 @@
 #include "volume/tetgen_runner.h"
 
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,7 @@ struct HybridResult {
     bool fellBackToTetgen = false;      // the last resort: no hybrid cell at all
     int remeshSites = 0;
     bool remeshValid = false;
+    std::map<std::string, std::size_t> remeshProblems; // check -> count, when not valid
     TetgenOutcome tetgenOutcome = TetgenOutcome::Aborted;
     std::string message;                // why the mesh is empty or not valid
     std::vector<std::string> repairLog; // per fill that was not kept: what was wrong, cells dropped
