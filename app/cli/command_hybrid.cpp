@@ -1,6 +1,6 @@
 // stratamesh-cli hybrid MODEL --sites N [--thin-ratio 1.5] [--iterations 30] [--seed S]
 //     [--max-warp 30] [--quality 1.414] -o OUT.(vtu|msh) [--report R.json] [--json]
-//     [--cavity-poly PLC.poly]
+//     [--cavity-poly PLC.poly] [--pyramid-height 0.15]
 // A hybrid tet/prism/pyramid mesh (thesis ch. 5, core/hybrid/hybrid_mesher.h): prisms where
 // Voronoi edges cross thin layers, tets from TetGen elsewhere, checked by the mixed-mesh checker.
 // Nothing is written and the exit status is 1 when no valid mesh could be made.
@@ -60,6 +60,8 @@ int runHybrid(CommandArgs &args)
     params.cells.maxQuadWarpDegrees =
         args.doubleOption(QStringLiteral("--max-warp"), 30.0, 0.0, 90.0);
     params.tetgen.quality = args.doubleOption(QStringLiteral("--quality"), 1.414, 0.0, 1e6);
+    params.pyramidHeightRatio =
+        args.doubleOption(QStringLiteral("--pyramid-height"), params.pyramidHeightRatio, 1e-3, 2.0);
     if (const std::optional<QString> poly = args.option(QStringLiteral("--cavity-poly")))
         params.cavityPolyPath = poly->toStdString(); // for `tetgen -d`
     const bool json = args.flag(QStringLiteral("--json"));
@@ -90,7 +92,8 @@ int runHybrid(CommandArgs &args)
                                    {"iterations", params.cvtIterations},
                                    {"seed", static_cast<qint64>(params.seed)},
                                    {"max_warp_deg", params.cells.maxQuadWarpDegrees},
-                                   {"quality", params.tetgen.quality}}},
+                                   {"quality", params.tetgen.quality},
+                                   {"pyramid_height", params.pyramidHeightRatio}}},
         {"tets", static_cast<qint64>(m.countCells(CellType::Tet))},
         {"prisms", static_cast<qint64>(m.countCells(CellType::Prism))},
         {"pyramids", static_cast<qint64>(m.countCells(CellType::Pyramid))},

@@ -29,7 +29,7 @@
     X("synthetic", runSynthetic, "(layered|network|spheres|sample) [--faults 3] [--dip 30] [--horizons 3] [--throw 20] [--edge-length 40] [--thin-layer 0] [--inner-radius 1] [--middle-radius 0] [--outer-radius 2] -o OUT [--overwrite]", "Write a model built in code: a layered box, a low-dip fault network (throws 0.3, 1.5, 0.6, 2.5 x --throw), nested spheres, the sample") \
     X("tetmesh", runTetmesh, "MODEL {params} [-o OUT.(vtu|vtk|msh|so)] [--msh-version 4.1|2.2] [--report R.json] [--json] [--poly PLC.poly] [--overwrite]", "TetGen comparison mesh in a helper process (thesis §5.2): tets per region, dihedral angles, slivers, outcome (ok, aborted, timed_out, out_of_memory, killed, invalid_input)") \
     X("study", runStudy, "STUDY.smstudy (--plan | --run [--jobs N] | --task ID | --gather | --status | --submit slurm [--partition P] [--time T] [--mem M] [--max-parallel K] | --resubmit-failed [same options]) [--json]", "Many models x many parameter sets: plan, run here (resumable) or as one Slurm job array, gather one table of every task") \
-    X("hybrid", runHybrid, "MODEL --sites N [--thin-ratio 1.5] [--iterations 30] [--seed S] [--max-warp 30] [--quality 1.414] [-o OUT.(vtu|msh)] [--report R.json] [--json] [--cavity-poly PLC.poly]", "Hybrid tet/prism/pyramid mesh from one Voronoi diagram, prisms in thin layers, checked valid (thesis ch. 5)") \
+    X("hybrid", runHybrid, "MODEL --sites N [--thin-ratio 1.5] [--iterations 30] [--seed S] [--max-warp 30] [--quality 1.414] [-o OUT.(vtu|msh)] [--report R.json] [--json] [--cavity-poly PLC.poly] [--pyramid-height 0.15]", "Hybrid tet/prism/pyramid mesh from one Voronoi diagram, prisms in thin layers, checked valid (thesis ch. 5)") \
     /* end of the list */
 // clang-format on
 
