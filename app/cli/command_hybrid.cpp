@@ -1,6 +1,6 @@
 // stratamesh-cli hybrid MODEL --sites N [--thin-ratio 1.5] [--iterations 30] [--seed S]
 //     [--max-warp 30] [--quality 1.414] -o OUT.(vtu|msh) [--report R.json] [--json]
-//     [--cavity-poly PLC.poly] [--pyramid-height 0.15]
+//     [--cavity-poly PLC.poly] [--pyramid-height 0.15] [--surface-iterations 10]
 // A hybrid tet/prism/pyramid mesh (thesis ch. 5, core/hybrid/hybrid_mesher.h): prisms where
 // Voronoi edges cross thin layers, tets from TetGen elsewhere, checked by the mixed-mesh checker.
 // Nothing is written and the exit status is 1 when no valid mesh could be made.
@@ -56,6 +56,8 @@ int runHybrid(CommandArgs &args)
     params.sites = args.intOption(QStringLiteral("--sites"), 1000, 4, 1000000);
     params.cells.thinRatio = args.doubleOption(QStringLiteral("--thin-ratio"), 1.5, 0.0, 1e6);
     params.cvtIterations = args.intOption(QStringLiteral("--iterations"), 30, 0, 100000);
+    params.surfaceIterations =
+        args.intOption(QStringLiteral("--surface-iterations"), params.surfaceIterations, 0, 100000);
     params.seed = static_cast<unsigned>(args.intOption(QStringLiteral("--seed"), 1, 0, 1 << 30));
     params.cells.maxQuadWarpDegrees =
         args.doubleOption(QStringLiteral("--max-warp"), 30.0, 0.0, 90.0);
@@ -90,6 +92,7 @@ int runHybrid(CommandArgs &args)
         {"parameters", QJsonObject{{"sites", params.sites},
                                    {"thin_ratio", params.cells.thinRatio},
                                    {"iterations", params.cvtIterations},
+                                   {"surface_iterations", params.surfaceIterations},
                                    {"seed", static_cast<qint64>(params.seed)},
                                    {"max_warp_deg", params.cells.maxQuadWarpDegrees},
                                    {"quality", params.tetgen.quality},
@@ -134,6 +137,7 @@ int runHybrid(CommandArgs &args)
         {"quality", qualityJson(m)},
         {"time_s", t.totalSeconds},
         {"stages_s", QJsonObject{{"cvt", t.cvtSeconds},
+                                 {"surface_sites", t.surfaceSitesSeconds},
                                  {"remesh", t.remeshSeconds},
                                  {"cells", t.cellsSeconds},
                                  {"fill", t.fillSeconds},

@@ -4,6 +4,7 @@
 #include "complexity/box_cvt.h"
 #include "complexity/box_elements.h"
 #include "hybrid/cell_faces.h"
+#include "hybrid/surface_sites.h"
 #include "io/mesh_writer.h"
 #include "model/region_volume.h"
 #include "model/topology.h"
@@ -308,6 +309,12 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     cvtParams.seed = params.seed;
     const BoxCvt cvt = runBoxCvt(modelBounds(model), cvtParams, progress);
     result.timings.cvtSeconds = since(t);
+    t = Clock::now();
+    const std::vector<Vec3> sites =
+        params.surfaceIterations > 0
+            ? optimizeSurfaceSites(model, cvt.sites, params.surfaceIterations, progress).sites
+            : cvt.sites;
+    result.timings.surfaceSitesSeconds = since(t);
 
     // Triangles must stay dual to restricted Voronoi vertices: no flips, smoothing or refinement.
     t = Clock::now();
@@ -315,7 +322,7 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     remeshParams.flips = false;
     remeshParams.smoothingPasses = 0;
     remeshParams.refinementRounds = 0;
-    const RemeshResult remeshed = remeshWithSites(model, cvt.sites, remeshParams, progress);
+    const RemeshResult remeshed = remeshWithSites(model, sites, remeshParams, progress);
     const Model &remesh = remeshed.model;
     result.remeshSites = remeshed.siteCount;
     result.remeshValid = remeshed.validity.valid;
@@ -323,7 +330,7 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     result.timings.remeshSeconds = since(t);
 
     t = Clock::now();
-    const std::vector<int> pointSite = nearestSites(remesh.vertices, cvt.sites);
+    const std::vector<int> pointSite = nearestSites(remesh.vertices, sites);
     result.segmentDual = buildSegmentDualCells(remesh, pointSite, params.cells);
     result.invalidFound = result.segmentDual.rejectedShape;
     result.timings.cellsSeconds = since(t);

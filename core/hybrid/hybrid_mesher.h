@@ -30,6 +30,9 @@ namespace stratamesh {
 struct HybridParams {
     int sites = 1000;
     int cvtIterations = 30;
+    // §5.2: Lloyd steps of the sites meeting a surface, on the surfaces; they make the Voronoi
+    // edges across thin layers that give prisms (modelA1@1000: 64 prisms without, 258 with 10).
+    int surfaceIterations = 10;
     unsigned seed = 1;
     SegmentDualParams cells;
     double pyramidHeightRatio = 0.15; // apex height over the square root of the quad area
@@ -41,8 +44,8 @@ struct HybridParams {
 };
 
 struct HybridTimings {
-    double cvtSeconds = 0.0, remeshSeconds = 0.0, cellsSeconds = 0.0, fillSeconds = 0.0,
-           checkSeconds = 0.0, totalSeconds = 0.0;
+    double cvtSeconds = 0.0, surfaceSitesSeconds = 0.0, remeshSeconds = 0.0, cellsSeconds = 0.0,
+           fillSeconds = 0.0, checkSeconds = 0.0, totalSeconds = 0.0;
 };
 
 struct HybridResult {

@@ -72,9 +72,9 @@ private slots:
             const qint64 tets = r["tets"].toInteger(), prisms = r["prisms"].toInteger(),
                          pyramids = r["pyramids"].toInteger();
             QVERIFY(tets > 1000);
-            // 64 prisms and 130 pyramids measured (Debian 12); before the cells were holes of the
-            // TetGen fill, repair removed every one.
-            QVERIFY2(prisms >= 30, qPrintable(QString::number(prisms)));
+            // 258 prisms and 166 pyramids measured (Debian 12; 64 and 130 without the §5.2 surface
+            // sites); before the cells were holes of the TetGen fill, repair removed every one.
+            QVERIFY2(prisms >= 150, qPrintable(QString::number(prisms)));
             QVERIFY(pyramids > 0);
             QCOMPARE(r["repaired"].toInteger(), qint64(0));
             checkCavityWithTetgen(poly);
