@@ -1012,6 +1012,22 @@ per cell</source>
         <source>Angle between the two halves of a prism&apos;s or pyramid&apos;s quad face above which the cell is left to the tets.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Sur&amp;face site iterations:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lloyd steps moving the sites whose cell meets a surface to the centroid of their restricted cell; 0 turns them off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Transition &amp;pyramid height:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apex height of a pyramid on a quad face that meets the tets, over the square root of the quad&apos;s area.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RemeshController</name>

@@ -1013,6 +1013,22 @@ par cellule</translation>
         <source>Angle between the two halves of a prism&apos;s or pyramid&apos;s quad face above which the cell is left to the tets.</source>
         <translation>Angle entre les deux moitiés d&apos;une face quadrangulaire de prisme ou de pyramide au-delà duquel la cellule est laissée aux tétraèdres.</translation>
     </message>
+    <message>
+        <source>Sur&amp;face site iterations:</source>
+        <translation>Itérations des sites de sur&amp;face :</translation>
+    </message>
+    <message>
+        <source>Lloyd steps moving the sites whose cell meets a surface to the centroid of their restricted cell; 0 turns them off.</source>
+        <translation>Pas de Lloyd qui déplacent les sites dont la cellule touche une surface vers le centroïde de leur cellule restreinte ; 0 les désactive.</translation>
+    </message>
+    <message>
+        <source>Transition &amp;pyramid height:</source>
+        <translation>Hauteur des &amp;pyramides de transition :</translation>
+    </message>
+    <message>
+        <source>Apex height of a pyramid on a quad face that meets the tets, over the square root of the quad&apos;s area.</source>
+        <translation>Hauteur du sommet d&apos;une pyramide posée sur une face quadrangulaire qui touche les tétraèdres, rapportée à la racine carrée de l&apos;aire du quadrangle.</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RemeshController</name>

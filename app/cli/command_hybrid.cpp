@@ -1,5 +1,5 @@
 // stratamesh-cli hybrid MODEL [PARAMETERS: hybridParamTable()] -o OUT.(vtu|msh) [--report R.json]
-//     [--json] [--overwrite]
+//     [--json] [--cavity-poly PLC.poly] [--overwrite]
 // A hybrid tet/prism/pyramid mesh (thesis ch. 5, core/hybrid/hybrid_mesher.h): prisms where
 // Voronoi edges cross thin layers, tets from TetGen elsewhere, checked by the mixed-mesh checker.
 // Nothing is written and the exit status is 1 when no valid mesh could be made; every output is
@@ -18,6 +18,9 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QTemporaryDir>
+
+#include <filesystem>
 
 namespace stratamesh::cli {
 
@@ -47,6 +50,8 @@ int runHybrid(CommandArgs &args)
 {
     HybridParams params;
     args.params(hybridParamTable(), params);
+    // The TetGen input of the last fill, for `tetgen -d`.
+    const std::optional<QString> cavityPoly = args.option(QStringLiteral("--cavity-poly"));
     const bool json = args.flag(QStringLiteral("--json"));
     const std::optional<QString> output = args.option(QStringLiteral("-o"));
     const std::optional<QString> reportPath = args.option(QStringLiteral("--report"));
@@ -65,6 +70,14 @@ int runHybrid(CommandArgs &args)
         plan.add(output->toStdString(), "mesh");
     if (reportPath)
         plan.add(reportPath->toStdString(), "report");
+    // The engine writes the PLC while it runs: into a scratch folder, moved into place by the plan.
+    QTemporaryDir scratch;
+    if (cavityPoly) {
+        plan.add(cavityPoly->toStdString(), "PLC file");
+        if (!scratch.isValid())
+            throw FileError(cavityPoly->toStdString(), 0, "cannot create a scratch folder");
+        params.cavityPolyPath = scratch.filePath(QStringLiteral("cavity.poly")).toStdString();
+    }
 
     const Model model = readModel(path.toStdString());
     const HybridResult r = buildHybridMesh(model, params);
@@ -75,6 +88,13 @@ int runHybrid(CommandArgs &args)
                    [&](const std::string &temporary) { exportVolumeMesh(m, temporary); });
     else if (output)
         plan.discard(output->toStdString());
+    if (cavityPoly && QFileInfo::exists(QString::fromStdString(params.cavityPolyPath)))
+        plan.write(cavityPoly->toStdString(), [&](const std::string &temporary) {
+            std::filesystem::copy_file(params.cavityPolyPath, temporary,
+                                       std::filesystem::copy_options::overwrite_existing);
+        });
+    else if (cavityPoly)
+        plan.discard(cavityPoly->toStdString());
 
     const HybridTimings &t = r.timings;
     const QJsonObject report{
@@ -96,6 +116,8 @@ int runHybrid(CommandArgs &args)
                                {"rejected_shape", static_cast<qint64>(r.segmentDual.rejectedShape)},
                                {"rejected_thick", static_cast<qint64>(r.segmentDual.rejectedThick)},
                                {"rejected_taken", static_cast<qint64>(r.segmentDual.rejectedTaken)},
+                               {"rejected_quad_on_surface",
+                                static_cast<qint64>(r.segmentDual.rejectedQuadOnSurface)},
                                {"repair_rounds", r.repairRounds},
                                {"fell_back_to_tetgen", r.fellBackToTetgen}}},
         {"repair_log",
@@ -105,12 +127,21 @@ int runHybrid(CommandArgs &args)
                  a.append(QString::fromStdString(line));
              return a;
          }()},
-        {"remesh", QJsonObject{{"sites", r.remeshSites}, {"valid", r.remeshValid}}},
+        {"remesh", QJsonObject{{"sites", r.remeshSites},
+                               {"valid", r.remeshValid},
+                               {"problems",
+                                [&] {
+                                    QJsonObject o;
+                                    for (const auto &[check, n] : r.remeshProblems)
+                                        o[QString::fromStdString(check)] = static_cast<qint64>(n);
+                                    return o;
+                                }()}}},
         {"tetgen_outcome", tetgenOutcomeName(r.tetgenOutcome)},
         {"max_quad_warp_deg", r.validity.maxQuadWarpDegrees},
         {"quality", qualityJson(m)},
         {"time_s", t.totalSeconds},
         {"stages_s", QJsonObject{{"cvt", t.cvtSeconds},
+                                 {"surface_sites", t.surfaceSitesSeconds},
                                  {"remesh", t.remeshSeconds},
                                  {"cells", t.cellsSeconds},
                                  {"fill", t.fillSeconds},

@@ -4,11 +4,15 @@
 #include "complexity/box_cvt.h"
 #include "complexity/box_elements.h"
 #include "hybrid/cell_faces.h"
+#include "hybrid/surface_sites.h"
+#include "io/mesh_writer.h"
 #include "model/region_volume.h"
 #include "model/topology.h"
 #include "params/param_tables.h"
 #include "remesh/surface_remesher.h"
+#include "volume/plc.h"
 #include "volume/region_winding.h"
+#include "volume/tetgen_poly_writer.h"
 
 #include <Eigen/Geometry>
 
@@ -56,8 +60,8 @@ struct Fill {
 // Builds the cavity model: the remesh triangles no kept cell lies on, plus per region a surface
 // of the cell faces that face the cavity (normals into it), and runs TetGen on it.
 void fillCavities(const Model &remesh, const std::vector<Cell> &kept,
-                  const std::vector<int> &keptRegion, const HybridParams &params, Fill &fill,
-                  Progress &progress)
+                  const std::vector<int> &keptRegion, const HybridParams &params,
+                  const std::string &polyPath, Fill &fill, Progress &progress)
 {
     const std::vector<Vec3> &p = remesh.vertices;
     const int nPoints = static_cast<int>(p.size());
@@ -185,48 +189,42 @@ void fillCavities(const Model &remesh, const std::vector<Cell> &kept,
         fill.tetgen.outcome = TetgenOutcome::Ok;
         return;
     }
+    // One hole point inside every hybrid cell: TetGen leaves their zones empty, so its tets meet
+    // the cells only across the cavity facets, which it keeps (Y).
+    std::vector<Vec3> holes;
+    holes.reserve(fill.cells.size());
+    for (const Cell &cell : fill.cells) {
+        Vec3 g = Vec3::Zero();
+        for (int k = 0; k < cell.size(); ++k)
+            g += pointAt(cell.nodes[k]);
+        holes.push_back(g / cell.size());
+    }
     try {
-        fill.tetgen = runTetgen(recoverTopology(cavity), params.tetgen, progress);
+        const Model topology = recoverTopology(cavity);
+        if (!polyPath.empty()) {
+            Plc plc = buildPlc(topology);
+            plc.holes = holes;
+            writeTetgenPoly(plc, polyPath);
+        }
+        fill.tetgen = runTetgen(topology, holes, params.tetgen, progress);
     } catch (const InputError &e) {
         fill.tetgen = {};
         fill.tetgen.outcome = TetgenOutcome::InvalidInput;
         fill.tetgen.message = e.what();
         return;
     }
-    // The thesis cells' own zones are closed by the cavity surfaces too, so TetGen meshes them
-    // as subdomains of no region: tets inside a kept cell are dropped; any other tet of no region
-    // is located in the remesh, whose regions are closed (the check proves the result).
+    // A tet of no cavity region (TetGen's attribute 0) is located in the remesh, whose regions
+    // are closed; one left in a cell's zone would overlap it, which the check finds.
     VolumeMesh &tets = fill.tetgen.mesh;
-    auto insideKeptCell = [&](const Vec3 &x) {
-        for (const Cell &cell : kept) {
-            bool inside = true;
-            for (const CellFace &f : outwardFaces(cell)) {
-                const Vec3 &a = p[f.nodes[0]];
-                const Vec3 n = f.isQuad()
-                                   ? Vec3((p[f.nodes[2]] - a).cross(p[f.nodes[3]] - p[f.nodes[1]]))
-                                   : Vec3((p[f.nodes[1]] - a).cross(p[f.nodes[2]] - a));
-                if (n.dot(x - a) >= 0.0) {
-                    inside = false;
-                    break;
-                }
-            }
-            if (inside)
-                return true;
-        }
-        return false;
-    };
     std::vector<Cell> cells;
     std::vector<int> regions;
     for (std::size_t c = 0; c < tets.cells.size(); ++c) {
         int region = tets.cellRegion[c] >= 0 ? regionMap[tets.cellRegion[c]] : -1;
         if (region < 0) {
             const Cell &t = tets.cells[c];
-            const Vec3 g = (tets.points[t.nodes[0]] + tets.points[t.nodes[1]]
-                            + tets.points[t.nodes[2]] + tets.points[t.nodes[3]])
-                           / 4.0;
-            if (insideKeptCell(g))
-                continue;
-            region = locateRegion(remesh, g);
+            region = locateRegion(remesh, (tets.points[t.nodes[0]] + tets.points[t.nodes[1]]
+                                           + tets.points[t.nodes[2]] + tets.points[t.nodes[3]])
+                                              / 4.0);
         }
         cells.push_back(tets.cells[c]);
         regions.push_back(region);
@@ -310,6 +308,12 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     cvtParams.seed = params.seed;
     const BoxCvt cvt = runBoxCvt(modelBounds(model), cvtParams, progress);
     result.timings.cvtSeconds = since(t);
+    t = Clock::now();
+    const std::vector<Vec3> sites =
+        params.surfaceIterations > 0
+            ? optimizeSurfaceSites(model, cvt.sites, params.surfaceIterations, progress).sites
+            : cvt.sites;
+    result.timings.surfaceSitesSeconds = since(t);
 
     // Triangles must stay dual to restricted Voronoi vertices: no flips, smoothing or refinement.
     t = Clock::now();
@@ -317,14 +321,15 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     remeshParams.flips = false;
     remeshParams.smoothingPasses = 0;
     remeshParams.refinementRounds = 0;
-    const RemeshResult remeshed = remeshWithSites(model, cvt.sites, remeshParams, progress);
+    const RemeshResult remeshed = remeshWithSites(model, sites, remeshParams, progress);
     const Model &remesh = remeshed.model;
     result.remeshSites = remeshed.siteCount;
     result.remeshValid = remeshed.validity.valid;
+    result.remeshProblems = remeshed.validity.counts;
     result.timings.remeshSeconds = since(t);
 
     t = Clock::now();
-    const std::vector<int> pointSite = nearestSites(remesh.vertices, cvt.sites);
+    const std::vector<int> pointSite = nearestSites(remesh.vertices, sites);
     result.segmentDual = buildSegmentDualCells(remesh, pointSite, params.cells);
     result.invalidFound = result.segmentDual.rejectedShape;
     result.timings.cellsSeconds = since(t);
@@ -336,7 +341,8 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     std::vector<Cell> kept = result.segmentDual.cells;
     std::vector<int> keptRegion = result.segmentDual.region;
     for (int round = 0;; ++round) {
-        const bool lastResort = round > params.repairRounds;
+        // Without thesis cells the fill is the last resort already.
+        const bool lastResort = round > params.repairRounds || kept.empty();
         if (lastResort) {
             result.repaired += kept.size();
             kept.clear();
@@ -345,7 +351,8 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
         }
         t = Clock::now();
         Fill fill;
-        fillCavities(remesh, kept, keptRegion, params, fill, progress);
+        fillCavities(remesh, kept, keptRegion, params, round == 0 ? params.cavityPolyPath : "",
+                     fill, progress);
         result.timings.fillSeconds += since(t);
         result.tetgenOutcome = fill.tetgen.outcome;
         result.repairRounds = round;
@@ -364,9 +371,20 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
                 result.fillTets = fill.tetgen.mesh.cells.size();
                 if (!result.validity.valid())
                     result.message = result.validity.firstProblem;
+                if (!result.validity.valid() && !result.remeshValid) {
+                    // No fill can mend the surfaces: say where the trouble starts.
+                    std::string checks;
+                    for (const auto &[check, n] : result.remeshProblems)
+                        checks += (checks.empty() ? "" : ", ") + check;
+                    result.message =
+                        "the surface remesh is not valid (" + checks + "): " + result.message;
+                }
                 break;
             }
             firstProblem = validity.firstProblem;
+            if (!params.cavityPolyPath.empty()) // the fill refused, to look at
+                exportVolumeMesh(mesh,
+                                 params.cavityPolyPath + ".fill" + std::to_string(round) + ".vtu");
             for (int c : validity.invalidCells)
                 if (c < static_cast<int>(fill.cells.size()))
                     remove.insert(fill.owner[c]);

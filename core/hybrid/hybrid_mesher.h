@@ -6,7 +6,8 @@
 //   stay dual to restricted Voronoi vertices) → segment-dual cells in thin layers (§5.3.2) →
 //   transition pyramids on their quad faces that face the rest of the region → the rest of each
 //   region filled with tets by TetGen (out of process), constrained to the remesh and to the
-//   faces of the cells → mixed-mesh check; cells found invalid are removed and the cavity
+//   triangle faces of the cells, with a hole point in every cell so that TetGen leaves their
+//   zones empty → mixed-mesh check; cells found invalid are removed and the cavity
 //   refilled (repair rounds), down to the plain TetGen mesh of the remesh as the last resort.
 // Not done: the Voronoi-vertex-dual cells of §5.3.3 and the splits of §5.4; TetGen's tets stand in
 // for them (counted as fill tets).
@@ -20,6 +21,7 @@
 #include "volume/tetgen_runner.h"
 
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -28,16 +30,22 @@ namespace stratamesh {
 struct HybridParams {
     int sites = 1000;
     int cvtIterations = 30;
+    // §5.2: Lloyd steps of the sites meeting a surface, on the surfaces; they make the Voronoi
+    // edges across thin layers that give prisms (modelA1@1000: 64 prisms without, 258 with 10).
+    int surfaceIterations = 10;
     unsigned seed = 1;
     SegmentDualParams cells;
     double pyramidHeightRatio = 0.15; // apex height over the square root of the quad area
     int repairRounds = 4;
     TetgenParams tetgen; // pq1.414AY by default
+    // When set, the PLC of the first fill (cavity facets and hole points) is written there as a
+    // TetGen .poly, to check it with `tetgen -d` outside StrataMesh.
+    std::string cavityPolyPath;
 };
 
 struct HybridTimings {
-    double cvtSeconds = 0.0, remeshSeconds = 0.0, cellsSeconds = 0.0, fillSeconds = 0.0,
-           checkSeconds = 0.0, totalSeconds = 0.0;
+    double cvtSeconds = 0.0, surfaceSitesSeconds = 0.0, remeshSeconds = 0.0, cellsSeconds = 0.0,
+           fillSeconds = 0.0, checkSeconds = 0.0, totalSeconds = 0.0;
 };
 
 struct HybridResult {
@@ -53,6 +61,7 @@ struct HybridResult {
     bool fellBackToTetgen = false;      // the last resort: no hybrid cell at all
     int remeshSites = 0;
     bool remeshValid = false;
+    std::map<std::string, std::size_t> remeshProblems; // check -> count, when not valid
     TetgenOutcome tetgenOutcome = TetgenOutcome::Aborted;
     std::string message;                // why the mesh is empty or not valid
     std::vector<std::string> repairLog; // per fill that was not kept: what was wrong, cells dropped

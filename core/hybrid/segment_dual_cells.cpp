@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <tuple>
 
 namespace stratamesh {
@@ -136,6 +137,35 @@ SegmentDualCells buildSegmentDualCells(const Model &remesh, const std::vector<in
                 sgn += rs.positive ? 1 : -1;
         return sgn;
     };
+    // A quad face with half of it on a remesh triangle (a prism's side on the box or a fault):
+    // the surface has a triangle where the cell has a quad, which no conformal mesh allows.
+    std::set<std::array<int, 3>> surfaceKeys;
+    for (const SurfaceTriangle &t : triangles) {
+        std::array<int, 3> k = t.nodes;
+        std::sort(k.begin(), k.end());
+        surfaceKeys.insert(k);
+    }
+    for (std::size_t s = 0; s < remesh.surfaces.size(); ++s)
+        for (const Triangle &t : remesh.surfaces[s].triangles) {
+            std::array<int, 3> k;
+            for (int i = 0; i < 3; ++i)
+                k[i] = remesh.surfaceVertexToGlobal[s][t[i]];
+            std::sort(k.begin(), k.end());
+            surfaceKeys.insert(k);
+        }
+    auto quadOnSurface = [&](const Cell &cell) {
+        for (const CellFace &f : outwardFaces(cell)) {
+            if (!f.isQuad())
+                continue;
+            for (int k = 0; k < 4; ++k) {
+                std::array<int, 3> half{f.nodes[k], f.nodes[(k + 1) % 4], f.nodes[(k + 2) % 4]};
+                std::sort(half.begin(), half.end());
+                if (surfaceKeys.count(half))
+                    return true;
+            }
+        }
+        return false;
+    };
     std::vector<Candidate> candidates;
     for (const auto &[key, list] : bySites)
         for (std::size_t i = 0; i < list.size(); ++i)
@@ -157,6 +187,10 @@ SegmentDualCells buildSegmentDualCells(const Model &remesh, const std::vector<in
                     if (!makeCell(p, a.nodes, b.nodes, cell)
                         || !wellShaped(p, cell, params.maxQuadWarpDegrees)) {
                         ++out.rejectedShape;
+                        continue;
+                    }
+                    if (quadOnSurface(cell)) {
+                        ++out.rejectedQuadOnSurface;
                         continue;
                     }
                     const double height = ab.norm();

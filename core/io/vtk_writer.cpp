@@ -47,6 +47,14 @@ vtkSmartPointer<vtkUnsignedCharArray> strings(const char *name,
     return a;
 }
 
+// An empty list is left out: meshio 1.x cannot read an empty binary array (its whole read
+// fails) and our reader takes a missing list as empty.
+void addStrings(vtkFieldData *fd, const char *name, const std::vector<std::string> &values)
+{
+    if (!values.empty())
+        fd->AddArray(strings(name, values));
+}
+
 vtkSmartPointer<vtkIntArray> ints(const char *name)
 {
     auto a = vtkSmartPointer<vtkIntArray>::New();
@@ -60,17 +68,17 @@ void addFieldData(vtkFieldData *fd, const VolumeMesh &mesh)
     auto depth = ints(vtkarrays::zPositiveDepth);
     depth->InsertNextValue(mesh.zPositiveDepth ? 1 : 0);
     fd->AddArray(depth);
-    fd->AddArray(strings(vtkarrays::regionNames, mesh.regionNames));
+    addStrings(fd, vtkarrays::regionNames, mesh.regionNames);
     std::vector<std::string> names, features, types;
     for (const MeshSurface &s : mesh.surfaces) {
         names.push_back(s.name);
         features.push_back(s.featureName);
         types.push_back(featureTypeName(s.type));
     }
-    fd->AddArray(strings(vtkarrays::surfaceNames, names));
-    fd->AddArray(strings(vtkarrays::surfaceFeatures, features));
-    fd->AddArray(strings(vtkarrays::surfaceTypes, types));
-    fd->AddArray(strings(vtkarrays::lineNames, mesh.lineNames));
+    addStrings(fd, vtkarrays::surfaceNames, names);
+    addStrings(fd, vtkarrays::surfaceFeatures, features);
+    addStrings(fd, vtkarrays::surfaceTypes, types);
+    addStrings(fd, vtkarrays::lineNames, mesh.lineNames);
     if (!mesh.cellQuality.empty())
         fd->AddArray(strings(vtkarrays::qualityName, {mesh.qualityName}));
     if (!mesh.regionBoundaries.empty()) {

@@ -105,14 +105,24 @@ void validateMesh(const VolumeMesh &m)
 double signedVolume(const VolumeMesh &mesh, const Cell &cell)
 {
     auto p = [&](int k) -> const Vec3 & { return mesh.points[cell.nodes[k]]; };
+    // Cone from o over the quad a b c d (outward), the mean of both diagonal splits.
+    auto quadCone = [&](const Vec3 &o, int a, int b, int c, int d) {
+        return 0.5
+               * (tetVolume(p(a), p(c), p(b), o) + tetVolume(p(a), p(d), p(c), o)
+                  + tetVolume(p(a), p(d), p(b), o) + tetVolume(p(b), p(d), p(c), o));
+    };
     switch (cell.type) {
     case CellType::Tet:
         return tetVolume(p(0), p(1), p(2), p(3));
     case CellType::Pyramid:
-        return tetVolume(p(0), p(1), p(2), p(4)) + tetVolume(p(0), p(2), p(3), p(4));
-    case CellType::Prism:
-        return tetVolume(p(0), p(1), p(2), p(3)) + tetVolume(p(1), p(2), p(3), p(4))
-               + tetVolume(p(2), p(3), p(4), p(5));
+        // From the apex only the base counts; its outward order is 0 3 2 1.
+        return quadCone(p(4), 0, 3, 2, 1);
+    case CellType::Prism: {
+        // From node 0 the bottom counts nothing (a warped quad through 0 still does).
+        const Vec3 &o = p(0);
+        return tetVolume(p(3), p(5), p(4), o) + quadCone(o, 0, 1, 4, 3) + quadCone(o, 1, 2, 5, 4)
+               + quadCone(o, 2, 0, 3, 5);
+    }
     }
     return 0.0;
 }

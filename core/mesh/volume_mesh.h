@@ -93,8 +93,11 @@ struct VolumeMesh {
 // out of range, repeated nodes in a cell, non-finite coordinates. Writers call it first.
 void validateMesh(const VolumeMesh &mesh);
 
-// Signed volume: positive for a cell in the node order above. Pyramids and prisms are split into
-// tetrahedra (exact for planar quad faces).
+// Signed volume: positive for a cell in the node order above. Quad faces are bilinear, whose
+// volume is the mean of their two diagonal splits (Grandy 1997, "Efficient computation of volume
+// of hexahedral cells"): exact for the trilinear cell and independent of the split, so cells
+// sharing a warped quad add up to the volume they cover (a fixed split would count the sliver
+// between the two splits twice or not at all).
 double signedVolume(const VolumeMesh &mesh, const Cell &cell);
 
 // The triangle faces of a cell, each oriented with its right-hand normal pointing out of the cell.

@@ -50,11 +50,15 @@ struct NestedSpheresParams {
     Vec3 centre = Vec3::Zero();
     double innerRadius = 1.0;
     double outerRadius = 2.0;
+    // > 0: a third sphere "middle" between them (thesis Fig 5.9, three nested spheres), whose
+    // shells "shell" (inner-middle) and "shell2" (middle-outer) can be made thin.
+    double middleRadius = 0.0;
     int subdivisions = 3;    // icosahedron subdivisions: 20 · 4^n triangles per sphere
     bool withRegions = true; // "inner" and "shell" regions plus the Universe sides
 };
 
-// Two concentric icospheres, normals outward: "inner" (type Horizon) and "outer" (type Boundary).
+// Two (three) concentric icospheres, normals outward: "inner" (and "middle", type Horizon) and
+// "outer" (type Boundary).
 // They share no vertex, so the model has no line and no corner.
 Model nestedSpheres(const NestedSpheresParams &params);
 

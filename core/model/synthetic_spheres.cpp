@@ -68,6 +68,9 @@ Model nestedSpheres(const NestedSpheresParams &p)
 {
     if (!(p.innerRadius > 0 && p.outerRadius > p.innerRadius))
         throw InputError("nested spheres: the radii must satisfy 0 < inner < outer");
+    const bool middle = p.middleRadius > 0;
+    if (middle && !(p.middleRadius > p.innerRadius && p.middleRadius < p.outerRadius))
+        throw InputError("nested spheres: the middle radius must be between inner and outer");
     if (p.subdivisions < 0 || p.subdivisions > 8)
         throw InputError("nested spheres: subdivisions must be in [0, 8]");
     Model model;
@@ -76,7 +79,16 @@ Model nestedSpheres(const NestedSpheresParams &p)
         sphere("inner", FeatureType::Horizon, p.centre, p.innerRadius, p.subdivisions));
     model.surfaces.push_back(
         sphere("outer", FeatureType::Boundary, p.centre, p.outerRadius, p.subdivisions));
-    if (p.withRegions) {
+    if (middle)
+        model.surfaces.push_back(
+            sphere("middle", FeatureType::Horizon, p.centre, p.middleRadius, p.subdivisions));
+    if (p.withRegions && middle) {
+        model.regions.push_back({"inner", {{0, false}}});
+        model.regions.push_back({"shell", {{0, true}, {2, false}}});
+        model.regions.push_back({"shell2", {{2, true}, {1, false}}});
+        model.universe = {{1, true}};
+        model.layers.push_back({"all", {0, 1, 2}});
+    } else if (p.withRegions) {
         // Normals point outwards: a region inside a sphere is on its negative side.
         model.regions.push_back({"inner", {{0, false}}});
         model.regions.push_back({"shell", {{0, true}, {1, false}}});

@@ -53,6 +53,17 @@ ParamTable<HybridParams> makeTable()
     t.add(memberParam(&P::cvtIterations, i));
 
     i = {};
+    i.key = "surface_iterations", i.flag = "--surface-iterations";
+    i.jsonKey = "surface_iterations", i.type = ParamType::Int, i.minimum = 0;
+    i.maximum = 100000, i.valueName = "N", i.thesis = "§5.2";
+    i.offText = QT_TRANSLATE_NOOP("stratamesh::Params", "Off");
+    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "Sur&face site iterations:");
+    i.help = QT_TRANSLATE_NOOP("stratamesh::Params",
+                               "Lloyd steps moving the sites whose cell meets a surface to the "
+                               "centroid of their restricted cell; 0 turns them off.");
+    t.add(memberParam(&P::surfaceIterations, i));
+
+    i = {};
     i.key = "seed", i.flag = "--seed", i.jsonKey = "seed", i.type = ParamType::Seed;
     i.minimum = 0, i.maximum = 1073741824, i.valueName = "S";
     i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "Ra&ndom seed:");
@@ -69,6 +80,15 @@ ParamTable<HybridParams> makeTable()
                                "Angle between the two halves of a prism's or pyramid's quad face "
                                "above which the cell is left to the tets.");
     t.add(nestedParam(&P::cells, &SegmentDualParams::maxQuadWarpDegrees, i));
+
+    i = {};
+    i.key = "pyramid_height", i.flag = "--pyramid-height", i.jsonKey = "pyramid_height";
+    i.minimum = 1e-3, i.maximum = 2.0, i.valueName = "H", i.decimals = 3, i.thesis = "§5.4";
+    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "Transition &pyramid height:");
+    i.help = QT_TRANSLATE_NOOP("stratamesh::Params",
+                               "Apex height of a pyramid on a quad face that meets the tets, over "
+                               "the square root of the quad's area.");
+    t.add(memberParam(&P::pyramidHeightRatio, i));
 
     i = tetgenParamTable().info("quality");
     t.add(nestedParam(&P::tetgen, &TetgenParams::quality, i));

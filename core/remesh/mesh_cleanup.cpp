@@ -240,7 +240,11 @@ CleanupCounts removeDegenerateTriangles(EditableSoup &soup, const Model &input,
     CleanupCounts counts;
     for (int pass = 0; pass < params.maxPasses; ++pass) {
         bool changed = false;
-        for (int t = 0; t < soup.triangleCapacity(); ++t) {
+        // Triangles made during the pass wait for the next one: a cap whose apex cannot move onto
+        // its contact is put back as a new triangle, and meeting it again in the same pass made
+        // the pass endless (nested spheres from box sites, a non-manifold edge of 4 triangles).
+        const int end = soup.triangleCapacity();
+        for (int t = 0; t < end; ++t) {
             if (!soup.alive(t) || soup.quality(t) >= params.degenerateQuality)
                 continue;
             changed = fixDegenerate(soup, t, input, params, ledger, counts) || changed;

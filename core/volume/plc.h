@@ -23,6 +23,9 @@ struct Plc {
     std::vector<Triangle> facets;   // every surface triangle, on global point ids
     std::vector<int> facetMarkers;  // surface index + 1, one per facet
     std::vector<PlcRegion> regions; // in the order of Model::regions
+    // TetGen's hole list: the subdomain holding each point is left empty (the zones of a hybrid
+    // mesh's own cells, hybrid_mesher.h). buildPlc() leaves it empty.
+    std::vector<Vec3> holes;
 };
 
 // Builds the PLC; the model's topology is recovered on a copy when it has none. A seed comes from

@@ -29,7 +29,15 @@ void writeTetgenPoly(const Plc &plc, const std::string &path)
             out << "1 0 " << (f < plc.facetMarkers.size() ? plc.facetMarkers[f] : 0) << '\n';
             out << "3 " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
         }
-        out << "# Part 3 - holes\n0\n";
+        out << "# Part 3 - holes: count; each: index, point x y z\n" << plc.holes.size() << '\n';
+        for (std::size_t h = 0; h < plc.holes.size(); ++h) {
+            out << h + 1;
+            for (int k = 0; k < 3; ++k) {
+                out << ' ';
+                writeDouble(out, plc.holes[h][k]);
+            }
+            out << '\n';
+        }
         out << "# Part 4 - regions: index, seed x y z, attribute, max volume (-1: none)\n";
         out << plc.regions.size() << '\n';
         for (std::size_t r = 0; r < plc.regions.size(); ++r) {

@@ -8,7 +8,7 @@
 
 namespace stratamesh {
 
-// Points numbered from 1, one single-triangle polygon per facet with its marker, no holes, the
+// Points numbered from 1, one single-triangle polygon per facet with its marker, the holes, the
 // region list (seed, attribute, no volume constraint). Written through atomic_file.h.
 // Throws FileError when the file cannot be written.
 void writeTetgenPoly(const Plc &plc, const std::string &path);

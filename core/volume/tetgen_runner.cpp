@@ -380,6 +380,12 @@ std::string findTetgenHelper()
 
 TetgenResult runTetgen(const Model &model, const TetgenParams &params, Progress &progress)
 {
+    return runTetgen(model, {}, params, progress);
+}
+
+TetgenResult runTetgen(const Model &model, const std::vector<Vec3> &holes,
+                       const TetgenParams &params, Progress &progress)
+{
     TetgenResult result;
     result.switches = tetgenSwitches(params);
     if (!(params.quality >= 0) || !(params.maxVolume >= 0) || !(params.timeLimitSeconds >= 0)
@@ -394,6 +400,7 @@ TetgenResult runTetgen(const Model &model, const TetgenParams &params, Progress 
         if (params.checkInput && rejectInvalidModel(model, checking, result))
             return result;
         plc = buildPlc(model);
+        plc.holes = holes;
     } catch (const InputError &e) { // no topology (NaN, bad ids), a region without an inside
         result.outcome = TetgenOutcome::InvalidInput;
         result.message = std::string("TetGen was not run: ") + e.what();

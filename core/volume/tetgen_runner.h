@@ -67,4 +67,8 @@ std::string findTetgenHelper();
 TetgenResult runTetgen(const Model &model, const TetgenParams &params,
                        Progress &progress = Progress::none());
 
+// As above, with TetGen's hole points (Plc::holes): the subdomains holding one stay empty.
+TetgenResult runTetgen(const Model &model, const std::vector<Vec3> &holes,
+                       const TetgenParams &params, Progress &progress = Progress::none());
+
 } // namespace stratamesh

@@ -64,6 +64,33 @@ private slots:
         QVERIFY(signedVolume(m, Cell::prism(9, 11, 10, 12, 14, 13)) < 0);
     }
 
+    // A prism with one warped quad and a pyramid on that quad: their volumes add up to what the
+    // pair covers, whatever diagonal either cell's node order would pick.
+    void warpedQuadVolumesAddUp()
+    {
+        const double t = 0.3; // moves top node 4 along the planes of the top and of quad 1 2 5 4
+        VolumeMesh m;
+        m.points = {{0, 0, 0},     {1, 0, 0}, {0, 1, 0},       {0, 0, 1},
+                    {1 - t, t, 1}, {0, 1, 1}, {0.5, -0.5, 0.5}};
+        const Cell prism = Cell::prism(0, 1, 2, 3, 4, 5), pyramid = Cell::pyramid(0, 1, 4, 3, 6);
+        // The closed triangulated boundary of the pair: the prism's planar faces and the sides
+        // of the pyramid, outward.
+        const std::vector<Triangle> boundary = {{0, 2, 1}, {3, 4, 5}, {1, 2, 5}, {1, 5, 4},
+                                                {2, 0, 3}, {2, 3, 5}, {0, 1, 6}, {1, 4, 6},
+                                                {4, 3, 6}, {3, 0, 6}};
+        double covered = 0.0;
+        for (const Triangle &f : boundary)
+            covered +=
+                m.points[f[0]].dot(m.points[f[1]].cross(m.points[f[2]])) / 6.0; // cone from 0
+        const double sum = signedVolume(m, prism) + signedVolume(m, pyramid);
+        QVERIFY2(std::abs(sum - covered) < 1e-14, qPrintable(QString::number(sum - covered)));
+        // The same cells numbered from another corner: the same volumes.
+        QVERIFY(std::abs(signedVolume(m, Cell::prism(1, 2, 0, 4, 5, 3)) - signedVolume(m, prism))
+                < 1e-14);
+        QVERIFY(std::abs(signedVolume(m, Cell::pyramid(1, 4, 3, 0, 6)) - signedVolume(m, pyramid))
+                < 1e-14);
+    }
+
     void outwardFacesPointOut()
     {
         const VolumeMesh m = test::hybridMesh();

@@ -55,6 +55,9 @@ private slots:
         NestedSpheresParams s;
         s.outerRadius = 0.5;
         QVERIFY_THROWS_EXCEPTION(InputError, nestedSpheres(s));
+        s.outerRadius = 2.0;
+        s.middleRadius = 2.5; // outside the outer sphere
+        QVERIFY_THROWS_EXCEPTION(InputError, nestedSpheres(s));
     }
 
     // All vertices inside the box, horizons follow z = c + A sin(π y / Ly) exactly at the grid.
@@ -182,6 +185,13 @@ private slots:
                 QVERIFY(normal.dot((a + b + c) / 3.0 - p.centre) > 0.0);
             }
         QVERIFY(std::abs((m.surfaces[1].vertices[7] - p.centre).norm() - 5.0) < 1e-12);
+        // Three spheres (thesis Fig 5.9): two shells, each bounded by its two spheres.
+        p.middleRadius = 3.5;
+        const Model three = nestedSpheres(p);
+        QCOMPARE(three.surfaces.size(), std::size_t(3));
+        QCOMPARE(three.regions.size(), std::size_t(3));
+        QVERIFY(std::abs((three.surfaces[2].vertices[7] - p.centre).norm() - 3.5) < 1e-12);
+        QCOMPARE(three.regions[2].boundaries.size(), std::size_t(2));
     }
 };
 

@@ -4,6 +4,7 @@
 #include "common/error.h"
 #include "model/region_volume.h"
 #include "tetgen_test_models.h"
+#include "volume/plc.h"
 #include "volume/tetgen_comparison.h"
 #include "volume/tetgen_runner.h"
 
@@ -96,6 +97,21 @@ private slots:
         // With Y the surfaces keep their triangles: as many boundary faces as input triangles.
         QCOMPARE(r.mesh.triangles.size(), m.triangleCount());
         QVERIFY(std::count(r.mesh.triangleSurface.begin(), r.mesh.triangleSurface.end(), -1) == 0);
+    }
+
+    // A hole point in layer2 leaves it empty: layer1 alone is meshed, to its volume.
+    void holeLeavesItsZoneEmpty()
+    {
+        const Model m = twoRegionBox();
+        const Vec3 inLayer2 = regionSeed(m, 1).seed;
+        const TetgenResult r = runTetgen(m, {inLayer2}, {});
+        QCOMPARE(tetgenOutcomeName(r.outcome), "ok");
+        QVERIFY(r.mesh.cells.size() > 50);
+        QCOMPARE(std::count(r.mesh.cellRegion.begin(), r.mesh.cellRegion.end(), 1), 0L);
+        QCOMPARE(r.tetsWithoutRegion, std::size_t(0));
+        const std::vector<double> brep = regionVolumes(m);
+        const std::vector<double> tets = tetVolumes(r.mesh);
+        QVERIFY(std::abs(tets[0] - brep[0]) <= 1e-6 * brep[0]);
     }
 
     // A region in two pieces gets one seed; TetGen numbers the other piece itself.
