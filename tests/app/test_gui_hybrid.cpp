@@ -3,7 +3,8 @@
 // (legend) or by min dihedral angle (values within the core's per-type bounds), and the clip
 // plane opens it; Cancel during a long run stops the worker and leaves the previous mesh; a save
 // writes a .vtu and a .msh that the core's reader reads back with the same cells per type, and a
-// wrong extension writes nothing.
+// wrong extension writes nothing; a whole long run moves the bar forward only, and its longest wait
+// between progress updates is printed (it bounds how long a Cancel waits).
 #include "widgets/image_compare.h"
 
 #include "hybrid_controller.h"
@@ -239,6 +240,50 @@ private slots:
         QVERIFY(!hybrid->save(stl));
         QVERIFY(!QFile::exists(stl));
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), errors + 1);
+    }
+
+    // A whole long run: the bar only moves forward, and the longest wait between two progress
+    // updates bounds how long a Cancel can wait (stages that do not tick show up here).
+    void progressOfALongRun()
+    {
+        HybridWorkflow *hybrid = m_window->hybridWorkflow();
+        HybridController *job = hybrid->controller();
+        std::vector<int> percents;
+        QStringList stages;
+        QElapsedTimer clock;
+        qint64 last = 0, longest = 0;
+        QString longestAfter;
+        clock.start();
+        QMetaObject::Connection onProgress = connect(
+            job, &HybridController::progressChanged, this, [&](int percent, const QString &stage) {
+                const qint64 now = clock.elapsed();
+                if (now - last > longest) {
+                    longest = now - last;
+                    longestAfter = stages.isEmpty() ? QString() : stages.last();
+                }
+                last = now;
+                percents.push_back(percent);
+                stages << stage;
+            });
+        QSignalSpy finished(hybrid, &HybridWorkflow::finished);
+        HybridParams big;
+        big.sites = 5000;
+        QVERIFY(hybrid->start(big));
+        QVERIFY(finished.wait(kTimeoutMs));
+        disconnect(onProgress);
+        QVERIFY(finished.first().first().toBool());
+        const HybridTimings &t = hybrid->outcome()->result->timings;
+        const VolumeMesh &mesh = hybrid->outcome()->result->mesh;
+        qInfo("modelA1 at 5000 sites: %zu tets, %zu pyramids, %zu prisms in %.2f s (CVT %.2f, "
+              "remesh %.2f, cells %.2f, fill %.2f, check %.2f); %zu progress updates, the longest "
+              "wait %lld ms after '%s'",
+              mesh.countCells(CellType::Tet), mesh.countCells(CellType::Pyramid),
+              mesh.countCells(CellType::Prism), t.totalSeconds, t.cvtSeconds, t.remeshSeconds,
+              t.cellsSeconds, t.fillSeconds, t.checkSeconds, percents.size(), longest,
+              qPrintable(longestAfter));
+        for (std::size_t i = 1; i < percents.size(); ++i)
+            QVERIFY2(percents[i] >= percents[i - 1], qPrintable(stages[int(i)]));
+        QCOMPARE(hybrid->scenes()->output().tetCount(), int(mesh.cells.size()));
     }
 
 private:
