@@ -261,6 +261,11 @@ vtkActor *TetMeshScene::actor() const
     return m_actor;
 }
 
+vtkUnstructuredGrid *TetMeshScene::grid() const
+{
+    return m_grid;
+}
+
 vtkScalarBarActor *TetMeshScene::scalarBar() const
 {
     return m_scalarBar;

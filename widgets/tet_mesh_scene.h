@@ -60,6 +60,8 @@ public:
     // Number of cells of a type in the drawing.
     int cellCount(CellType type) const;
     vtkActor *actor() const;
+    // The cells as handed to VTK (before the clip).
+    vtkUnstructuredGrid *grid() const;
     vtkScalarBarActor *scalarBar() const;
 
     // Minimum dihedral angles are coloured over [0°, kDihedralTop] (70.5° is the regular tet's).
