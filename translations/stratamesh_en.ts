@@ -431,6 +431,259 @@ per cell</source>
     </message>
 </context>
 <context>
+    <name>stratamesh::HybridController</name>
+    <message>
+        <source>Building the hybrid mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The hybrid mesher stopped without a result</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::HybridDialog</name>
+    <message>
+        <source>Hybrid Mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Build Mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::HybridPanel</name>
+    <message>
+        <source>C&amp;olour cells by:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cell type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min dihedral angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C&amp;lip plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only the cells on one side of a plane, to see inside the mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>North–south section (x)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>East–west section (y)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Horizontal section (z)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position of the plane across the mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pyramids</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Prisms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min dihedral (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max dihedral (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slivers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedra with a dihedral angle below 5° or above 175°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Valid mixed mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not valid: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Invalid cells found: %1  ·  repaired: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No hybrid cell could be kept: this is TetGen&apos;s mesh of the remesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time: %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::HybridWorkflow</name>
+    <message>
+        <source>&amp;Hybrid Mesh…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mesh the regions with prisms in the thin layers, tetrahedra elsewhere and pyramids between them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel &amp;Hybrid Mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop the hybrid mesher; the previous hybrid mesh is kept</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save &amp;Hybrid Mesh As…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the hybrid mesh as a VTK (.vtu) or Gmsh (.msh) file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hybrid Mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Hybrid Mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min dihedral
+angle (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tetrahedron</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pyramid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>prism</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cell type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Building the hybrid mesh of %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hybrid mesh: %1 tetrahedra, %2 pyramids, %3 prisms, %4 in %5 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>valid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not valid (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hybrid mesh built — see Hybrid Mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The hybrid mesh is not valid — see Messages</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hybrid meshing failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hybrid meshing failed — see Messages</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hybrid meshing cancelled; the previous mesh is kept</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hybrid meshing cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hybrid mesh: %1 cells, %2 sites</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>VTK unstructured grid (*.vtu)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gmsh mesh (*.msh)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Hybrid Mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a hybrid mesh is saved as a .vtu or .msh file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hybrid mesh saved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not save the hybrid mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::LedgerPanel</name>
     <message>
         <source>No simplification</source>

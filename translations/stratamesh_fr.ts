@@ -432,6 +432,260 @@ par cellule</translation>
     </message>
 </context>
 <context>
+    <name>stratamesh::HybridController</name>
+    <message>
+        <source>Building the hybrid mesh</source>
+        <translation>Construction du maillage hybride</translation>
+    </message>
+    <message>
+        <source>The hybrid mesher stopped without a result</source>
+        <translation>Le mailleur hybride s&apos;est arrêté sans résultat</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::HybridDialog</name>
+    <message>
+        <source>Hybrid Mesh</source>
+        <translation>Maillage hybride</translation>
+    </message>
+    <message>
+        <source>&amp;Build Mesh</source>
+        <translation>&amp;Construire le maillage</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::HybridPanel</name>
+    <message>
+        <source>C&amp;olour cells by:</source>
+        <translation>C&amp;olorer les cellules par :</translation>
+    </message>
+    <message>
+        <source>Cell type</source>
+        <translation>Type de cellule</translation>
+    </message>
+    <message>
+        <source>Min dihedral angle</source>
+        <translation>Angle dièdre minimal</translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation>Région</translation>
+    </message>
+    <message>
+        <source>C&amp;lip plane</source>
+        <translation>P&amp;lan de coupe</translation>
+    </message>
+    <message>
+        <source>Show only the cells on one side of a plane, to see inside the mesh</source>
+        <translation>Ne montrer que les cellules d&apos;un côté d&apos;un plan, pour voir l&apos;intérieur du maillage</translation>
+    </message>
+    <message>
+        <source>North–south section (x)</source>
+        <translation>Coupe nord–sud (x)</translation>
+    </message>
+    <message>
+        <source>East–west section (y)</source>
+        <translation>Coupe est–ouest (y)</translation>
+    </message>
+    <message>
+        <source>Horizontal section (z)</source>
+        <translation>Coupe horizontale (z)</translation>
+    </message>
+    <message>
+        <source>Position of the plane across the mesh</source>
+        <translation>Position du plan à travers le maillage</translation>
+    </message>
+    <message>
+        <source>Tetrahedra</source>
+        <translation>Tétraèdres</translation>
+    </message>
+    <message>
+        <source>Pyramids</source>
+        <translation>Pyramides</translation>
+    </message>
+    <message>
+        <source>Prisms</source>
+        <translation>Prismes</translation>
+    </message>
+    <message>
+        <source>Cells</source>
+        <translation>Cellules</translation>
+    </message>
+    <message>
+        <source>Min dihedral (°)</source>
+        <translation>Dièdre min. (°)</translation>
+    </message>
+    <message>
+        <source>Max dihedral (°)</source>
+        <translation>Dièdre max. (°)</translation>
+    </message>
+    <message>
+        <source>Slivers</source>
+        <translation>Tétraèdres plats</translation>
+    </message>
+    <message>
+        <source>Tetrahedra with a dihedral angle below 5° or above 175°</source>
+        <translation>Tétraèdres ayant un angle dièdre inférieur à 5° ou supérieur à 175°</translation>
+    </message>
+    <message>
+        <source>Valid mixed mesh</source>
+        <translation>Maillage mixte valide</translation>
+    </message>
+    <message>
+        <source>Not valid: %1</source>
+        <translation>Non valide : %1</translation>
+    </message>
+    <message>
+        <source>Invalid cells found: %1  ·  repaired: %2</source>
+        <translation>Cellules invalides trouvées : %1  ·  réparées : %2</translation>
+    </message>
+    <message>
+        <source>No hybrid cell could be kept: this is TetGen&apos;s mesh of the remesh</source>
+        <translation>Aucune cellule hybride n&apos;a pu être conservée : c&apos;est le maillage TetGen du remaillage</translation>
+    </message>
+    <message>
+        <source>Time: %1 s</source>
+        <translation>Durée : %1 s</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::HybridWorkflow</name>
+    <message>
+        <source>&amp;Hybrid Mesh…</source>
+        <translation>Maillage &amp;hybride…</translation>
+    </message>
+    <message>
+        <source>Mesh the regions with prisms in the thin layers, tetrahedra elsewhere and pyramids between them</source>
+        <translation>Mailler les régions avec des prismes dans les couches minces, des tétraèdres ailleurs et des pyramides entre les deux</translation>
+    </message>
+    <message>
+        <source>Cancel &amp;Hybrid Mesh</source>
+        <translation>Annuler le maillage &amp;hybride</translation>
+    </message>
+    <message>
+        <source>Stop the hybrid mesher; the previous hybrid mesh is kept</source>
+        <translation>Arrêter le mailleur hybride ; le maillage hybride précédent est conservé</translation>
+    </message>
+    <message>
+        <source>Save &amp;Hybrid Mesh As…</source>
+        <translation>Enregistrer le maillage &amp;hybride sous…</translation>
+    </message>
+    <message>
+        <source>Write the hybrid mesh as a VTK (.vtu) or Gmsh (.msh) file</source>
+        <translation>Écrire le maillage hybride dans un fichier VTK (.vtu) ou Gmsh (.msh)</translation>
+    </message>
+    <message>
+        <source>Hybrid Mesh</source>
+        <translation>Maillage hybride</translation>
+    </message>
+    <message>
+        <source>&amp;Hybrid Mesh</source>
+        <translation>Maillage &amp;hybride</translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation>Région</translation>
+    </message>
+    <message>
+        <source>Min dihedral
+angle (°)</source>
+        <translation>Angle dièdre
+min. (°)</translation>
+    </message>
+    <message>
+        <source>tetrahedron</source>
+        <translation>tétraèdre</translation>
+    </message>
+    <message>
+        <source>pyramid</source>
+        <translation>pyramide</translation>
+    </message>
+    <message>
+        <source>prism</source>
+        <translation>prisme</translation>
+    </message>
+    <message>
+        <source>Cell type</source>
+        <translation>Type de cellule</translation>
+    </message>
+    <message>
+        <source>Building the hybrid mesh of %1…</source>
+        <translation>Construction du maillage hybride de %1…</translation>
+    </message>
+    <message>
+        <source>Hybrid mesh: %1 tetrahedra, %2 pyramids, %3 prisms, %4 in %5 s</source>
+        <translation>Maillage hybride : %1 tétraèdres, %2 pyramides, %3 prismes, %4 en %5 s</translation>
+    </message>
+    <message>
+        <source>valid</source>
+        <translation>valide</translation>
+    </message>
+    <message>
+        <source>not valid (%1)</source>
+        <translation>non valide (%1)</translation>
+    </message>
+    <message>
+        <source>Hybrid mesh built — see Hybrid Mesh</source>
+        <translation>Maillage hybride construit — voir Maillage hybride</translation>
+    </message>
+    <message>
+        <source>The hybrid mesh is not valid — see Messages</source>
+        <translation>Le maillage hybride n&apos;est pas valide — voir Messages</translation>
+    </message>
+    <message>
+        <source>Hybrid meshing failed: %1</source>
+        <translation>Échec du maillage hybride : %1</translation>
+    </message>
+    <message>
+        <source>Hybrid meshing failed — see Messages</source>
+        <translation>Échec du maillage hybride — voir Messages</translation>
+    </message>
+    <message>
+        <source>Hybrid meshing cancelled; the previous mesh is kept</source>
+        <translation>Maillage hybride annulé ; le maillage précédent est conservé</translation>
+    </message>
+    <message>
+        <source>Hybrid meshing cancelled</source>
+        <translation>Maillage hybride annulé</translation>
+    </message>
+    <message>
+        <source>Input: %1</source>
+        <translation>Entrée : %1</translation>
+    </message>
+    <message>
+        <source>Hybrid mesh: %1 cells, %2 sites</source>
+        <translation>Maillage hybride : %1 cellules, %2 sites</translation>
+    </message>
+    <message>
+        <source>VTK unstructured grid (*.vtu)</source>
+        <translation>Grille non structurée VTK (*.vtu)</translation>
+    </message>
+    <message>
+        <source>Gmsh mesh (*.msh)</source>
+        <translation>Maillage Gmsh (*.msh)</translation>
+    </message>
+    <message>
+        <source>Save Hybrid Mesh</source>
+        <translation>Enregistrer le maillage hybride</translation>
+    </message>
+    <message>
+        <source>a hybrid mesh is saved as a .vtu or .msh file</source>
+        <translation>un maillage hybride s&apos;enregistre en fichier .vtu ou .msh</translation>
+    </message>
+    <message>
+        <source>Hybrid mesh saved</source>
+        <translation>Maillage hybride enregistré</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 enregistré</translation>
+    </message>
+    <message>
+        <source>Could not save the hybrid mesh</source>
+        <translation>Impossible d&apos;enregistrer le maillage hybride</translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::LedgerPanel</name>
     <message>
         <source>No simplification</source>

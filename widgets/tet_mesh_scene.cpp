@@ -1,5 +1,7 @@
 #include "tet_mesh_scene.h"
 
+#include "io/vtk_common.h"
+
 #include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -22,7 +24,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
+#include <vector>
 
 namespace stratamesh {
 
@@ -30,6 +34,7 @@ namespace {
 
 constexpr const char *kRegionArray = "region";
 constexpr const char *kDihedralArray = "min_dihedral_deg";
+constexpr const char *kTypeArray = "cell_type";
 
 // Regions are categories: distinct, mid-saturated hues that stay readable under the lights.
 constexpr std::array<std::array<double, 3>, 10> kRegionPalette{{{0.55, 0.71, 0.85},
@@ -43,7 +48,16 @@ constexpr std::array<std::array<double, 3>, 10> kRegionPalette{{{0.55, 0.71, 0.8
                                                                 {0.75, 0.85, 0.45},
                                                                 {0.80, 0.75, 0.65}}};
 
-vtkSmartPointer<vtkUnstructuredGrid> tetGrid(const VolumeMesh &mesh)
+// Cell types in a hue each, far from the region palette's pastels: a prism among tets stands out.
+constexpr std::array<std::array<double, 3>, 3> kTypePalette{
+    {{0.42, 0.62, 0.88}, {0.95, 0.55, 0.15}, {0.20, 0.70, 0.40}}};
+
+int vtkCellTypeOf(CellType type)
+{
+    return type == CellType::Tet ? VTK_TETRA : type == CellType::Pyramid ? VTK_PYRAMID : VTK_WEDGE;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> cellGrid(const VolumeMesh &mesh)
 {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble(); // Gocad coordinates (~1e6) lose digits in float
@@ -51,6 +65,9 @@ vtkSmartPointer<vtkUnstructuredGrid> tetGrid(const VolumeMesh &mesh)
     for (std::size_t i = 0; i < mesh.points.size(); ++i)
         points->SetPoint(vtkIdType(i), mesh.points[i].data());
     vtkNew<vtkCellArray> tets;
+    std::vector<int> types;
+    vtkNew<vtkIntArray> type;
+    type->SetName(kTypeArray);
     vtkNew<vtkIntArray> region;
     region->SetName(kRegionArray);
     vtkNew<vtkDoubleArray> dihedral;
@@ -60,24 +77,29 @@ vtkSmartPointer<vtkUnstructuredGrid> tetGrid(const VolumeMesh &mesh)
     const int n = int(mesh.points.size());
     for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
         const Cell &cell = mesh.cells[c];
-        if (cell.type != CellType::Tet)
-            continue;
-        vtkIdType ids[4];
+        const int size = cell.size();
+        vtkIdType ids[6];
         bool valid = true;
-        for (int k = 0; k < 4; ++k) {
-            valid = valid && cell.nodes[std::size_t(k)] >= 0 && cell.nodes[std::size_t(k)] < n;
-            ids[k] = cell.nodes[std::size_t(k)];
+        for (int k = 0; k < size; ++k) {
+            // Our prisms turn the other way round their bottom triangle than VTK_WEDGE's.
+            const int node = cell.nodes[std::size_t(
+                cell.type == CellType::Prism ? vtkWedgeMap[std::size_t(k)] : k)];
+            valid = valid && node >= 0 && node < n;
+            ids[k] = node;
         }
         if (!valid)
             continue; // never trust indices enough to crash the viewer
-        tets->InsertNextCell(4, ids);
+        tets->InsertNextCell(size, ids);
+        types.push_back(vtkCellTypeOf(cell.type));
+        type->InsertNextValue(int(cell.type));
         region->InsertNextValue(hasRegions ? mesh.cellRegion[c] : -1);
         dihedral->InsertNextValue(hasQuality ? mesh.cellQuality[c]
                                              : std::numeric_limits<double>::quiet_NaN());
     }
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     grid->SetPoints(points);
-    grid->SetCells(VTK_TETRA, tets);
+    grid->SetCells(types.data(), tets);
+    grid->GetCellData()->AddArray(type);
     grid->GetCellData()->AddArray(region);
     grid->GetCellData()->AddArray(dihedral);
     return grid;
@@ -141,7 +163,7 @@ TetMeshScene::~TetMeshScene()
 void TetMeshScene::setMesh(std::shared_ptr<const VolumeMesh> mesh)
 {
     m_mesh = std::move(mesh);
-    m_grid = m_mesh ? tetGrid(*m_mesh) : vtkSmartPointer<vtkUnstructuredGrid>::New();
+    m_grid = m_mesh ? cellGrid(*m_mesh) : vtkSmartPointer<vtkUnstructuredGrid>::New();
     m_extract->SetInputData(m_grid);
     if (m_clipped)
         m_surface->SetInputConnection(m_extract->GetOutputPort());
@@ -186,6 +208,33 @@ void TetMeshScene::setTitles(const char *region, const char *minDihedral)
     applyColouring();
 }
 
+void TetMeshScene::setTypeTitles(const char *title, const std::array<std::string, 3> &names)
+{
+    m_typeTitle = title;
+    m_typeNames = names;
+    applyColouring();
+}
+
+bool TetMeshScene::dihedralRange(double range[2]) const
+{
+    auto *values = vtkDoubleArray::SafeDownCast(m_grid->GetCellData()->GetArray(kDihedralArray));
+    if (!values || values->GetNumberOfTuples() == 0)
+        return false;
+    values->GetRange(range);
+    return !std::isnan(range[0]) && !std::isnan(range[1]);
+}
+
+int TetMeshScene::cellCount(CellType type) const
+{
+    auto *types = vtkIntArray::SafeDownCast(m_grid->GetCellData()->GetArray(kTypeArray));
+    if (!types)
+        return 0;
+    int count = 0;
+    for (vtkIdType c = 0; c < types->GetNumberOfTuples(); ++c)
+        count += types->GetValue(c) == int(type) ? 1 : 0;
+    return count;
+}
+
 bool TetMeshScene::bounds(double bounds[6]) const
 {
     if (!m_mesh || m_grid->GetNumberOfCells() == 0)
@@ -210,6 +259,11 @@ int TetMeshScene::shownTetCount() const
 vtkActor *TetMeshScene::actor() const
 {
     return m_actor;
+}
+
+vtkUnstructuredGrid *TetMeshScene::grid() const
+{
+    return m_grid;
 }
 
 vtkScalarBarActor *TetMeshScene::scalarBar() const
@@ -250,6 +304,30 @@ void TetMeshScene::applyColouring()
         m_scalarBar->SetPosition(0.02, 0.25);
         m_scalarBar->SetWidth(0.12);
         m_scalarBar->SetHeight(0.5);
+    } else if (m_colouring == TetColouring::Type) {
+        vtkNew<vtkLookupTable> table;
+        table->SetNumberOfTableValues(int(kTypePalette.size()));
+        table->IndexedLookupOn();
+        for (std::size_t t = 0; t < kTypePalette.size(); ++t) {
+            const auto &c = kTypePalette[t];
+            table->SetTableValue(vtkIdType(t), c[0], c[1], c[2], 1.0);
+            table->SetAnnotation(vtkVariant(int(t)), m_typeNames[t]);
+        }
+        table->Build();
+        mapper->SelectColorArray(kTypeArray);
+        mapper->SetLookupTable(table);
+        m_scalarBar->SetLookupTable(table);
+        m_scalarBar->SetTitle(m_typeTitle.c_str());
+        m_scalarBar->SetNumberOfLabels(0);
+        // Three short names: a band along the bottom, each name under its swatch, clear of the
+        // mesh the camera frames in the middle.
+        m_scalarBar->SetOrientationToHorizontal();
+        m_scalarBar->SetTextPositionToPrecedeScalarBar();
+        m_scalarBar->SetMaximumWidthInPixels(360);
+        m_scalarBar->SetMaximumHeightInPixels(90);
+        m_scalarBar->SetPosition(0.2, 0.02);
+        m_scalarBar->SetWidth(0.6);
+        m_scalarBar->SetHeight(0.14);
     } else {
         // Slivers stand out in red; well-shaped tets are calm greens and blues, not alarms.
         vtkNew<vtkColorTransferFunction> colours;

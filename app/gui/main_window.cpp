@@ -2,6 +2,7 @@
 
 #include "about_dialog.h"
 #include "complexity_workflow.h"
+#include "hybrid_workflow.h"
 #include "message_panel.h"
 #include "model_scene.h"
 #include "open_workflow.h"
@@ -50,6 +51,7 @@ MainWindow::MainWindow(QWidget *parent)
     m_remesh = add(new RemeshWorkflow(*m_bench, this));
     m_complexity = add(new ComplexityWorkflow(*m_bench, this));
     m_tetmesh = add(new TetmeshWorkflow(*m_bench, *m_remesh, this));
+    m_hybrid = add(new HybridWorkflow(*m_bench, *m_remesh, *m_tetmesh, this));
     connect(m_open, &OpenWorkflow::opened, this, &MainWindow::showModel);
 
     createActions();

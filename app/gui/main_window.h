@@ -1,6 +1,6 @@
 // The main window only assembles: the input and output views, the menus and the tool bar from the
 // workflows' actions, their docks around the views, the message dock, and the status bar with the
-// one progress strip. What each step does (open, study, remesh, complexity, tetmesh) is its
+// one progress strip. What each step does (open, study, remesh, complexity, tetmesh, hybrid) is its
 // Workflow's; what they share is the Workbench.
 #pragma once
 
@@ -18,6 +18,7 @@ class QToolBar;
 namespace stratamesh {
 
 class ComplexityWorkflow;
+class HybridWorkflow;
 class FeatureLegend;
 class MessagePanel;
 class ModelScene;
@@ -54,6 +55,7 @@ public:
     RemeshWorkflow *remeshWorkflow() const { return m_remesh; }
     ComplexityWorkflow *complexityWorkflow() const { return m_complexity; }
     TetmeshWorkflow *tetmeshWorkflow() const { return m_tetmesh; }
+    HybridWorkflow *hybridWorkflow() const { return m_hybrid; }
 
 public slots:
     void openFile(const QString &path);
@@ -90,6 +92,7 @@ private:
     RemeshWorkflow *m_remesh = nullptr;
     ComplexityWorkflow *m_complexity = nullptr;
     TetmeshWorkflow *m_tetmesh = nullptr;
+    HybridWorkflow *m_hybrid = nullptr;
 
     QAction *m_quit = nullptr;
     QAction *m_showBox = nullptr;

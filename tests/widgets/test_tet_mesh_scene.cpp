@@ -1,15 +1,20 @@
 // The tets of a comparison mesh in a VTK scene: every tet is drawn with its region and min
 // dihedral angle, the clip plane keeps whole tets on one side (the same plane for both sides of
-// a TetMeshPair), bad node ids are skipped, and clearing hides everything.
+// a TetMeshPair), bad node ids are skipped, and clearing hides everything; a hybrid mesh's
+// pyramids and prisms are drawn too, prisms in VTK_WEDGE's node order, and coloured by type.
 #include "tet_mesh_pair.h"
 #include "tet_mesh_scene.h"
 
 #include <QtTest>
 
 #include <vtkActor.h>
+#include <vtkCellType.h>
+#include <vtkIdList.h>
+#include <vtkLookupTable.h>
 #include <vtkMapper.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
+#include <vtkUnstructuredGrid.h>
 
 using namespace stratamesh;
 
@@ -39,6 +44,53 @@ std::shared_ptr<const VolumeMesh> rowOfTets(int n, double xOffset = 0.0)
 class TestTetMeshScene : public QObject {
     Q_OBJECT
 private slots:
+    void drawsPyramidsAndPrisms()
+    {
+        auto mesh = std::make_shared<VolumeMesh>();
+        mesh->regionNames = {"layer"};
+        // A unit prism (bottom 0 1 2, top 3 4 5) and a pyramid on the square x in [1, 2].
+        mesh->points = {Vec3(0, 0, 0), Vec3(1, 0, 0),    Vec3(0, 1, 0), Vec3(0, 0, 1),
+                        Vec3(1, 0, 1), Vec3(0, 1, 1),    Vec3(1, 1, 0), Vec3(2, 0, 0),
+                        Vec3(2, 1, 0), Vec3(1.5, 0.5, 1)};
+        mesh->cells = {Cell::prism(0, 1, 2, 3, 4, 5), Cell::pyramid(1, 7, 8, 6, 9),
+                       Cell::tet(0, 1, 2, 3)};
+        mesh->cellRegion = {0, 0, 0};
+        mesh->cellQuality = {60.0, 45.0, 54.7};
+        vtkNew<vtkRenderer> renderer;
+        TetMeshScene scene(renderer);
+        scene.setMesh(mesh);
+        QCOMPARE(scene.tetCount(), 3);
+        QCOMPARE(scene.cellCount(CellType::Prism), 1);
+        QCOMPARE(scene.cellCount(CellType::Pyramid), 1);
+        QCOMPARE(scene.cellCount(CellType::Tet), 1);
+        vtkUnstructuredGrid *grid = scene.grid();
+        QCOMPARE(grid->GetCellType(0), VTK_WEDGE);
+        QCOMPARE(grid->GetCellType(1), VTK_PYRAMID);
+        QCOMPARE(grid->GetCellType(2), VTK_TETRA);
+        // The VTK writer's order (io/vtk_common.h): the bottom triangle turned the other way.
+        vtkNew<vtkIdList> ids;
+        grid->GetCellPoints(0, ids);
+        const vtkIdType wedge[6] = {0, 2, 1, 3, 5, 4};
+        for (int k = 0; k < 6; ++k)
+            QCOMPARE(ids->GetId(k), wedge[k]);
+        grid->GetCellPoints(1, ids);
+        const vtkIdType pyramid[5] = {1, 7, 8, 6, 9};
+        for (int k = 0; k < 5; ++k)
+            QCOMPARE(ids->GetId(k), pyramid[k]);
+
+        scene.setTypeTitles("Cell type", {"tet", "pyramid", "prism"});
+        scene.setColouring(TetColouring::Type);
+        auto *table = vtkLookupTable::SafeDownCast(scene.scalarBar()->GetLookupTable());
+        QVERIFY(table);
+        QCOMPARE(int(table->GetNumberOfAnnotatedValues()), 3);
+        QCOMPARE(QString::fromStdString(table->GetAnnotation(2)), QStringLiteral("prism"));
+        QCOMPARE(QString::fromUtf8(scene.scalarBar()->GetTitle()), QStringLiteral("Cell type"));
+        double range[2];
+        QVERIFY(scene.dihedralRange(range));
+        QCOMPARE(range[0], 45.0);
+        QCOMPARE(range[1], 60.0);
+    }
+
     void drawsEveryTetAndClipsWholeTets()
     {
         vtkNew<vtkRenderer> renderer;
