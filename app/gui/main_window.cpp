@@ -21,6 +21,7 @@
 #include <QLocale>
 #include <QMenuBar>
 #include <QMimeData>
+#include <QScrollArea>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -172,6 +173,21 @@ void MainWindow::createMenus()
     m_toolBar->addAction(m_resetCamera);
 }
 
+namespace {
+
+// A dock's panel scrolls rather than forcing its minimum height on the window: stacked docks
+// (Input vs Output above Complexity) would otherwise make the window taller than the screen.
+void makeScrollable(QDockWidget *dock)
+{
+    auto *scroll = new QScrollArea(dock);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setWidget(dock->widget());
+    dock->setWidget(scroll);
+}
+
+} // namespace
+
 // The reviews of a result share the right-hand tabs; lists of records go below, beside Messages.
 void MainWindow::placeDocks()
 {
@@ -194,6 +210,8 @@ void MainWindow::placeDocks()
                 addDockWidget(Qt::RightDockWidgetArea, dock.dock);
                 break;
             }
+            if (dock.place != Workflow::DockPlace::WithMessages)
+                makeScrollable(dock.dock);
             dock.dock->hide();
             m_viewMenu->addAction(dock.dock->toggleViewAction());
         }

