@@ -48,6 +48,7 @@ public:
     QAction *showBoxAction() const { return m_showBox; }
     QAction *showEdgesAction() const { return m_showEdges; }
     QString statusCounts() const;
+    Workbench *workbench() const { return m_bench.get(); }
 
     OpenWorkflow *openWorkflow() const { return m_open; }
     StudyWorkflow *studyWorkflow() const { return m_study; }

@@ -18,6 +18,7 @@ namespace stratamesh {
 class FeatureLegend;
 class MessagePanel;
 class ModelScene;
+class PositionMarker;
 class ProgressStrip;
 class ViewPair;
 class VtkViewWidget;
@@ -53,6 +54,15 @@ public:
     void showMessages(bool raise = true);
     void setStatus(const QString &text);
 
+    // Marks a place (a ledger record, a validity problem) in both views and flies the shared
+    // camera to it. The marker is a small fraction of the model's diagonal whatever the record's
+    // own size, so it never hides the model; `radius` > 0 asks for a larger one within that bound.
+    void showPosition(const Vec3 &position, double radius = 0.0);
+    void hidePosition();
+    PositionMarker *inputMarker() const { return m_inputMarker.get(); }
+    PositionMarker *outputMarker() const { return m_outputMarker.get(); }
+    double diagonal() const;
+
     // Frames the input model; the output view shares the camera.
     void resetCamera();
     void render();
@@ -73,6 +83,8 @@ private:
     FeatureLegend *m_legend;
     std::unique_ptr<ModelScene> m_inputScene;
     std::unique_ptr<ModelScene> m_outputScene;
+    std::unique_ptr<PositionMarker> m_inputMarker;
+    std::unique_ptr<PositionMarker> m_outputMarker;
     QString m_displayName;
     QString m_modelPath;
     ModelCounts m_counts;

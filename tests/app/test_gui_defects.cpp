@@ -106,6 +106,44 @@ private slots:
         QVERIFY(saveWindowScreenshot(m_window.get(), kShots + "/defects_remesh_complexity.png"));
     }
 
+    void ledgerMarkerIsSmallAndBothViewsFly()
+    {
+        const auto &outcome = m_window->remeshWorkflow()->outcome();
+        QVERIFY(outcome);
+        if (outcome->ledger->empty())
+            QSKIP("this run recorded no simplification");
+        const double diagonal = m_window->workbench()->diagonal();
+        for (std::size_t i = 0; i < outcome->ledger->size(); ++i) {
+            const LedgerRecord &record = (*outcome->ledger)[i];
+            m_window->resetCamera();
+            const double framed = cameraDistance(m_window->view());
+            m_window->remeshWorkflow()->showLedgerRecord(int(i));
+            PositionMarker *out = m_window->remeshWorkflow()->marker();
+            PositionMarker *in = m_window->workbench()->inputMarker();
+            QVERIFY(out->isVisible() && in->isVisible());
+            QVERIFY2(out->radius() <= 0.05 * diagonal,
+                     qPrintable(QStringLiteral("record %1: radius %2, diagonal %3")
+                                    .arg(i)
+                                    .arg(out->radius())
+                                    .arg(diagonal)));
+            QVERIFY((in->position() - record.position).norm() < 1e-9);
+            QVERIFY((focalPoint(m_window->view()) - record.position).norm() < 1e-6 * diagonal);
+            QVERIFY((focalPoint(m_window->outputView()) - record.position).norm()
+                    < 1e-6 * diagonal);
+            QVERIFY2(
+                cameraDistance(m_window->view()) < 0.75 * framed,
+                qPrintable(
+                    QStringLiteral("%1 vs %2").arg(cameraDistance(m_window->view())).arg(framed)));
+        }
+        QVERIFY(saveWindowScreenshot(m_window.get(), kShots + "/defects_ledger_marker.png"));
+        // A record whose size is an area (an unresolved intersection) is no radius.
+        m_window->workbench()->showPosition((*outcome->ledger)[0].position, 10.0 * diagonal);
+        QVERIFY(m_window->remeshWorkflow()->marker()->radius() <= 0.05 * diagonal);
+        m_window->remeshWorkflow()->showLedgerRecord(-1);
+        QVERIFY(!m_window->remeshWorkflow()->marker()->isVisible());
+        QVERIFY(!m_window->workbench()->inputMarker()->isVisible());
+    }
+
 private:
     bool open(const QString &path = QString())
     {
