@@ -73,6 +73,7 @@ template <class W>
 W *MainWindow::add(W *workflow)
 {
     m_workflows.append(workflow);
+    m_bench->addWorkflow(workflow);
     if (WorkflowJob *job = workflow->job())
         m_bench->addJob(job);
     connect(workflow, &Workflow::busyChanged, this, &MainWindow::updateBusy);

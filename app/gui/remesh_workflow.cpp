@@ -167,6 +167,7 @@ void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
 {
     emit outputReplaced();
     m_outcome = outcome;
+    m_saved = false;
     m_cancel->setEnabled(false);
     ModelScene *input = m_bench.inputScene();
     ModelScene *output = m_bench.outputScene();
@@ -266,10 +267,20 @@ void RemeshWorkflow::showLedgerRecord(int recordIndex)
     m_bench.showPosition(record->position, isLength ? 0.5 * record->size : 0.0);
 }
 
-void RemeshWorkflow::chooseFile()
+QString RemeshWorkflow::unsavedWork() const
+{
+    return m_outcome && !m_saved ? tr("The remeshed model has not been saved.") : QString();
+}
+
+bool RemeshWorkflow::saveUnsavedWork()
+{
+    return chooseFile();
+}
+
+bool RemeshWorkflow::chooseFile()
 {
     if (!m_outcome)
-        return;
+        return false;
     QSettings settings;
     const QString dir = settings.value(QStringLiteral("lastDirectory")).toString();
     QString selected;
@@ -277,11 +288,11 @@ void RemeshWorkflow::chooseFile()
         m_bench.window(), tr("Save Remeshed Model"), dir,
         QString::fromStdString(fileDialogFilter(FormatUse::WriteModel, {}, {})), &selected);
     if (path.isEmpty())
-        return;
+        return false;
     path = QString::fromStdString(
         withFormatExtension(path.toStdString(), FormatUse::WriteModel, selected.toStdString()));
     settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
-    save(path);
+    return save(path);
 }
 
 bool RemeshWorkflow::save(const QString &path)
@@ -299,6 +310,7 @@ bool RemeshWorkflow::save(const QString &path)
             exportModel(*m_outcome->output, temporary);
         });
         plan.commit();
+        m_saved = true;
         message.text = tr("Remeshed model saved");
         m_bench.addMessage(message);
         m_bench.setStatus(tr("Saved %1").arg(QFileInfo(path).fileName()));

@@ -41,13 +41,16 @@ public:
     void retranslate() override;
     void clear() override;
     void enableActions(bool busy) override;
+    QString unsavedWork() const override;
+    bool saveUnsavedWork() override;
 
 public slots:
     // Opens the parameter dialog, then remeshes the shown model.
     void remesh();
     // Remeshes the shown model with these parameters (no dialog); false when it cannot start.
     bool start(const RemeshParams &params);
-    void chooseFile();
+    // False when nothing was saved.
+    bool chooseFile();
     // Writes the remeshed model (exportModel: format from the extension); errors go to messages.
     bool save(const QString &path);
     // Marks a ledger record in both views and flies the camera to it (-1: no mark).
@@ -67,6 +70,7 @@ private:
     RemeshController *m_controller;
     std::optional<RemeshOutcome> m_outcome;
     RemeshParams m_lastParams;
+    bool m_saved = false; // the shown outcome has been written to a file
     LedgerPanel *m_ledger;
     QDockWidget *m_ledgerDock;
     ComparisonTable *m_comparison;

@@ -7,9 +7,12 @@
 #include "progress_strip.h"
 #include "view_pair.h"
 #include "vtk_view_widget.h"
+#include "workflow.h"
 #include "workflow_job.h"
 
+#include <QCoreApplication>
 #include <QDockWidget>
+#include <QMainWindow>
 
 #include <vtkRenderer.h>
 
@@ -26,6 +29,11 @@ Workbench::Workbench(QMainWindow *window, ViewPair *views, MessagePanel *message
       m_inputMarker(std::make_unique<PositionMarker>(views->inputView()->renderer())),
       m_outputMarker(std::make_unique<PositionMarker>(views->outputView()->renderer()))
 {
+    m_ask = [window](const QString &text) {
+        return QMessageBox::question(
+            window, QCoreApplication::translate("stratamesh::Workbench", "Unsaved Result"), text,
+            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    };
 }
 
 Workbench::~Workbench() = default;
@@ -124,6 +132,34 @@ void Workbench::updateLegend()
     m_legend->setEntries(m_inputScene->isVisible() ? m_inputScene->legend()
                                                    : std::vector<LegendEntry>{},
                          m_inputScene->boxVisible());
+}
+
+void Workbench::addWorkflow(Workflow *workflow)
+{
+    m_workflows.append(workflow);
+}
+
+bool Workbench::mayDiscardWork()
+{
+    for (Workflow *workflow : std::as_const(m_workflows)) {
+        const QString unsaved = workflow->unsavedWork();
+        if (unsaved.isEmpty())
+            continue;
+        const QString question = QCoreApplication::translate("stratamesh::Workbench",
+                                                             "%1 Save it before it is replaced?")
+                                     .arg(unsaved);
+        switch (m_ask(question)) {
+        case QMessageBox::Save:
+            if (!workflow->saveUnsavedWork())
+                return false;
+            break;
+        case QMessageBox::Discard:
+            break;
+        default:
+            return false;
+        }
+    }
+    return true;
 }
 
 void Workbench::addJob(WorkflowJob *job)

@@ -6,8 +6,10 @@
 #include "loaded_model.h"
 
 #include <QList>
+#include <QMessageBox>
 #include <QString>
 
+#include <functional>
 #include <memory>
 
 class QDockWidget;
@@ -22,6 +24,7 @@ class PositionMarker;
 class ProgressStrip;
 class ViewPair;
 class VtkViewWidget;
+class Workflow;
 class WorkflowJob;
 
 class Workbench {
@@ -70,6 +73,14 @@ public:
     // shown.
     void updateLegend();
 
+    // Before the work shown is replaced (another model opened): each workflow's unsaved result
+    // is offered for saving; false when the user keeps it (Cancel, or a save that failed).
+    bool mayDiscardWork();
+    // Asks Save, Discard or Cancel; tests answer in place of the user.
+    using Ask = std::function<QMessageBox::StandardButton(const QString &text)>;
+    void setAsk(Ask ask) { m_ask = std::move(ask); }
+    void addWorkflow(Workflow *workflow);
+
     // One long run at a time: every workflow's job is registered, and none starts while any runs.
     void addJob(WorkflowJob *job);
     bool isBusy() const;
@@ -89,6 +100,8 @@ private:
     QString m_modelPath;
     ModelCounts m_counts;
     QList<WorkflowJob *> m_jobs;
+    QList<Workflow *> m_workflows;
+    Ask m_ask;
 };
 
 } // namespace stratamesh

@@ -81,6 +81,10 @@ private slots:
         m_window = std::make_unique<MainWindow>();
         m_window->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        m_window->workbench()->setAsk([this](const QString &question) {
+            m_questions.append(question);
+            return m_answer;
+        });
         QVERIFY(open());
     }
 
@@ -142,6 +146,31 @@ private slots:
         m_window->remeshWorkflow()->showLedgerRecord(-1);
         QVERIFY(!m_window->remeshWorkflow()->marker()->isVisible());
         QVERIFY(!m_window->workbench()->inputMarker()->isVisible());
+    }
+
+    void openAsksBeforeAnUnsavedRemeshGoes()
+    {
+        QVERIFY(m_window->remeshWorkflow()->outcome());
+        QVERIFY(!m_window->remeshWorkflow()->unsavedWork().isEmpty());
+        m_questions.clear();
+        m_answer = QMessageBox::Cancel;
+        m_window->openSample();
+        m_window->openFile(test::dataFile(QStringLiteral("not_sealed_cube.ml")));
+        QCOMPARE(m_questions.size(), 2);
+        QVERIFY(!m_window->openWorkflow()->controller()->isBusy());
+        QVERIFY(m_window->remeshWorkflow()->outcome()); // kept
+        QVERIFY(m_window->outputScene()->model());
+
+        // Once saved, nothing is asked.
+        QTemporaryDir dir;
+        QVERIFY(m_window->remeshWorkflow()->save(dir.filePath(QStringLiteral("out.ml"))));
+        QVERIFY(m_window->remeshWorkflow()->unsavedWork().isEmpty());
+        QVERIFY(remesh());
+        m_questions.clear();
+        m_answer = QMessageBox::Discard;
+        QVERIFY(open());
+        QCOMPARE(m_questions.size(), 1);
+        QVERIFY(!m_window->remeshWorkflow()->outcome());
     }
 
 private:
