@@ -29,6 +29,12 @@ Workbench::Workbench(QMainWindow *window, ViewPair *views, MessagePanel *message
       m_inputMarker(std::make_unique<PositionMarker>(views->inputView()->renderer())),
       m_outputMarker(std::make_unique<PositionMarker>(views->outputView()->renderer()))
 {
+    // A message that knows where it happened (a validity problem) shows the place.
+    QObject::connect(messages, &MessagePanel::messageActivated, window,
+                     [this](const Message &message) {
+                         if (message.position)
+                             showPosition(*message.position);
+                     });
     m_ask = [window](const QString &text) {
         return QMessageBox::question(
             window, QCoreApplication::translate("stratamesh::Workbench", "Unsaved Result"), text,

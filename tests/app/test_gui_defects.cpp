@@ -173,6 +173,29 @@ private slots:
         QVERIFY(!m_window->remeshWorkflow()->outcome());
     }
 
+    // A validity problem's message knows its place: clicking it flies both views there.
+    void validityMessageFliesTheViews()
+    {
+        STRATAMESH_REQUIRE_DATA(path, "not_sealed_cube.ml");
+        m_answer = QMessageBox::Discard;
+        QVERIFY(open(path));
+        MessagePanel *messages = m_window->messagePanel();
+        int row = -1;
+        for (int r = 0; r < messages->count() && row < 0; ++r)
+            if (messages->message(r).position)
+                row = r;
+        QVERIFY2(row >= 0, "no validity message with a position");
+        const Vec3 where = *messages->message(row).position;
+        m_window->resetCamera();
+        const double framed = cameraDistance(m_window->view());
+        messages->activate(row);
+        const double diagonal = m_window->workbench()->diagonal();
+        QVERIFY((focalPoint(m_window->view()) - where).norm() < 1e-6 * diagonal);
+        QVERIFY(cameraDistance(m_window->view()) < framed);
+        QVERIFY(m_window->workbench()->inputMarker()->isVisible());
+        QVERIFY(saveWindowScreenshot(m_window.get(), kShots + "/defects_validity_click.png"));
+    }
+
 private:
     bool open(const QString &path = QString())
     {
