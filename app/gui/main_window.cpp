@@ -52,6 +52,10 @@ MainWindow::MainWindow(QWidget *parent)
     m_complexity = add(new ComplexityWorkflow(*m_bench, this));
     m_tetmesh = add(new TetmeshWorkflow(*m_bench, *m_remesh, this));
     connect(m_open, &OpenWorkflow::opened, this, &MainWindow::showModel);
+    // The input view halves beside the output: the heat map's colour bar would be cut there,
+    // and the cells were measured on the input only. The Complexity dock shows them again.
+    connect(m_remesh, &RemeshWorkflow::outputReplaced, m_complexity,
+            [this] { m_complexity->setHeatMapVisible(false); });
 
     createActions();
     createMenus();

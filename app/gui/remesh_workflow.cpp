@@ -230,6 +230,9 @@ void RemeshWorkflow::onFailed(const Message &error)
 void RemeshWorkflow::onCancelled()
 {
     m_cancel->setEnabled(false);
+    Message cancelled;
+    cancelled.text = tr("Remeshing cancelled: the previous result, if any, is kept");
+    m_bench.addMessage(cancelled);
     m_bench.setStatus(tr("Remeshing cancelled"));
 }
 

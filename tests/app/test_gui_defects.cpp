@@ -110,6 +110,15 @@ private slots:
         QVERIFY(saveWindowScreenshot(m_window.get(), kShots + "/defects_remesh_complexity.png"));
     }
 
+    // The input view halves beside the output: the colour bar of the heat map goes.
+    void heatMapColourBarHiddenAfterRemesh()
+    {
+        QVERIFY(m_window->remeshWorkflow()->outcome());
+        QVERIFY(m_window->complexityWorkflow()->outcome());
+        QVERIFY(!m_window->complexityWorkflow()->heatMap()->scalarBar()->GetVisibility());
+        QVERIFY(!m_window->complexityWorkflow()->heatMap()->actor()->GetVisibility());
+    }
+
     void ledgerMarkerIsSmallAndBothViewsFly()
     {
         const auto &outcome = m_window->remeshWorkflow()->outcome();
@@ -171,6 +180,24 @@ private slots:
         QVERIFY(open());
         QCOMPARE(m_questions.size(), 1);
         QVERIFY(!m_window->remeshWorkflow()->outcome());
+    }
+
+    void cancelledComplexityIsLoggedAndTheBarMoves()
+    {
+        ComplexityParams big;
+        big.cells = {200000};
+        const int before = m_window->messagePanel()->count();
+        QSignalSpy finished(m_window->complexityWorkflow(), &ComplexityWorkflow::finished);
+        QVERIFY(m_window->complexityWorkflow()->start(big));
+        QProgressBar *bar = m_window->progressStrip()->progressBar();
+        QTRY_VERIFY_WITH_TIMEOUT(bar->value() > 0, kTimeoutMs);
+        m_window->complexityWorkflow()->cancelAction()->trigger();
+        QVERIFY(finished.wait(kTimeoutMs));
+        QVERIFY(!finished.first().first().toBool());
+        QCOMPARE(m_window->messagePanel()->count(), before + 1);
+        QVERIFY(m_window->messagePanel()
+                    ->cellText(before, MessagePanel::TextColumn)
+                    .contains(QLatin1String("cancelled")));
     }
 
     // A validity problem's message knows its place: clicking it flies both views there.
