@@ -142,6 +142,7 @@ void RemeshWorkflow::remesh()
     if (!m_bench.model() || m_bench.isBusy())
         return;
     RemeshDialog dialog(m_bench.inputScene()->diagonal(), m_bench.window());
+    dialog.setModelArea(modelArea(*m_bench.model()));
     if (m_lastParams.sites > 0 || m_lastParams.edgeLength > 0.0)
         dialog.setParams(m_lastParams);
     if (dialog.exec() != QDialog::Accepted)

@@ -200,6 +200,27 @@ private slots:
                     .contains(QLatin1String("cancelled")));
     }
 
+    void edgeLengthEstimateFollowsTheSites()
+    {
+        const auto model = m_window->scene()->model();
+        RemeshDialog dialog(m_window->workbench()->diagonal());
+        dialog.setModelArea(modelArea(*model));
+        auto *sites = dialog.findChild<QSpinBox *>(QStringLiteral("sites"));
+        auto *length = dialog.findChild<QDoubleSpinBox *>(QStringLiteral("edge_length"));
+        auto *dResolution = dialog.findChild<QDoubleSpinBox *>(QStringLiteral("d_resolution"));
+        QVERIFY(sites && length && dResolution);
+        QVERIFY(!length->isEnabled());
+        sites->setValue(1000);
+        const double at1000 = length->value();
+        sites->setValue(4000);
+        const double at4000 = length->value();
+        QVERIFY2(qAbs(at1000 / at4000 - 2.0) < 0.05,
+                 qPrintable(QStringLiteral("%1 %2").arg(at1000).arg(at4000)));
+        QVERIFY(qAbs(at4000 - edgeLengthForSites(modelArea(*model), 4000)) <= 0.01 * at4000);
+        QVERIFY(!length->suffix().trimmed().isEmpty());
+        QVERIFY(!dResolution->suffix().trimmed().isEmpty());
+    }
+
     // A validity problem's message knows its place: clicking it flies both views there.
     void validityMessageFliesTheViews()
     {
