@@ -132,7 +132,8 @@ void MainWindow::createActions()
 
     m_about = new QAction(this);
     m_about->setMenuRole(QAction::AboutRole);
-    connect(m_about, &QAction::triggered, this, [this] { showAboutDialog(this); });
+    connect(m_about, &QAction::triggered, this,
+            [this] { showAboutDialog(this, offeredActions()); });
     m_aboutQt = new QAction(this);
     m_aboutQt->setMenuRole(QAction::AboutQtRole);
     connect(m_aboutQt, &QAction::triggered, qApp, &QApplication::aboutQt);
@@ -326,6 +327,19 @@ void MainWindow::updateBusy()
     else
         m_strip->release();
     setAcceptDrops(!running);
+}
+
+QStringList MainWindow::offeredActions() const
+{
+    QList<const QAction *> cancels;
+    for (const Workflow *workflow : std::as_const(m_workflows))
+        cancels.append(workflow->cancelAction());
+    QStringList offered;
+    for (const QMenu *menu : {m_meshMenu, m_analyseMenu})
+        for (const QAction *action : menu->actions())
+            if (!action->isSeparator() && !cancels.contains(action))
+                offered.append(action->text());
+    return offered;
 }
 
 QString MainWindow::statusCounts() const

@@ -221,6 +221,24 @@ private slots:
         QVERIFY(!dResolution->suffix().trimmed().isEmpty());
     }
 
+    // About lists the Mesh and Analyse actions: nothing that no menu offers.
+    void aboutNamesWhatTheMenusOffer()
+    {
+        const QStringList offered = m_window->offeredActions();
+        QVERIFY(!offered.isEmpty());
+        const QString about = aboutText(offered);
+        bool hybridOffered = false;
+        for (QString text : offered) {
+            text.remove(QLatin1Char('&'));
+            text.remove(QChar(0x2026));
+            QVERIFY2(about.contains(text), qPrintable(text));
+            hybridOffered |= text.contains(QLatin1String("hybrid"), Qt::CaseInsensitive);
+            QVERIFY(!text.startsWith(QLatin1String("Cancel")));
+        }
+        QVERIFY(about.contains(QLatin1String("Tetrahedralise")));
+        QCOMPARE(about.contains(QLatin1String("hybrid"), Qt::CaseInsensitive), hybridOffered);
+    }
+
     // A validity problem's message knows its place: clicking it flies both views there.
     void validityMessageFliesTheViews()
     {
