@@ -157,6 +157,19 @@ private slots:
         QVERIFY(!m_window->workbench()->inputMarker()->isVisible());
     }
 
+    void histogramBarTellsItsCounts()
+    {
+        const auto &outcome = m_window->remeshWorkflow()->outcome();
+        QVERIFY(outcome);
+        HistogramChart *chart = m_window->remeshWorkflow()->comparisonTable()->qualityChart();
+        QVERIFY(chart->binCount() > 0);
+        const int bin = 0; // the worst quality
+        const std::size_t count = outcome->comparison.outputQuality.counts()[0];
+        const QString tip = chart->barToolTip(bin);
+        QVERIFY2(tip.contains(QStringLiteral("%1 triangle").arg(count)), qPrintable(tip));
+        QVERIFY(chart->minimumHeight() >= 200);
+    }
+
     void openAsksBeforeAnUnsavedRemeshGoes()
     {
         QVERIFY(m_window->remeshWorkflow()->outcome());
