@@ -275,6 +275,33 @@ private slots:
         QVERIFY(saveWindowScreenshot(m_window.get(), kShots + "/defects_validity_click.png"));
     }
 
+    void frenchReachesQtButtonsAndCoordinates()
+    {
+        QVERIFY(QFile::exists(QLibraryInfo::path(QLibraryInfo::TranslationsPath)
+                              + QStringLiteral("/qtbase_fr.qm")));
+        QCOMPARE(installTranslations(QStringLiteral("fr")), QStringLiteral("fr"));
+        {
+            RemeshDialog dialog(1000.0);
+            auto *box = dialog.findChild<QDialogButtonBox *>();
+            QVERIFY(box);
+            QCOMPARE(box->button(QDialogButtonBox::Cancel)->text(), QStringLiteral("Annuler"));
+        }
+        {
+            QFileDialog dialog(m_window.get());
+            dialog.setOption(QFileDialog::DontUseNativeDialog);
+            auto *box = dialog.findChild<QDialogButtonBox *>();
+            QVERIFY(box);
+            QCOMPARE(box->button(QDialogButtonBox::Cancel)->text(), QStringLiteral("Annuler"));
+            QVERIFY2(box->button(QDialogButtonBox::Open)->text().contains(QLatin1String("Ouvrir")),
+                     qPrintable(box->button(QDialogButtonBox::Open)->text()));
+        }
+        const QString position = LedgerTableModel::positionText(Vec3(140.0, 3302.3, -12.5));
+        QVERIFY2(position.contains(QLatin1String("140,0; ")), qPrintable(position));
+        QCOMPARE(position.count(QLatin1Char(';')), 2);
+        installTranslations(QStringLiteral("en"));
+        QLocale::setDefault(QLocale::c());
+    }
+
 private:
     bool open(const QString &path = QString())
     {
