@@ -20,7 +20,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Remeshing and meshing of 3D structural models: conformal surface remeshing with restricted Voronoi diagrams, complexity measures and TetGen comparison meshes, after J. Pellerin&apos;s PhD thesis.</source>
+        <source>Conformal remeshing and analysis of 3D structural models, after J. Pellerin&apos;s PhD thesis. The menus offer:</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -376,6 +376,10 @@ per cell</source>
         <source>Could not export the complexity cells</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Complexity analysis cancelled: no result, the model is unchanged</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::FeatureLegend</name>
@@ -427,6 +431,17 @@ per cell</source>
     </message>
     <message>
         <source>Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %Ln triangle(s), %2 %</source>
+        <translation>
+            <numerusform>%1: %Ln triangle, %2 %</numerusform>
+            <numerusform>%1: %Ln triangles, %2 %</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>[%1, %2)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -950,6 +965,11 @@ angle (°)</source>
         <source>Location</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1
+Click to show it in the views</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::OpenModelController</name>
@@ -1418,6 +1438,14 @@ angle (°)</source>
         <source>Could not save the remeshed model</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Remeshing cancelled: the previous result, if any, is kept</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The remeshed model has not been saved.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::StudyWindow</name>
@@ -1730,6 +1758,17 @@ angle (°)</source>
     </message>
     <message>
         <source>Tetrahedralisation cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::Workbench</name>
+    <message>
+        <source>Unsaved Result</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 Save it before it is replaced?</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -20,8 +20,8 @@
         <translation>À propos de StrataMesh</translation>
     </message>
     <message>
-        <source>Remeshing and meshing of 3D structural models: conformal surface remeshing with restricted Voronoi diagrams, complexity measures and TetGen comparison meshes, after J. Pellerin&apos;s PhD thesis.</source>
-        <translation>Remaillage et maillage de modèles structuraux 3D : remaillage conforme des surfaces par diagrammes de Voronoï restreints, mesures de complexité et maillages de comparaison TetGen, d&apos;après la thèse de doctorat de J. Pellerin.</translation>
+        <source>Conformal remeshing and analysis of 3D structural models, after J. Pellerin&apos;s PhD thesis. The menus offer:</source>
+        <translation>Remaillage conforme et analyse de modèles structuraux 3D, d&apos;après la thèse de doctorat de J. Pellerin. Les menus proposent :</translation>
     </message>
 </context>
 <context>
@@ -377,6 +377,10 @@ par cellule</translation>
         <source>Could not export the complexity cells</source>
         <translation>Impossible d&apos;exporter les cellules de complexité</translation>
     </message>
+    <message>
+        <source>Complexity analysis cancelled: no result, the model is unchanged</source>
+        <translation>Analyse de complexité annulée : aucun résultat, le modèle est inchangé</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::FeatureLegend</name>
@@ -429,6 +433,17 @@ par cellule</translation>
     <message>
         <source>Output</source>
         <translation>Sortie</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %Ln triangle(s), %2 %</source>
+        <translation>
+            <numerusform>%1 : %Ln triangle, %2 %</numerusform>
+            <numerusform>%1 : %Ln triangles, %2 %</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>[%1, %2)</source>
+        <translation>[%1 ; %2[</translation>
     </message>
 </context>
 <context>
@@ -952,6 +967,12 @@ min. (°)</translation>
         <source>Location</source>
         <translation>Emplacement</translation>
     </message>
+    <message>
+        <source>%1
+Click to show it in the views</source>
+        <translation>%1
+Cliquer pour le montrer dans les vues</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::OpenModelController</name>
@@ -1420,6 +1441,14 @@ min. (°)</translation>
         <source>Could not save the remeshed model</source>
         <translation>Impossible d&apos;enregistrer le modèle remaillé</translation>
     </message>
+    <message>
+        <source>Remeshing cancelled: the previous result, if any, is kept</source>
+        <translation>Remaillage annulé : le résultat précédent, s&apos;il existe, est conservé</translation>
+    </message>
+    <message>
+        <source>The remeshed model has not been saved.</source>
+        <translation>Le modèle remaillé n&apos;a pas été enregistré.</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::StudyWindow</name>
@@ -1734,6 +1763,17 @@ min. (°)</translation>
     <message>
         <source>Tetrahedralisation cancelled</source>
         <translation>Tétraédrisation annulée</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::Workbench</name>
+    <message>
+        <source>Unsaved Result</source>
+        <translation>Résultat non enregistré</translation>
+    </message>
+    <message>
+        <source>%1 Save it before it is replaced?</source>
+        <translation>%1 L&apos;enregistrer avant qu&apos;il ne soit remplacé ?</translation>
     </message>
 </context>
 <context>

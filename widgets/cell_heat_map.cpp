@@ -50,7 +50,10 @@ CellHeatMap::CellHeatMap(vtkRenderer *renderer)
     m_scalarBar->SetLabelFormat("%.0f");
     m_scalarBar->SetMaximumWidthInPixels(90);
     m_scalarBar->SetMaximumHeightInPixels(320);
-    m_scalarBar->SetPosition(0.90, 0.08);
+    // Labels on the left of the bar, which sits against the right edge: a narrow view cuts
+    // nothing.
+    m_scalarBar->SetTextPositionToPrecedeScalarBar();
+    m_scalarBar->SetPosition(0.86, 0.08);
     m_scalarBar->SetWidth(0.08);
     m_scalarBar->SetHeight(0.5);
     m_scalarBar->UnconstrainedFontSizeOn();

@@ -5,6 +5,7 @@
 #include <QBarSet>
 #include <QChart>
 #include <QLocale>
+#include <QToolTip>
 #include <QValueAxis>
 
 #include <algorithm>
@@ -17,7 +18,8 @@ HistogramChart::HistogramChart(QWidget *parent) : QChartView(new QChart, parent)
     chart()->legend()->setAlignment(Qt::AlignTop);
     chart()->setMargins(QMargins(2, 2, 2, 2));
     chart()->setBackgroundRoundness(0);
-    setMinimumHeight(150);
+    // Room for the rotated bin labels: a shorter chart cuts them to an ellipsis.
+    setMinimumHeight(220);
 }
 
 void HistogramChart::setHistograms(const QString &title, const std::optional<Histogram> &input,
@@ -37,8 +39,13 @@ void HistogramChart::setHistograms(const QString &title, const std::optional<His
         f.setPointSizeF(f.pointSizeF() * 0.9);
         return f;
     }());
+    m_inputHistogram.reset();
+    m_outputHistogram.reset();
     if (!input || (output && input->edges() != output->edges()))
         return;
+    m_inputHistogram = input;
+    m_outputHistogram = output;
+    m_decimals = decimals;
     m_binCount = int(input->binCount());
     m_input = new QBarSet(m_inputName.isEmpty() ? tr("Input") : m_inputName);
     m_input->setColor(QColor(150, 150, 160));
@@ -62,6 +69,12 @@ void HistogramChart::setHistograms(const QString &title, const std::optional<His
     if (m_output)
         series->append(m_output);
     series->setBarWidth(0.9);
+    connect(series, &QBarSeries::hovered, this, [this](bool status, int bin, QBarSet *) {
+        if (status)
+            QToolTip::showText(QCursor::pos(), barToolTip(bin), this);
+        else
+            QToolTip::hideText();
+    });
     c->addSeries(series);
     auto *x = new QBarCategoryAxis;
     x->append(labels);
@@ -85,6 +98,28 @@ void HistogramChart::setSeriesNames(const QString &input, const QString &output)
 {
     m_inputName = input;
     m_outputName = output;
+}
+
+QString HistogramChart::barToolTip(int bin) const
+{
+    if (!m_inputHistogram || bin < 0 || bin >= m_binCount)
+        return {};
+    const QLocale locale;
+    const auto &edges = m_inputHistogram->edges();
+    const std::size_t b = std::size_t(bin);
+    const auto line = [&](const QString &name, const Histogram &h) {
+        return tr("%1: %Ln triangle(s), %2 %", nullptr, int(h.counts()[b]))
+            .arg(name, locale.toString(100.0 * h.fraction(b), 'f', 2));
+    };
+    QString tip = tr("[%1, %2)")
+                      .arg(locale.toString(edges[b], 'f', m_decimals),
+                           locale.toString(edges[b + 1], 'f', m_decimals));
+    tip += QLatin1Char('\n')
+           + line(m_inputName.isEmpty() ? tr("Input") : m_inputName, *m_inputHistogram);
+    if (m_outputHistogram)
+        tip += QLatin1Char('\n')
+               + line(m_outputName.isEmpty() ? tr("Output") : m_outputName, *m_outputHistogram);
+    return tip;
 }
 
 double HistogramChart::inputPercent(int bin) const

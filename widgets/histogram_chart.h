@@ -30,10 +30,16 @@ public:
     // Height of a bar in %, for tests; -1 out of range.
     double inputPercent(int bin) const;
     double outputPercent(int bin) const;
+    // What hovering a bar shows: the bin's range and both counts, so that the worst bins,
+    // too thin to see as bars, can still be read.
+    QString barToolTip(int bin) const;
 
 private:
     QBarSet *m_input = nullptr;
     QBarSet *m_output = nullptr;
+    std::optional<Histogram> m_inputHistogram;
+    std::optional<Histogram> m_outputHistogram;
+    int m_decimals = 0;
     int m_binCount = 0;
     QString m_inputName;
     QString m_outputName;

@@ -177,7 +177,8 @@ QString LedgerTableModel::sizeText(const LedgerRecord &record)
 QString LedgerTableModel::positionText(const Vec3 &p)
 {
     const QLocale locale;
-    return QStringLiteral("%1, %2, %3")
+    // Semicolons: with a decimal comma, "140,0, 3 302,3" would read as four numbers.
+    return QStringLiteral("(%1; %2; %3)")
         .arg(locale.toString(p.x(), 'f', 1), locale.toString(p.y(), 'f', 1),
              locale.toString(p.z(), 'f', 1));
 }

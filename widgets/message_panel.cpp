@@ -64,6 +64,11 @@ MessagePanel::MessagePanel(QWidget *parent) : QWidget(parent), m_tree(new QTreeW
     m_tree->header()->setSectionResizeMode(SeverityColumn, QHeaderView::ResizeToContents);
     m_tree->header()->setSectionResizeMode(TextColumn, QHeaderView::Stretch);
     m_tree->header()->setSectionResizeMode(LocationColumn, QHeaderView::ResizeToContents);
+    const auto activated = [this](QTreeWidgetItem *item) {
+        emit messageActivated(item->data(0, kMessageRole).value<Message>());
+    };
+    connect(m_tree, &QTreeWidget::itemClicked, this, activated);
+    connect(m_tree, &QTreeWidget::itemActivated, this, activated);
     retranslate();
 }
 
@@ -94,6 +99,8 @@ void MessagePanel::addMessage(const Message &message)
     item->setToolTip(TextColumn, message.text);
     item->setText(LocationColumn, formatLocation(message));
     item->setToolTip(LocationColumn, message.file);
+    if (message.position)
+        item->setToolTip(TextColumn, tr("%1\nClick to show it in the views").arg(message.text));
     m_tree->addTopLevelItem(item);
     m_tree->scrollToItem(item);
     emit countChanged(count());
@@ -122,6 +129,14 @@ Message MessagePanel::message(int row) const
 {
     const QTreeWidgetItem *item = m_tree->topLevelItem(row);
     return item ? item->data(0, kMessageRole).value<Message>() : Message{};
+}
+
+void MessagePanel::activate(int row)
+{
+    if (QTreeWidgetItem *item = m_tree->topLevelItem(row)) {
+        m_tree->setCurrentItem(item);
+        emit messageActivated(item->data(0, kMessageRole).value<Message>());
+    }
 }
 
 QString MessagePanel::cellText(int row, Column column) const

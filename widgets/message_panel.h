@@ -21,11 +21,15 @@ public:
     int count() const;
     int count(Message::Severity severity) const;
     Message message(int row) const;
+    // As a click on the row does.
+    void activate(int row);
     // The text shown in a cell, as a user reads it (for tests and copy).
     QString cellText(int row, Column column) const;
 
 signals:
     void countChanged(int count);
+    // The user clicked or activated a message (Enter, double-click).
+    void messageActivated(const stratamesh::Message &message);
 
 private:
     void retranslate();

@@ -211,6 +211,20 @@ void VtkViewWidget::centreOn(const double point[3])
     m_renderer->ResetCameraClippingRange();
 }
 
+void VtkViewWidget::flyTo(const double point[3], double distance)
+{
+    centreOn(point);
+    vtkCamera *camera = m_renderer->GetActiveCamera();
+    // vtkCamera::SetDistance would move the focal point: the position moves instead.
+    if (distance > 0.0 && camera->GetDistance() > distance) {
+        double direction[3];
+        camera->GetDirectionOfProjection(direction);
+        camera->SetPosition(point[0] - distance * direction[0], point[1] - distance * direction[1],
+                            point[2] - distance * direction[2]);
+    }
+    m_renderer->ResetCameraClippingRange();
+}
+
 void VtkViewWidget::resetCamera(const double bounds[6])
 {
     vtkCamera *camera = m_renderer->GetActiveCamera();

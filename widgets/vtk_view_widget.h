@@ -39,6 +39,9 @@ public:
     // Keeps the view direction and distance and moves the camera so that `point` is in the
     // centre (a ledger record, a validity problem); does not render.
     void centreOn(const double point[3]);
+    // The same view direction, `point` in the centre, and the camera no farther than `distance`
+    // from it: close enough to see the spot, with its surroundings; does not render.
+    void flyTo(const double point[3], double distance);
     // Schedules a repaint; VTK only ever renders inside paintGL.
     void render();
 

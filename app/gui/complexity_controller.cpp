@@ -76,7 +76,10 @@ void ComplexityController::onFinished()
         run = future.result();
     else
         run.error = {Message::Severity::Error,
-                     tr("The complexity analysis stopped without a result"), QString(), 0};
+                     tr("The complexity analysis stopped without a result"),
+                     QString(),
+                     0,
+                     {}};
     end(run.status, run.error, [&] { emit succeeded(run.outcome); });
 }
 

@@ -180,6 +180,9 @@ void ComplexityWorkflow::onFailed(const Message &error)
 void ComplexityWorkflow::onCancelled()
 {
     m_cancel->setEnabled(false);
+    Message cancelled;
+    cancelled.text = tr("Complexity analysis cancelled: no result, the model is unchanged");
+    m_bench.addMessage(cancelled);
     m_bench.setStatus(tr("Complexity analysis cancelled"));
 }
 

@@ -7,9 +7,12 @@ namespace stratamesh {
 Message errorMessage(const std::exception &e, const QString &file)
 {
     if (const auto *f = dynamic_cast<const FileError *>(&e))
-        return {Message::Severity::Error, QString::fromStdString(f->cause()),
-                QString::fromStdString(f->file()), f->line()};
-    return {Message::Severity::Error, QString::fromStdString(e.what()), file, 0};
+        return {Message::Severity::Error,
+                QString::fromStdString(f->cause()),
+                QString::fromStdString(f->file()),
+                f->line(),
+                {}};
+    return {Message::Severity::Error, QString::fromStdString(e.what()), file, 0, {}};
 }
 
 } // namespace stratamesh

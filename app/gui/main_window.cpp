@@ -22,6 +22,7 @@
 #include <QLocale>
 #include <QMenuBar>
 #include <QMimeData>
+#include <QScrollArea>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -53,6 +54,10 @@ MainWindow::MainWindow(QWidget *parent)
     m_tetmesh = add(new TetmeshWorkflow(*m_bench, *m_remesh, this));
     m_hybrid = add(new HybridWorkflow(*m_bench, *m_remesh, *m_tetmesh, this));
     connect(m_open, &OpenWorkflow::opened, this, &MainWindow::showModel);
+    // The input view halves beside the output: the heat map's colour bar would be cut there,
+    // and the cells were measured on the input only. The Complexity dock shows them again.
+    connect(m_remesh, &RemeshWorkflow::outputReplaced, m_complexity,
+            [this] { m_complexity->setHeatMapVisible(false); });
 
     createActions();
     createMenus();
@@ -74,6 +79,7 @@ template <class W>
 W *MainWindow::add(W *workflow)
 {
     m_workflows.append(workflow);
+    m_bench->addWorkflow(workflow);
     if (WorkflowJob *job = workflow->job())
         m_bench->addJob(job);
     connect(workflow, &Workflow::busyChanged, this, &MainWindow::updateBusy);
@@ -128,7 +134,8 @@ void MainWindow::createActions()
 
     m_about = new QAction(this);
     m_about->setMenuRole(QAction::AboutRole);
-    connect(m_about, &QAction::triggered, this, [this] { showAboutDialog(this); });
+    connect(m_about, &QAction::triggered, this,
+            [this] { showAboutDialog(this, offeredActions()); });
     m_aboutQt = new QAction(this);
     m_aboutQt->setMenuRole(QAction::AboutQtRole);
     connect(m_aboutQt, &QAction::triggered, qApp, &QApplication::aboutQt);
@@ -174,6 +181,21 @@ void MainWindow::createMenus()
     m_toolBar->addAction(m_resetCamera);
 }
 
+namespace {
+
+// A dock's panel scrolls rather than forcing its minimum height on the window: stacked docks
+// (Input vs Output above Complexity) would otherwise make the window taller than the screen.
+void makeScrollable(QDockWidget *dock)
+{
+    auto *scroll = new QScrollArea(dock);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setWidget(dock->widget());
+    dock->setWidget(scroll);
+}
+
+} // namespace
+
 // The reviews of a result share the right-hand tabs; lists of records go below, beside Messages.
 void MainWindow::placeDocks()
 {
@@ -196,6 +218,8 @@ void MainWindow::placeDocks()
                 addDockWidget(Qt::RightDockWidgetArea, dock.dock);
                 break;
             }
+            if (dock.place != Workflow::DockPlace::WithMessages)
+                makeScrollable(dock.dock);
             dock.dock->hide();
             m_viewMenu->addAction(dock.dock->toggleViewAction());
         }
@@ -305,6 +329,19 @@ void MainWindow::updateBusy()
     else
         m_strip->release();
     setAcceptDrops(!running);
+}
+
+QStringList MainWindow::offeredActions() const
+{
+    QList<const QAction *> cancels;
+    for (const Workflow *workflow : std::as_const(m_workflows))
+        cancels.append(workflow->cancelAction());
+    QStringList offered;
+    for (const QMenu *menu : {m_meshMenu, m_analyseMenu})
+        for (const QAction *action : menu->actions())
+            if (!action->isSeparator() && !cancels.contains(action))
+                offered.append(action->text());
+    return offered;
 }
 
 QString MainWindow::statusCounts() const

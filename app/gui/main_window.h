@@ -49,6 +49,9 @@ public:
     QAction *showBoxAction() const { return m_showBox; }
     QAction *showEdgesAction() const { return m_showEdges; }
     QString statusCounts() const;
+    Workbench *workbench() const { return m_bench.get(); }
+    // What Help > About lists: the Mesh and Analyse actions, but the Cancels.
+    QStringList offeredActions() const;
 
     OpenWorkflow *openWorkflow() const { return m_open; }
     StudyWorkflow *studyWorkflow() const { return m_study; }

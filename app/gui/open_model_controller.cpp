@@ -118,8 +118,8 @@ void OpenModelController::onFinished()
     if (future.resultCount() > 0)
         result = future.result();
     else
-        result.error = {Message::Severity::Error, tr("Loading stopped without a result"), QString(),
-                        0};
+        result.error = {
+            Message::Severity::Error, tr("Loading stopped without a result"), QString(), 0, {}};
     const RunStatus status = result.ok          ? RunStatus::Done
                              : result.cancelled ? RunStatus::Cancelled
                                                 : RunStatus::Failed;

@@ -63,14 +63,17 @@ void OpenWorkflow::enableActions(bool busy)
     m_openSample->setEnabled(!busy);
 }
 
+// What was made of the shown model goes with it: an unsaved result is offered for saving first.
 void OpenWorkflow::openFile(const QString &path)
 {
-    m_controller->openFile(path);
+    if (m_bench.mayDiscardWork())
+        m_controller->openFile(path);
 }
 
 void OpenWorkflow::openSample()
 {
-    m_controller->openSample();
+    if (m_bench.mayDiscardWork())
+        m_controller->openSample();
 }
 
 void OpenWorkflow::chooseFile()

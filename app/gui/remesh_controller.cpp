@@ -83,8 +83,8 @@ void RemeshController::onFinished()
     if (future.resultCount() > 0)
         run = future.result();
     else
-        run.error = {Message::Severity::Error, tr("Remeshing stopped without a result"), QString(),
-                     0};
+        run.error = {
+            Message::Severity::Error, tr("Remeshing stopped without a result"), QString(), 0, {}};
     end(run.status, run.error, [&] { emit succeeded(run.outcome); });
 }
 

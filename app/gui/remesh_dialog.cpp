@@ -63,6 +63,7 @@ RemeshDialog::RemeshDialog(double diagonal, const ParamTable<RemeshParams> &tabl
     layout->addWidget(buttons);
 
     connect(m_bySites, &QRadioButton::toggled, this, &RemeshDialog::updateEnabled);
+    connect(sites, &QSpinBox::valueChanged, this, &RemeshDialog::updateEstimate);
     updateEnabled();
 }
 
@@ -90,10 +91,26 @@ void RemeshDialog::setParams(const RemeshParams &p)
     updateEnabled();
 }
 
+void RemeshDialog::setModelArea(double area)
+{
+    m_area = area;
+    updateEstimate();
+}
+
+void RemeshDialog::updateEstimate()
+{
+    if (!m_bySites->isChecked() || m_area <= 0.0)
+        return;
+    const double length = edgeLengthForSites(m_area, int(paramFieldValue(m_sites)));
+    if (length > 0.0)
+        setParamFieldValue(m_edgeLength, length);
+}
+
 void RemeshDialog::updateEnabled()
 {
     m_sites->setEnabled(m_bySites->isChecked());
     m_edgeLength->setEnabled(m_byLength->isChecked());
+    updateEstimate();
 }
 
 } // namespace stratamesh

@@ -23,17 +23,22 @@ public:
 
     RemeshParams params() const;
     void setParams(const RemeshParams &params);
+    // The model's surface area (core modelArea()): while the resolution is a number of sites,
+    // the greyed edge length shows what that number gives on this model.
+    void setModelArea(double area);
 
     static constexpr int kDefaultSites = 5000;
 
 private:
     void updateEnabled();
+    void updateEstimate();
 
     ParamFields<RemeshParams> m_fields;
     QRadioButton *m_bySites;
     QRadioButton *m_byLength;
     QWidget *m_sites;
     QWidget *m_edgeLength;
+    double m_area = 0.0;
 };
 
 } // namespace stratamesh

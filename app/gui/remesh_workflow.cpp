@@ -34,7 +34,6 @@ namespace stratamesh {
 
 RemeshWorkflow::RemeshWorkflow(Workbench &bench, QObject *parent)
     : Workflow(bench, parent), m_controller(new RemeshController(this)),
-      m_marker(std::make_unique<PositionMarker>(bench.outputView()->renderer())),
       m_ledger(new LedgerPanel(bench.window())), m_ledgerDock(new QDockWidget(bench.window())),
       m_comparison(new ComparisonTable(bench.window())),
       m_comparisonDock(new QDockWidget(bench.window())), m_remesh(new QAction(this)),
@@ -121,7 +120,7 @@ void RemeshWorkflow::retranslate()
 void RemeshWorkflow::clear()
 {
     m_outcome.reset();
-    m_marker->hide();
+    m_bench.hidePosition();
     m_bench.outputScene()->setModel(nullptr);
     m_ledger->setLedger(nullptr);
     m_comparison->setComparison(std::nullopt);
@@ -143,6 +142,7 @@ void RemeshWorkflow::remesh()
     if (!m_bench.model() || m_bench.isBusy())
         return;
     RemeshDialog dialog(m_bench.inputScene()->diagonal(), m_bench.window());
+    dialog.setModelArea(modelArea(*m_bench.model()));
     if (m_lastParams.sites > 0 || m_lastParams.edgeLength > 0.0)
         dialog.setParams(m_lastParams);
     if (dialog.exec() != QDialog::Accepted)
@@ -168,10 +168,11 @@ void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
 {
     emit outputReplaced();
     m_outcome = outcome;
+    m_saved = false;
     m_cancel->setEnabled(false);
     ModelScene *input = m_bench.inputScene();
     ModelScene *output = m_bench.outputScene();
-    m_marker->hide();
+    m_bench.hidePosition();
     output->setBoxVisible(input->boxVisible());
     output->setEdgesVisible(input->edgesVisible());
     output->setModel(outcome.output);
@@ -230,6 +231,9 @@ void RemeshWorkflow::onFailed(const Message &error)
 void RemeshWorkflow::onCancelled()
 {
     m_cancel->setEnabled(false);
+    Message cancelled;
+    cancelled.text = tr("Remeshing cancelled: the previous result, if any, is kept");
+    m_bench.addMessage(cancelled);
     m_bench.setStatus(tr("Remeshing cancelled"));
 }
 
@@ -247,32 +251,40 @@ void RemeshWorkflow::updateViewTitles()
                         locale.toString(qulonglong(m_outcome->output->triangleCount()))));
 }
 
+PositionMarker *RemeshWorkflow::marker() const
+{
+    return m_bench.outputMarker();
+}
+
 void RemeshWorkflow::showLedgerRecord(int recordIndex)
 {
     const LedgerRecord *record =
         m_outcome && recordIndex >= 0 && recordIndex < int(m_outcome->ledger->size())
             ? &(*m_outcome->ledger)[std::size_t(recordIndex)]
             : nullptr;
-    VtkViewWidget *outputView = m_bench.outputView();
     if (!record) {
-        m_marker->hide();
-        outputView->render();
+        m_bench.hidePosition();
         return;
     }
-    // Big enough to be found at the whole-model zoom, never hiding the change itself entirely.
-    m_marker->show(record->position,
-                   std::max(0.015 * m_bench.outputScene()->diagonal(), 0.5 * record->size));
-    // The views share one camera: centred on the record in both.
-    const double centre[3] = {record->position.x(), record->position.y(), record->position.z()};
-    m_bench.inputView()->centreOn(centre);
-    outputView->renderer()->ResetCameraClippingRange();
-    m_bench.render();
+    // A distance or a length hints at how large the change is; an area is no radius.
+    const bool isLength = record->sizeMeaning == "distance" || record->sizeMeaning == "length";
+    m_bench.showPosition(record->position, isLength ? 0.5 * record->size : 0.0);
 }
 
-void RemeshWorkflow::chooseFile()
+QString RemeshWorkflow::unsavedWork() const
+{
+    return m_outcome && !m_saved ? tr("The remeshed model has not been saved.") : QString();
+}
+
+bool RemeshWorkflow::saveUnsavedWork()
+{
+    return chooseFile();
+}
+
+bool RemeshWorkflow::chooseFile()
 {
     if (!m_outcome)
-        return;
+        return false;
     QSettings settings;
     const QString dir = settings.value(QStringLiteral("lastDirectory")).toString();
     QString selected;
@@ -280,11 +292,11 @@ void RemeshWorkflow::chooseFile()
         m_bench.window(), tr("Save Remeshed Model"), dir,
         QString::fromStdString(fileDialogFilter(FormatUse::WriteModel, {}, {})), &selected);
     if (path.isEmpty())
-        return;
+        return false;
     path = QString::fromStdString(
         withFormatExtension(path.toStdString(), FormatUse::WriteModel, selected.toStdString()));
     settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
-    save(path);
+    return save(path);
 }
 
 bool RemeshWorkflow::save(const QString &path)
@@ -302,6 +314,7 @@ bool RemeshWorkflow::save(const QString &path)
             exportModel(*m_outcome->output, temporary);
         });
         plan.commit();
+        m_saved = true;
         message.text = tr("Remeshed model saved");
         m_bench.addMessage(message);
         m_bench.setStatus(tr("Saved %1").arg(QFileInfo(path).fileName()));

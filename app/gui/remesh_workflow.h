@@ -28,7 +28,8 @@ public:
     const std::optional<RemeshOutcome> &outcome() const { return m_outcome; }
     LedgerPanel *ledgerPanel() const { return m_ledger; }
     ComparisonTable *comparisonTable() const { return m_comparison; }
-    PositionMarker *marker() const { return m_marker.get(); }
+    // The record's mark in the output view (Workbench marks the input view too).
+    PositionMarker *marker() const;
     QAction *remeshAction() const { return m_remesh; }
     QAction *saveAction() const { return m_save; }
 
@@ -40,16 +41,19 @@ public:
     void retranslate() override;
     void clear() override;
     void enableActions(bool busy) override;
+    QString unsavedWork() const override;
+    bool saveUnsavedWork() override;
 
 public slots:
     // Opens the parameter dialog, then remeshes the shown model.
     void remesh();
     // Remeshes the shown model with these parameters (no dialog); false when it cannot start.
     bool start(const RemeshParams &params);
-    void chooseFile();
+    // False when nothing was saved.
+    bool chooseFile();
     // Writes the remeshed model (exportModel: format from the extension); errors go to messages.
     bool save(const QString &path);
-    // Marks a ledger record in the output view and centres the camera on it (-1: no mark).
+    // Marks a ledger record in both views and flies the camera to it (-1: no mark).
     void showLedgerRecord(int recordIndex);
 
 signals:
@@ -66,7 +70,7 @@ private:
     RemeshController *m_controller;
     std::optional<RemeshOutcome> m_outcome;
     RemeshParams m_lastParams;
-    std::unique_ptr<PositionMarker> m_marker;
+    bool m_saved = false; // the shown outcome has been written to a file
     LedgerPanel *m_ledger;
     QDockWidget *m_ledgerDock;
     ComparisonTable *m_comparison;

@@ -84,8 +84,11 @@ void TetmeshController::onFinished()
     if (future.resultCount() > 0)
         run = future.result();
     else
-        run.error = {Message::Severity::Error, tr("Tetrahedralisation stopped without a result"),
-                     QString(), 0};
+        run.error = {Message::Severity::Error,
+                     tr("Tetrahedralisation stopped without a result"),
+                     QString(),
+                     0,
+                     {}};
     end(run.status, run.error, [&] { emit succeeded(run.outcome); });
 }
 

@@ -15,6 +15,7 @@ std::vector<Message> validityMessages(const ValidityReport &report, const QStrin
         m.severity = Message::Severity::Warning;
         m.text = QString::fromStdString(problem.message);
         m.file = file;
+        m.position = problem.position;
         messages.push_back(m);
         ++listed[problem.check];
     }

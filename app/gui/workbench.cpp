@@ -3,14 +3,20 @@
 #include "feature_legend.h"
 #include "message_panel.h"
 #include "model_scene.h"
+#include "position_marker.h"
 #include "progress_strip.h"
 #include "view_pair.h"
 #include "vtk_view_widget.h"
+#include "workflow.h"
 #include "workflow_job.h"
 
+#include <QCoreApplication>
 #include <QDockWidget>
+#include <QMainWindow>
 
 #include <vtkRenderer.h>
+
+#include <algorithm>
 
 namespace stratamesh {
 
@@ -19,8 +25,21 @@ Workbench::Workbench(QMainWindow *window, ViewPair *views, MessagePanel *message
     : m_window(window), m_views(views), m_messages(messages), m_messageDock(messageDock),
       m_strip(strip), m_legend(new FeatureLegend(views->inputView())),
       m_inputScene(std::make_unique<ModelScene>(views->inputView()->renderer())),
-      m_outputScene(std::make_unique<ModelScene>(views->outputView()->renderer()))
+      m_outputScene(std::make_unique<ModelScene>(views->outputView()->renderer())),
+      m_inputMarker(std::make_unique<PositionMarker>(views->inputView()->renderer())),
+      m_outputMarker(std::make_unique<PositionMarker>(views->outputView()->renderer()))
 {
+    // A message that knows where it happened (a validity problem) shows the place.
+    QObject::connect(messages, &MessagePanel::messageActivated, window,
+                     [this](const Message &message) {
+                         if (message.position)
+                             showPosition(*message.position);
+                     });
+    m_ask = [window](const QString &text) {
+        return QMessageBox::question(
+            window, QCoreApplication::translate("stratamesh::Workbench", "Unsaved Result"), text,
+            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    };
 }
 
 Workbench::~Workbench() = default;
@@ -45,6 +64,8 @@ void Workbench::setModel(const LoadedModel &loaded)
     m_displayName = loaded.displayName;
     m_modelPath = loaded.path;
     m_counts = loaded.counts;
+    m_inputMarker->hide();
+    m_outputMarker->hide();
     m_inputScene->setModel(loaded.model);
     updateLegend();
     resetCamera();
@@ -65,6 +86,33 @@ void Workbench::showMessages(bool raise)
 void Workbench::setStatus(const QString &text)
 {
     m_strip->setText(text);
+}
+
+double Workbench::diagonal() const
+{
+    return m_inputScene->diagonal();
+}
+
+void Workbench::showPosition(const Vec3 &position, double radius)
+{
+    const double diagonal = this->diagonal();
+    // Found at the whole-model zoom, yet small beside the model (a record's area or length is
+    // no radius: an unresolved intersection once drew a sphere larger than the model).
+    const double r = std::clamp(radius, 0.01 * diagonal, 0.03 * diagonal);
+    m_inputMarker->show(position, r);
+    m_outputMarker->show(position, r);
+    // The views share one camera: close in on the spot in both, a fifth of the model around it.
+    const double centre[3] = {position.x(), position.y(), position.z()};
+    inputView()->flyTo(centre, 0.4 * diagonal);
+    outputView()->renderer()->ResetCameraClippingRange();
+    render();
+}
+
+void Workbench::hidePosition()
+{
+    m_inputMarker->hide();
+    m_outputMarker->hide();
+    render();
 }
 
 void Workbench::resetCamera()
@@ -90,6 +138,34 @@ void Workbench::updateLegend()
     m_legend->setEntries(m_inputScene->isVisible() ? m_inputScene->legend()
                                                    : std::vector<LegendEntry>{},
                          m_inputScene->boxVisible());
+}
+
+void Workbench::addWorkflow(Workflow *workflow)
+{
+    m_workflows.append(workflow);
+}
+
+bool Workbench::mayDiscardWork()
+{
+    for (Workflow *workflow : std::as_const(m_workflows)) {
+        const QString unsaved = workflow->unsavedWork();
+        if (unsaved.isEmpty())
+            continue;
+        const QString question = QCoreApplication::translate("stratamesh::Workbench",
+                                                             "%1 Save it before it is replaced?")
+                                     .arg(unsaved);
+        switch (m_ask(question)) {
+        case QMessageBox::Save:
+            if (!workflow->saveUnsavedWork())
+                return false;
+            break;
+        case QMessageBox::Discard:
+            break;
+        default:
+            return false;
+        }
+    }
+    return true;
 }
 
 void Workbench::addJob(WorkflowJob *job)

@@ -6,8 +6,10 @@
 #include "loaded_model.h"
 
 #include <QList>
+#include <QMessageBox>
 #include <QString>
 
+#include <functional>
 #include <memory>
 
 class QDockWidget;
@@ -18,9 +20,11 @@ namespace stratamesh {
 class FeatureLegend;
 class MessagePanel;
 class ModelScene;
+class PositionMarker;
 class ProgressStrip;
 class ViewPair;
 class VtkViewWidget;
+class Workflow;
 class WorkflowJob;
 
 class Workbench {
@@ -53,12 +57,29 @@ public:
     void showMessages(bool raise = true);
     void setStatus(const QString &text);
 
+    // Marks a place (a ledger record, a validity problem) in both views and flies the shared
+    // camera to it. The marker is a small fraction of the model's diagonal whatever the record's
+    // own size, so it never hides the model; `radius` > 0 asks for a larger one within that bound.
+    void showPosition(const Vec3 &position, double radius = 0.0);
+    void hidePosition();
+    PositionMarker *inputMarker() const { return m_inputMarker.get(); }
+    PositionMarker *outputMarker() const { return m_outputMarker.get(); }
+    double diagonal() const;
+
     // Frames the input model; the output view shares the camera.
     void resetCamera();
     void render();
     // While tets are drawn in place of the surfaces, the surface legend would describe nothing
     // shown.
     void updateLegend();
+
+    // Before the work shown is replaced (another model opened): each workflow's unsaved result
+    // is offered for saving; false when the user keeps it (Cancel, or a save that failed).
+    bool mayDiscardWork();
+    // Asks Save, Discard or Cancel; tests answer in place of the user.
+    using Ask = std::function<QMessageBox::StandardButton(const QString &text)>;
+    void setAsk(Ask ask) { m_ask = std::move(ask); }
+    void addWorkflow(Workflow *workflow);
 
     // One long run at a time: every workflow's job is registered, and none starts while any runs.
     void addJob(WorkflowJob *job);
@@ -73,10 +94,14 @@ private:
     FeatureLegend *m_legend;
     std::unique_ptr<ModelScene> m_inputScene;
     std::unique_ptr<ModelScene> m_outputScene;
+    std::unique_ptr<PositionMarker> m_inputMarker;
+    std::unique_ptr<PositionMarker> m_outputMarker;
     QString m_displayName;
     QString m_modelPath;
     ModelCounts m_counts;
     QList<WorkflowJob *> m_jobs;
+    QList<Workflow *> m_workflows;
+    Ask m_ask;
 };
 
 } // namespace stratamesh

@@ -40,6 +40,16 @@ void Workflow::clear() {}
 
 void Workflow::enableActions(bool) {}
 
+QString Workflow::unsavedWork() const
+{
+    return {};
+}
+
+bool Workflow::saveUnsavedWork()
+{
+    return true;
+}
+
 bool Workflow::isBusy() const
 {
     return job() && job()->isBusy();

@@ -47,6 +47,12 @@ public:
 
     bool isBusy() const;
 
+    // A result made here that no file holds yet, as one sentence ("The remeshed model has not
+    // been saved."); empty when there is none.
+    virtual QString unsavedWork() const;
+    // Saves it, asking where; false when it was not saved (the user cancelled, or an error).
+    virtual bool saveUnsavedWork();
+
 public slots:
     // Asks the run to stop; finished(false) follows once the worker has returned.
     void cancel();

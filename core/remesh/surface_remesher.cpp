@@ -80,14 +80,6 @@ std::string number(double v)
     return text;
 }
 
-double modelArea(const Model &model)
-{
-    double area = 0.0;
-    for (const Surface &s : model.surfaces)
-        area += surfaceArea(s);
-    return area;
-}
-
 StripCollapse stripsRemoved(const Model &input, double edgeLength, const RemeshParams &params,
                             SimplificationLedger &ledger, Progress &progress)
 {
@@ -194,6 +186,14 @@ int sitesForEdgeLength(double area, double edgeLength)
                          + " allowed; use an edge length of at least "
                          + number(edgeLengthForSites(area, most)));
     return std::max(static_cast<int>(sites.minimum), static_cast<int>(std::lround(n)));
+}
+
+double modelArea(const Model &model)
+{
+    double area = 0.0;
+    for (const Surface &s : model.surfaces)
+        area += surfaceArea(s);
+    return area;
 }
 
 double edgeLengthForSites(double area, int sites)

@@ -111,6 +111,8 @@ inline constexpr double kMaxDResolutionFraction = 0.1;
 int sitesForEdgeLength(double area, double edgeLength);
 // Its inverse: the edge length of a hexagonal packing of `sites` points over `area`.
 double edgeLengthForSites(double area, int sites);
+// The total area of the model's surfaces, which the sites cover (box surfaces included).
+double modelArea(const Model &model);
 
 // Throws InputError on parameters outside their ranges (remeshParamTable()) or that make no
 // sense for this model, on an empty model; Cancelled when cancelled.

@@ -23,6 +23,7 @@
 #include "translations.h"
 #include "vtk_view_widget.h"
 #include "window_screenshot.h"
+#include "workbench.h"
 
 #include <QAction>
 #include <QApplication>
@@ -75,6 +76,8 @@ private slots:
         m_window->resize(1200, 800);
         m_window->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        // Reopening the sample below drops the last result unasked.
+        m_window->workbench()->setAsk([](const QString &) { return QMessageBox::Discard; });
         QVERIFY(!m_window->remeshWorkflow()->remeshAction()->isEnabled()); // nothing to remesh yet
         QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
         m_window->openSample();

@@ -21,6 +21,7 @@
 #include "translations.h"
 #include "vtk_view_widget.h"
 #include "window_screenshot.h"
+#include "workbench.h"
 
 #include <QAction>
 #include <QApplication>
@@ -72,6 +73,8 @@ private slots:
         m_window->resize(1500, 900);
         m_window->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        // Reopening the sample below drops the last result unasked.
+        m_window->workbench()->setAsk([](const QString &) { return QMessageBox::Discard; });
         QVERIFY(!m_window->tetmeshWorkflow()->tetmeshAction()->isEnabled()); // nothing to mesh yet
         QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
         m_window->openSample();

@@ -79,12 +79,13 @@ private slots:
                  QStringLiteral("corner_3, corner_8"));
         QCOMPARE(cell(model, 0, LedgerTableModel::OutputsColumn), QStringLiteral("vertex 41"));
         QCOMPARE(cell(model, 0, LedgerTableModel::SizeColumn), QStringLiteral("12.5 (distance)"));
-        QCOMPARE(cell(model, 0, LedgerTableModel::PositionColumn), QStringLiteral("1.0, 2.0, 3.0"));
+        QCOMPARE(cell(model, 0, LedgerTableModel::PositionColumn),
+                 QStringLiteral("(1.0; 2.0; 3.0)"));
         QCOMPARE(cell(model, 0, LedgerTableModel::NoteColumn),
                  QStringLiteral("note of corner_merge"));
         QCOMPARE(cell(model, 1, LedgerTableModel::SizeColumn), QStringLiteral("80 (length)"));
         QCOMPARE(cell(model, 1, LedgerTableModel::PositionColumn),
-                 QStringLiteral("10.0, 20.0, -30.0"));
+                 QStringLiteral("(10.0; 20.0; -30.0)"));
         QCOMPARE(cell(model, 3, LedgerTableModel::SizeColumn), QStringLiteral("0.25 (area)"));
         QCOMPARE(cell(model, 3, LedgerTableModel::KindColumn),
                  QStringLiteral("Degenerate contact triangle"));
