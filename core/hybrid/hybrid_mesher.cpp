@@ -306,12 +306,20 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     cvtParams.sites = params.sites;
     cvtParams.iterations = params.cvtIterations;
     cvtParams.seed = params.seed;
-    const BoxCvt cvt = runBoxCvt(modelBounds(model), cvtParams, progress);
+    // Each stage its share of the bar (weights: the stage times of modelA1 at 5000 sites), so that
+    // the bar moves through the whole run instead of filling during the CVT.
+    ProgressSteps steps(progress, {65.0, 8.0, 4.0, 1.0, 22.0});
+    BoxCvt cvt;
+    {
+        Progress part = steps.step(0, "Volume CVT");
+        cvt = runBoxCvt(modelBounds(model), cvtParams, part);
+    }
     result.timings.cvtSeconds = since(t);
     t = Clock::now();
+    Progress surfacePart = steps.step(1, "Surface sites");
     const std::vector<Vec3> sites =
         params.surfaceIterations > 0
-            ? optimizeSurfaceSites(model, cvt.sites, params.surfaceIterations, progress).sites
+            ? optimizeSurfaceSites(model, cvt.sites, params.surfaceIterations, surfacePart).sites
             : cvt.sites;
     result.timings.surfaceSitesSeconds = since(t);
 
@@ -321,7 +329,8 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     remeshParams.flips = false;
     remeshParams.smoothingPasses = 0;
     remeshParams.refinementRounds = 0;
-    const RemeshResult remeshed = remeshWithSites(model, sites, remeshParams, progress);
+    Progress remeshPart = steps.step(2, "Surface remesh");
+    const RemeshResult remeshed = remeshWithSites(model, sites, remeshParams, remeshPart);
     const Model &remesh = remeshed.model;
     result.remeshSites = remeshed.siteCount;
     result.remeshValid = remeshed.validity.valid;
@@ -329,6 +338,7 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     result.timings.remeshSeconds = since(t);
 
     t = Clock::now();
+    steps.step(3, "Thesis cells");
     const std::vector<int> pointSite = nearestSites(remesh.vertices, sites);
     result.segmentDual = buildSegmentDualCells(remesh, pointSite, params.cells);
     result.invalidFound = result.segmentDual.rejectedShape;
@@ -338,6 +348,7 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     check.maxQuadWarpDegrees = params.cells.maxQuadWarpDegrees;
     check.regionVolumes = regionVolumes(remesh);
 
+    Progress fillStage = steps.step(4, "Fill and check");
     std::vector<Cell> kept = result.segmentDual.cells;
     std::vector<int> keptRegion = result.segmentDual.region;
     for (int round = 0;; ++round) {
@@ -351,8 +362,12 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
         }
         t = Clock::now();
         Fill fill;
+        // Rounds are few and each shorter than the last: round r gets [1 - 2^-r, 1 - 2^-(r+1)].
+        const double from = 1.0 - std::ldexp(1.0, -round), to = 1.0 - std::ldexp(1.0, -round - 1);
+        Progress roundPart(fillStage, from, from + 0.8 * (to - from));
         fillCavities(remesh, kept, keptRegion, params, round == 0 ? params.cavityPolyPath : "",
-                     fill, progress);
+                     fill, roundPart);
+        fillStage.tick(from + 0.8 * (to - from), "mixed-mesh check");
         result.timings.fillSeconds += since(t);
         result.tetgenOutcome = fill.tetgen.outcome;
         result.repairRounds = round;
