@@ -209,6 +209,7 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
     bool version5 = false;
     bool binary = false;
     int unstructuredLine = 0; // line of DATASET UNSTRUCTURED_GRID, 0 for poly data
+    bool sawPoints = false, inAttributes = false; // POINTS read; in POINT_DATA or CELL_DATA
     std::string text;
     for (int line = 1; std::getline(in, text); ++line) {
         if (line == 1) {
@@ -239,6 +240,7 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
                 unstructuredLine = line;
         } else if (key == "POINTS") {
             counts.points = {scan.count(w, 1, 3, line), line};
+            sawPoints = true;
         } else if (key == "CELLS" || key == "POLYGONS" || key == "LINES" || key == "VERTICES"
                    || key == "TRIANGLE_STRIPS") {
             // Version 5 declares offsets (cells + 1) and connectivity; 4.2 cells and their ids.
@@ -252,6 +254,13 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
             counts.cells = {counts.cells.value < 0 ? n : counts.cells.value + n,
                             counts.cells.line ? counts.cells.line : keyLine};
         } else if (key == "FIELD") {
+            // Field data belongs before POINTS or in an attribute section. VTK 9.1's dataset
+            // readers take one between the geometry sections too, and dereference a null field
+            // when it cannot be read (fuzz_vtk_legacy finding: a SEGV in ReadMeshSimple).
+            if (sawPoints && !inAttributes)
+                throw FileError(path, line,
+                                "FIELD comes after POINTS outside POINT_DATA and CELL_DATA: "
+                                "dataset field data goes before POINTS");
             // VTK reads the name and count with >>, whatever bytes they hold.
             if (w.size() != 3 || printable(text) != text)
                 throw FileError(path, line,
@@ -268,8 +277,10 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
                                 "CELL_DATA comes before the CELLS and CELL_TYPES of the "
                                 "unstructured grid");
             counts.cellData = {scan.count(w, 1, 1, line), line};
+            inAttributes = true;
         } else if (key == "POINT_DATA") {
             counts.pointData = {scan.count(w, 1, 1, line), line};
+            inAttributes = true;
         } else if (key == "LOOKUP_TABLE" && w.size() >= 3) {
             scan.count(w, 2, 4, line);
         } else if (key == "DIMENSIONS" || key == "X_COORDINATES" || key == "Y_COORDINATES"
