@@ -89,8 +89,11 @@ void HybridController::onFinished()
     if (future.resultCount() > 0)
         run = future.result();
     else
-        run.error = {Message::Severity::Error, tr("The hybrid mesher stopped without a result"),
-                     QString(), 0};
+        run.error = {Message::Severity::Error,
+                     tr("The hybrid mesher stopped without a result"),
+                     QString(),
+                     0,
+                     {}};
     end(run.status, run.error, [&] { emit succeeded(run.outcome); });
 }
 

@@ -13,11 +13,17 @@ private slots:
     {
         MessagePanel panel;
         QSignalSpy counts(&panel, &MessagePanel::countChanged);
-        panel.addMessage({Message::Severity::Error, QStringLiteral("expected a number"),
-                          QStringLiteral("/data/models/broken.ml"), 42});
-        panel.addMessage({Message::Severity::Warning, QStringLiteral("surface s1 is not sealed"),
-                          QStringLiteral("/data/models/broken.ml"), 0});
-        panel.addMessage({Message::Severity::Info, QStringLiteral("opened"), QString(), 0});
+        panel.addMessage({Message::Severity::Error,
+                          QStringLiteral("expected a number"),
+                          QStringLiteral("/data/models/broken.ml"),
+                          42,
+                          {}});
+        panel.addMessage({Message::Severity::Warning,
+                          QStringLiteral("surface s1 is not sealed"),
+                          QStringLiteral("/data/models/broken.ml"),
+                          0,
+                          {}});
+        panel.addMessage({Message::Severity::Info, QStringLiteral("opened"), QString(), 0, {}});
         QCOMPARE(panel.count(), 3);
         QCOMPARE(counts.size(), 3);
         QCOMPARE(panel.count(Message::Severity::Error), 1);
