@@ -226,6 +226,19 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
         std::string key = w[0];
         for (char &c : key)
             c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        // An ASCII line of numbers never holds the word FIELD. VTK reads tokens, not lines: after
+        // a number it cannot parse ("7FIELD7") it takes the rest for a FIELD keyword and
+        // dereferences the null field data it fails to read (fuzz_vtk_legacy finding: a SEGV in
+        // vtkPolyDataReader::ReadMeshSimple).
+        if (!binary && !w[0].empty()
+            && (std::isdigit(static_cast<unsigned char>(w[0][0])) || w[0][0] == '-'
+                || w[0][0] == '+' || w[0][0] == '.')) {
+            std::string upper = text;
+            for (char &c : upper)
+                c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+            if (upper.find("FIELD") != std::string::npos)
+                throw FileError(path, line, "a line of numbers holds the word FIELD");
+        }
         for (const char *keyword : keywords)
             if (key.rfind(keyword, 0) == 0 && key != keyword)
                 throw FileError(path, line,
