@@ -938,6 +938,10 @@ angle (°)</source>
         <source>&amp;Analyse</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>

@@ -940,6 +940,10 @@ min. (°)</translation>
         <source>&amp;Analyse</source>
         <translation>A&amp;nalyse</translation>
     </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>É&amp;dition</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>

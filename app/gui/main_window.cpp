@@ -25,6 +25,7 @@
 #include <QScrollArea>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QUndoStack>
 
 #include <utility>
 
@@ -136,6 +137,11 @@ void MainWindow::createActions()
     m_about->setMenuRole(QAction::AboutRole);
     connect(m_about, &QAction::triggered, this,
             [this] { showAboutDialog(this, offeredActions()); });
+    m_undo = m_bench->undoStack()->createUndoAction(this);
+    m_undo->setShortcut(QKeySequence::Undo);
+    m_redo = m_bench->undoStack()->createRedoAction(this);
+    m_redo->setShortcut(QKeySequence::Redo);
+
     m_aboutQt = new QAction(this);
     m_aboutQt->setMenuRole(QAction::AboutQtRole);
     connect(m_aboutQt, &QAction::triggered, qApp, &QApplication::aboutQt);
@@ -152,7 +158,13 @@ void MainWindow::createMenus()
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quit);
 
+    m_editMenu = menuBar()->addMenu(QString());
+    m_editMenu->addAction(m_undo);
+    m_editMenu->addAction(m_redo);
+    fill(m_editMenu, Workflow::Menu::Edit);
+
     m_viewMenu = menuBar()->addMenu(QString());
+    fill(m_viewMenu, Workflow::Menu::View);
     m_viewMenu->addAction(m_showBox);
     m_viewMenu->addAction(m_showEdges);
     m_viewMenu->addSeparator();
@@ -229,6 +241,7 @@ void MainWindow::placeDocks()
 void MainWindow::retranslate()
 {
     m_fileMenu->setTitle(tr("&File"));
+    m_editMenu->setTitle(tr("&Edit"));
     m_viewMenu->setTitle(tr("&View"));
     m_meshMenu->setTitle(tr("&Mesh"));
     m_analyseMenu->setTitle(tr("&Analyse"));

@@ -103,7 +103,10 @@ private:
     QAction *m_resetCamera = nullptr;
     QAction *m_about = nullptr;
     QAction *m_aboutQt = nullptr;
+    QAction *m_undo = nullptr;
+    QAction *m_redo = nullptr;
     QMenu *m_fileMenu = nullptr;
+    QMenu *m_editMenu = nullptr;
     QMenu *m_viewMenu = nullptr;
     QMenu *m_meshMenu = nullptr;
     QMenu *m_analyseMenu = nullptr;

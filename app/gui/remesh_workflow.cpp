@@ -117,9 +117,18 @@ void RemeshWorkflow::retranslate()
     updateViewTitles();
 }
 
+void RemeshWorkflow::setDecisions(const ReviewDecisions &decisions)
+{
+    if (decisions == m_decisions)
+        return;
+    m_decisions = decisions;
+    emit decisionsChanged();
+}
+
 void RemeshWorkflow::clear()
 {
     m_outcome.reset();
+    setDecisions({});
     m_bench.hidePosition();
     m_bench.outputScene()->setModel(nullptr);
     m_ledger->setLedger(nullptr);
@@ -168,6 +177,7 @@ void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
 {
     emit outputReplaced();
     m_outcome = outcome;
+    setDecisions({});
     m_saved = false;
     m_cancel->setEnabled(false);
     ModelScene *input = m_bench.inputScene();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "remesh_outcome.h"
+#include "review_decisions.h"
 #include "workflow.h"
 
 #include <memory>
@@ -30,6 +31,9 @@ public:
     ComparisonTable *comparisonTable() const { return m_comparison; }
     // The record's mark in the output view (Workbench marks the input view too).
     PositionMarker *marker() const;
+    // The review of the shown outcome's ledger (empty for a new remesh).
+    const ReviewDecisions &decisions() const { return m_decisions; }
+    void setDecisions(const ReviewDecisions &decisions);
     QAction *remeshAction() const { return m_remesh; }
     QAction *saveAction() const { return m_save; }
 
@@ -59,6 +63,7 @@ public slots:
 signals:
     // A new remesh replaces the last, before it is shown: what was made of the last one goes.
     void outputReplaced();
+    void decisionsChanged();
 
 private:
     void onStarted();
@@ -70,6 +75,7 @@ private:
     RemeshController *m_controller;
     std::optional<RemeshOutcome> m_outcome;
     RemeshParams m_lastParams;
+    ReviewDecisions m_decisions;
     bool m_saved = false; // the shown outcome has been written to a file
     LedgerPanel *m_ledger;
     QDockWidget *m_ledgerDock;

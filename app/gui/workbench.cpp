@@ -13,6 +13,7 @@
 #include <QCoreApplication>
 #include <QDockWidget>
 #include <QMainWindow>
+#include <QUndoStack>
 
 #include <vtkRenderer.h>
 
@@ -23,7 +24,8 @@ namespace stratamesh {
 Workbench::Workbench(QMainWindow *window, ViewPair *views, MessagePanel *messages,
                      QDockWidget *messageDock, ProgressStrip *strip)
     : m_window(window), m_views(views), m_messages(messages), m_messageDock(messageDock),
-      m_strip(strip), m_legend(new FeatureLegend(views->inputView())),
+      m_strip(strip), m_undo(new QUndoStack(window)),
+      m_legend(new FeatureLegend(views->inputView())),
       m_inputScene(std::make_unique<ModelScene>(views->inputView()->renderer())),
       m_outputScene(std::make_unique<ModelScene>(views->outputView()->renderer())),
       m_inputMarker(std::make_unique<PositionMarker>(views->inputView()->renderer())),
@@ -64,6 +66,8 @@ void Workbench::setModel(const LoadedModel &loaded)
     m_displayName = loaded.displayName;
     m_modelPath = loaded.path;
     m_counts = loaded.counts;
+    // Undoing a choice made on another model would act on what is no longer shown.
+    m_undo->clear();
     m_inputMarker->hide();
     m_outputMarker->hide();
     m_inputScene->setModel(loaded.model);

@@ -14,6 +14,7 @@
 
 class QDockWidget;
 class QMainWindow;
+class QUndoStack;
 
 namespace stratamesh {
 
@@ -44,6 +45,9 @@ public:
     FeatureLegend *legend() const { return m_legend; }
     MessagePanel *messages() const { return m_messages; }
     ProgressStrip *strip() const { return m_strip; }
+    // Edit > Undo/Redo: what the user chose to look at and decided (run shown, visibility,
+    // colouring, review decisions), never the engine's results. Cleared with a new model.
+    QUndoStack *undoStack() const { return m_undo; }
 
     // The open model (nullptr before the first); its file is never overwritten by a save.
     const std::shared_ptr<const Model> &model() const;
@@ -91,6 +95,7 @@ private:
     MessagePanel *m_messages;
     QDockWidget *m_messageDock;
     ProgressStrip *m_strip;
+    QUndoStack *m_undo;
     FeatureLegend *m_legend;
     std::unique_ptr<ModelScene> m_inputScene;
     std::unique_ptr<ModelScene> m_outputScene;

@@ -18,7 +18,7 @@ class WorkflowJob;
 class Workflow : public QObject {
     Q_OBJECT
 public:
-    enum class Menu { File, Mesh, Analyse };
+    enum class Menu { File, Edit, View, Mesh, Analyse };
     // Below the views tabbed with Messages; on the right tabbed with the other reviews of a
     // result; on the right on its own.
     enum class DockPlace { WithMessages, Review, Side };

@@ -183,9 +183,9 @@ private slots:
         QStringList menus;
         for (QAction *action : window.menuBar()->actions())
             menus << action->text();
-        QCOMPARE(menus, (QStringList{QStringLiteral("&Fichier"), QStringLiteral("&Affichage"),
-                                     QStringLiteral("&Maillage"), QStringLiteral("A&nalyse"),
-                                     QStringLiteral("&Aide")}));
+        QCOMPARE(menus, (QStringList{QStringLiteral("&Fichier"), QStringLiteral("É&dition"),
+                                     QStringLiteral("&Affichage"), QStringLiteral("&Maillage"),
+                                     QStringLiteral("A&nalyse"), QStringLiteral("&Aide")}));
         QCOMPARE(window.showBoxAction()->text(), QStringLiteral("Afficher la &boîte"));
     }
 };
