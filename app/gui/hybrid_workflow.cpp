@@ -89,6 +89,8 @@ QList<QAction *> HybridWorkflow::menuActions(Menu menu) const
         return {m_save};
     case Menu::Mesh:
         return {m_separator, m_hybrid, m_cancel};
+    case Menu::Edit:
+    case Menu::View:
     case Menu::Analyse:
         break;
     }

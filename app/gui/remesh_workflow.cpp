@@ -80,6 +80,8 @@ QList<QAction *> RemeshWorkflow::menuActions(Menu menu) const
         return {m_save};
     case Menu::Mesh:
         return {m_remesh, m_cancel};
+    case Menu::Edit:
+    case Menu::View:
     case Menu::Analyse:
         break;
     }

@@ -58,13 +58,12 @@ ParamTable<ComplexityParams> makeTable()
     };
     t.add(cells);
 
-    i = {};
-    i.key = "seed", i.flag = "--seed", i.jsonKey = "seed", i.type = ParamType::Seed;
-    i.minimum = 0, i.maximum = 2147483647, i.valueName = "S", i.jsonString = true;
-    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "Ra&ndom seed:");
-    i.help = QT_TRANSLATE_NOOP("stratamesh::Params",
-                               "Seed of the initial random sites: the same seed gives the same "
-                               "cells.");
+    i = seedParamInfo(
+        2147483647,
+        QT_TRANSLATE_NOOP("stratamesh::Params",
+                          "Seed of the initial random sites: the same seed gives the same "
+                          "cells."));
+    i.jsonString = true;
     t.add(memberParam(&P::seed, i));
 
     i = {};

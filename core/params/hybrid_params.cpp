@@ -63,13 +63,10 @@ ParamTable<HybridParams> makeTable()
                                "centroid of their restricted cell; 0 turns them off.");
     t.add(memberParam(&P::surfaceIterations, i));
 
-    i = {};
-    i.key = "seed", i.flag = "--seed", i.jsonKey = "seed", i.type = ParamType::Seed;
-    i.minimum = 0, i.maximum = 1073741824, i.valueName = "S";
-    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "Ra&ndom seed:");
-    i.help = QT_TRANSLATE_NOOP(
-        "stratamesh::Params",
-        "Seed of the initial random sampling: the same seed gives the same mesh.");
+    i = seedParamInfo(
+        1073741824, QT_TRANSLATE_NOOP(
+                        "stratamesh::Params",
+                        "Seed of the initial random sampling: the same seed gives the same mesh."));
     t.add(memberParam(&P::seed, i));
 
     i = {};

@@ -57,6 +57,9 @@ struct Param {
     std::function<void(P &, const std::vector<double> &)> setList;
 };
 
+// The seed entry of a table (key, flag, JSON key, label): `help` says what the seed reproduces.
+ParamInfo seedParamInfo(double maximum, const char *help);
+
 // Param of a member `field` of P (int, unsigned, uint64, double or bool).
 template <class P, class T>
 Param<P> memberParam(T P::*field, ParamInfo info)

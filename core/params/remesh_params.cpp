@@ -68,13 +68,10 @@ ParamTable<RemeshParams> makeTable()
                                "Iterations of the centroidal Voronoi optimisation of the sites.");
     t.add(memberParam(&P::iterations, i));
 
-    i = {};
-    i.key = "seed", i.flag = "--seed", i.jsonKey = "seed", i.type = ParamType::Seed;
-    i.minimum = 0, i.maximum = 2147483647, i.valueName = "S";
-    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "Ra&ndom seed:");
-    i.help = QT_TRANSLATE_NOOP(
-        "stratamesh::Params",
-        "Seed of the initial random sampling: the same seed gives the same mesh.");
+    i = seedParamInfo(
+        2147483647, QT_TRANSLATE_NOOP(
+                        "stratamesh::Params",
+                        "Seed of the initial random sampling: the same seed gives the same mesh."));
     t.add(memberParam(&P::seed, i));
 
     i = {};
