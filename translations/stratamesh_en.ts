@@ -87,6 +87,33 @@
     </message>
 </context>
 <context>
+    <name>stratamesh::ClipControls</name>
+    <message>
+        <source>C&amp;lip plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only the cells on one side of a plane, to see inside the mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>North–south section (x)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>East–west section (y)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Horizontal section (z)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position of the plane across the mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::ComparisonTable</name>
     <message>
         <source>Input</source>
@@ -483,30 +510,6 @@ per cell</source>
     </message>
     <message>
         <source>Region</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>C&amp;lip plane</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show only the cells on one side of a plane, to see inside the mesh</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>North–south section (x)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>East–west section (y)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Horizontal section (z)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Position of the plane across the mesh</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1630,30 +1633,6 @@ Click to show it in the views</source>
     </message>
     <message>
         <source>Min dihedral angle</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>C&amp;lip plane</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show only the tets on one side of a plane, the same in both views, to see inside the meshes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>North–south section (x)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>East–west section (y)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Horizontal section (z)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Position of the plane across the meshes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

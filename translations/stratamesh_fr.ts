@@ -87,6 +87,33 @@
     </message>
 </context>
 <context>
+    <name>stratamesh::ClipControls</name>
+    <message>
+        <source>C&amp;lip plane</source>
+        <translation>P&amp;lan de coupe</translation>
+    </message>
+    <message>
+        <source>Show only the cells on one side of a plane, to see inside the mesh</source>
+        <translation>Ne montrer que les cellules d&apos;un côté d&apos;un plan, pour voir l&apos;intérieur du maillage</translation>
+    </message>
+    <message>
+        <source>North–south section (x)</source>
+        <translation>Coupe nord–sud (x)</translation>
+    </message>
+    <message>
+        <source>East–west section (y)</source>
+        <translation>Coupe est–ouest (y)</translation>
+    </message>
+    <message>
+        <source>Horizontal section (z)</source>
+        <translation>Coupe horizontale (z)</translation>
+    </message>
+    <message>
+        <source>Position of the plane across the mesh</source>
+        <translation>Position du plan à travers le maillage</translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::ComparisonTable</name>
     <message>
         <source>Input</source>
@@ -485,30 +512,6 @@ par cellule</translation>
     <message>
         <source>Region</source>
         <translation>Région</translation>
-    </message>
-    <message>
-        <source>C&amp;lip plane</source>
-        <translation>P&amp;lan de coupe</translation>
-    </message>
-    <message>
-        <source>Show only the cells on one side of a plane, to see inside the mesh</source>
-        <translation>Ne montrer que les cellules d&apos;un côté d&apos;un plan, pour voir l&apos;intérieur du maillage</translation>
-    </message>
-    <message>
-        <source>North–south section (x)</source>
-        <translation>Coupe nord–sud (x)</translation>
-    </message>
-    <message>
-        <source>East–west section (y)</source>
-        <translation>Coupe est–ouest (y)</translation>
-    </message>
-    <message>
-        <source>Horizontal section (z)</source>
-        <translation>Coupe horizontale (z)</translation>
-    </message>
-    <message>
-        <source>Position of the plane across the mesh</source>
-        <translation>Position du plan à travers le maillage</translation>
     </message>
     <message>
         <source>Tetrahedra</source>
@@ -1634,30 +1637,6 @@ Cliquer pour le montrer dans les vues</translation>
     <message>
         <source>Min dihedral angle</source>
         <translation>Angle dièdre minimal</translation>
-    </message>
-    <message>
-        <source>C&amp;lip plane</source>
-        <translation>P&amp;lan de coupe</translation>
-    </message>
-    <message>
-        <source>Show only the tets on one side of a plane, the same in both views, to see inside the meshes</source>
-        <translation>Ne montrer que les tétraèdres d&apos;un côté d&apos;un plan, le même dans les deux vues, pour voir l&apos;intérieur des maillages</translation>
-    </message>
-    <message>
-        <source>North–south section (x)</source>
-        <translation>Coupe nord–sud (x)</translation>
-    </message>
-    <message>
-        <source>East–west section (y)</source>
-        <translation>Coupe est–ouest (y)</translation>
-    </message>
-    <message>
-        <source>Horizontal section (z)</source>
-        <translation>Coupe horizontale (z)</translation>
-    </message>
-    <message>
-        <source>Position of the plane across the meshes</source>
-        <translation>Position du plan à travers les maillages</translation>
     </message>
     <message>
         <source>Input</source>

@@ -1,13 +1,13 @@
 #include "hybrid_panel.h"
 
-#include <QCheckBox>
+#include "clip_controls.h"
+
 #include <QComboBox>
 #include <QEvent>
 #include <QGridLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
-#include <QSlider>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -18,7 +18,6 @@ namespace stratamesh {
 
 namespace {
 
-constexpr int kSliderSteps = 100;
 constexpr int kTypeCount = 3;
 
 // Combo box order: the type first, as it is what a hybrid mesh is about.
@@ -29,37 +28,14 @@ constexpr TetColouring kColourings[] = {TetColouring::Type, TetColouring::MinDih
 
 HybridPanel::HybridPanel(QWidget *parent)
     : QWidget(parent), m_colourLabel(new QLabel(this)), m_colouring(new QComboBox(this)),
-      m_clip(new QCheckBox(this)), m_axis(new QComboBox(this)),
-      m_position(new QSlider(Qt::Horizontal, this)),
+      m_clip(new ClipControls(QStringLiteral("Hybrid"), this)),
       m_table(new QTableWidget(RowCount, kTypeCount, this)), m_summary(new QLabel(this))
 {
     m_colouring->setObjectName(QStringLiteral("HybridColouring"));
     m_colouring->addItems({QString(), QString(), QString()});
     m_colourLabel->setBuddy(m_colouring);
-    m_clip->setObjectName(QStringLiteral("HybridClip"));
-    m_axis->setObjectName(QStringLiteral("HybridClipAxis"));
-    m_axis->addItems({QString(), QString(), QString()});
-    m_axis->setCurrentIndex(int(ClipAxis::Y));
-    m_position->setObjectName(QStringLiteral("HybridClipPosition"));
-    m_position->setRange(0, kSliderSteps);
-    m_position->setValue(kSliderSteps / 2);
-    m_axis->setEnabled(false);
-    m_position->setEnabled(false);
-
-    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_table->setSelectionMode(QAbstractItemView::NoSelection);
-    m_table->setAlternatingRowColors(true);
-    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    m_table->horizontalHeader()->setMinimumSectionSize(60);
-    m_table->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    setUpStatisticsTable(m_table, 60);
     m_table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    for (int r = 0; r < RowCount; ++r)
-        for (int c = 0; c < kTypeCount; ++c) {
-            auto *item = new QTableWidgetItem;
-            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-            m_table->setItem(r, c, item);
-        }
     m_summary->setObjectName(QStringLiteral("HybridSummary"));
     m_summary->setWordWrap(true);
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -67,9 +43,7 @@ HybridPanel::HybridPanel(QWidget *parent)
     auto *controls = new QGridLayout;
     controls->addWidget(m_colourLabel, 0, 0);
     controls->addWidget(m_colouring, 0, 1, 1, 2);
-    controls->addWidget(m_clip, 1, 0);
-    controls->addWidget(m_axis, 1, 1);
-    controls->addWidget(m_position, 1, 2);
+    controls->addWidget(m_clip, 1, 0, 1, 3);
     controls->setColumnStretch(2, 1);
 
     auto *layout = new QVBoxLayout(this);
@@ -81,13 +55,7 @@ HybridPanel::HybridPanel(QWidget *parent)
 
     connect(m_colouring, &QComboBox::currentIndexChanged, this,
             [this] { emit colouringChanged(colouring()); });
-    connect(m_clip, &QCheckBox::toggled, this, [this](bool on) {
-        m_axis->setEnabled(on);
-        m_position->setEnabled(on);
-        emitClip();
-    });
-    connect(m_axis, &QComboBox::currentIndexChanged, this, &HybridPanel::emitClip);
-    connect(m_position, &QSlider::valueChanged, this, &HybridPanel::emitClip);
+    connect(m_clip, &ClipControls::clipChanged, this, &HybridPanel::clipChanged);
     retranslate();
 }
 
@@ -121,36 +89,22 @@ void HybridPanel::setColouring(TetColouring colouring)
 
 bool HybridPanel::clipEnabled() const
 {
-    return m_clip->isChecked();
+    return m_clip->isClipping();
 }
 
 ClipAxis HybridPanel::clipAxis() const
 {
-    return ClipAxis(m_axis->currentIndex());
+    return m_clip->axis();
 }
 
 double HybridPanel::clipFraction() const
 {
-    return double(m_position->value()) / kSliderSteps;
+    return m_clip->fraction();
 }
 
 void HybridPanel::setClip(bool enabled, ClipAxis axis, double fraction)
 {
-    // One signal for the three settings, not one per widget.
-    {
-        const QSignalBlocker a(m_clip), b(m_axis), c(m_position);
-        m_clip->setChecked(enabled);
-        m_axis->setCurrentIndex(int(axis));
-        m_position->setValue(int(std::lround(std::clamp(fraction, 0.0, 1.0) * kSliderSteps)));
-        m_axis->setEnabled(enabled);
-        m_position->setEnabled(enabled);
-    }
-    emitClip();
-}
-
-void HybridPanel::emitClip()
-{
-    emit clipChanged(clipEnabled(), clipAxis(), clipFraction());
+    m_clip->setClip(enabled, axis, fraction);
 }
 
 QSize HybridPanel::sizeHint() const
@@ -174,12 +128,6 @@ void HybridPanel::retranslate()
     m_colouring->setItemText(0, tr("Cell type"));
     m_colouring->setItemText(1, tr("Min dihedral angle"));
     m_colouring->setItemText(2, tr("Region"));
-    m_clip->setText(tr("C&lip plane"));
-    m_clip->setToolTip(tr("Show only the cells on one side of a plane, to see inside the mesh"));
-    m_axis->setItemText(int(ClipAxis::X), tr("North–south section (x)"));
-    m_axis->setItemText(int(ClipAxis::Y), tr("East–west section (y)"));
-    m_axis->setItemText(int(ClipAxis::Z), tr("Horizontal section (z)"));
-    m_position->setToolTip(tr("Position of the plane across the mesh"));
     m_table->setHorizontalHeaderLabels({tr("Tetrahedra"), tr("Pyramids"), tr("Prisms")});
     m_table->setVerticalHeaderLabels(
         {tr("Cells"), tr("Min dihedral (°)"), tr("Max dihedral (°)"), tr("Slivers")});

@@ -13,13 +13,13 @@
 #include <array>
 #include <optional>
 
-class QCheckBox;
 class QComboBox;
 class QLabel;
-class QSlider;
 class QTableWidget;
 
 namespace stratamesh {
+
+class ClipControls;
 
 // The figures the dock shows, copied from the core's result so the mesh can go with the view.
 struct HybridStatistics {
@@ -65,14 +65,11 @@ protected:
 private:
     void retranslate();
     void fill();
-    void emitClip();
 
     std::optional<HybridStatistics> m_statistics;
     QLabel *m_colourLabel;
     QComboBox *m_colouring;
-    QCheckBox *m_clip;
-    QComboBox *m_axis;
-    QSlider *m_position;
+    ClipControls *m_clip;
     QTableWidget *m_table;
     QLabel *m_summary;
 };

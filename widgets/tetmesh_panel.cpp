@@ -1,15 +1,15 @@
 #include "tetmesh_panel.h"
 
+#include "clip_controls.h"
+
 #include "histogram_chart.h"
 
-#include <QCheckBox>
 #include <QComboBox>
 #include <QEvent>
 #include <QGridLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
-#include <QSlider>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -21,8 +21,6 @@ namespace stratamesh {
 
 namespace {
 
-constexpr int kSliderSteps = 100;
-
 QString secondsText(double seconds)
 {
     return QLocale().toString(seconds, 'f', seconds < 10.0 ? 2 : 0);
@@ -32,8 +30,7 @@ QString secondsText(double seconds)
 
 TetmeshPanel::TetmeshPanel(QWidget *parent)
     : QWidget(parent), m_colourLabel(new QLabel(this)), m_colouring(new QComboBox(this)),
-      m_clip(new QCheckBox(this)), m_axis(new QComboBox(this)),
-      m_position(new QSlider(Qt::Horizontal, this)),
+      m_clip(new ClipControls(QStringLiteral("Tet"), this)),
       m_table(new QTableWidget(RowCount, ColumnCount, this)), m_notes(new QLabel(this)),
       m_charts(new QTabWidget(this)), m_minDihedral(new HistogramChart(this)),
       m_radiusRatio(new HistogramChart(this))
@@ -41,29 +38,7 @@ TetmeshPanel::TetmeshPanel(QWidget *parent)
     m_colouring->setObjectName(QStringLiteral("TetColouring"));
     m_colouring->addItems({QString(), QString()});
     m_colourLabel->setBuddy(m_colouring);
-    m_clip->setObjectName(QStringLiteral("TetClip"));
-    m_axis->setObjectName(QStringLiteral("TetClipAxis"));
-    m_axis->addItems({QString(), QString(), QString()});
-    m_axis->setCurrentIndex(int(ClipAxis::Y));
-    m_position->setObjectName(QStringLiteral("TetClipPosition"));
-    m_position->setRange(0, kSliderSteps);
-    m_position->setValue(kSliderSteps / 2);
-    m_axis->setEnabled(false);
-    m_position->setEnabled(false);
-
-    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_table->setSelectionMode(QAbstractItemView::NoSelection);
-    m_table->setAlternatingRowColors(true);
-    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    m_table->horizontalHeader()->setMinimumSectionSize(70);
-    m_table->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    for (int r = 0; r < RowCount; ++r)
-        for (int c = 0; c < ColumnCount; ++c) {
-            auto *item = new QTableWidgetItem;
-            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-            m_table->setItem(r, c, item);
-        }
+    setUpStatisticsTable(m_table, 70);
     m_notes->setObjectName(QStringLiteral("TetmeshNotes"));
     m_notes->setWordWrap(true);
     m_notes->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -71,9 +46,7 @@ TetmeshPanel::TetmeshPanel(QWidget *parent)
     auto *controls = new QGridLayout;
     controls->addWidget(m_colourLabel, 0, 0);
     controls->addWidget(m_colouring, 0, 1, 1, 2);
-    controls->addWidget(m_clip, 1, 0);
-    controls->addWidget(m_axis, 1, 1);
-    controls->addWidget(m_position, 1, 2);
+    controls->addWidget(m_clip, 1, 0, 1, 3);
     controls->setColumnStretch(2, 1);
 
     auto *layout = new QVBoxLayout(this);
@@ -87,13 +60,7 @@ TetmeshPanel::TetmeshPanel(QWidget *parent)
 
     connect(m_colouring, &QComboBox::currentIndexChanged, this,
             [this] { emit colouringChanged(colouring()); });
-    connect(m_clip, &QCheckBox::toggled, this, [this](bool on) {
-        m_axis->setEnabled(on);
-        m_position->setEnabled(on);
-        emitClip();
-    });
-    connect(m_axis, &QComboBox::currentIndexChanged, this, &TetmeshPanel::emitClip);
-    connect(m_position, &QSlider::valueChanged, this, &TetmeshPanel::emitClip);
+    connect(m_clip, &ClipControls::clipChanged, this, &TetmeshPanel::clipChanged);
     retranslate();
 }
 
@@ -132,36 +99,22 @@ void TetmeshPanel::setColouring(TetColouring colouring)
 
 bool TetmeshPanel::clipEnabled() const
 {
-    return m_clip->isChecked();
+    return m_clip->isClipping();
 }
 
 ClipAxis TetmeshPanel::clipAxis() const
 {
-    return ClipAxis(m_axis->currentIndex());
+    return m_clip->axis();
 }
 
 double TetmeshPanel::clipFraction() const
 {
-    return double(m_position->value()) / kSliderSteps;
+    return m_clip->fraction();
 }
 
 void TetmeshPanel::setClip(bool enabled, ClipAxis axis, double fraction)
 {
-    // One signal for the three settings, not one per widget.
-    {
-        const QSignalBlocker a(m_clip), b(m_axis), c(m_position);
-        m_clip->setChecked(enabled);
-        m_axis->setCurrentIndex(int(axis));
-        m_position->setValue(int(std::lround(std::clamp(fraction, 0.0, 1.0) * kSliderSteps)));
-        m_axis->setEnabled(enabled);
-        m_position->setEnabled(enabled);
-    }
-    emitClip();
-}
-
-void TetmeshPanel::emitClip()
-{
-    emit clipChanged(clipEnabled(), clipAxis(), clipFraction());
+    m_clip->setClip(enabled, axis, fraction);
 }
 
 QString TetmeshPanel::outcomeText(TetgenOutcome outcome)
@@ -216,14 +169,6 @@ void TetmeshPanel::retranslate()
     m_colourLabel->setText(tr("C&olour tets by:"));
     m_colouring->setItemText(0, tr("Region"));
     m_colouring->setItemText(1, tr("Min dihedral angle"));
-    m_clip->setText(tr("C&lip plane"));
-    m_clip->setToolTip(
-        tr("Show only the tets on one side of a plane, the same in both views, to see "
-           "inside the meshes"));
-    m_axis->setItemText(int(ClipAxis::X), tr("North–south section (x)"));
-    m_axis->setItemText(int(ClipAxis::Y), tr("East–west section (y)"));
-    m_axis->setItemText(int(ClipAxis::Z), tr("Horizontal section (z)"));
-    m_position->setToolTip(tr("Position of the plane across the meshes"));
     m_table->setHorizontalHeaderLabels({tr("Input"), tr("Remesh")});
     m_table->setVerticalHeaderLabels({tr("Outcome"), tr("Tetrahedra"), tr("Points"),
                                       tr("Slivers (min dihedral < 5°)"), tr("Min dihedral (°)"),

@@ -12,14 +12,14 @@
 
 #include <optional>
 
-class QCheckBox;
 class QComboBox;
 class QLabel;
-class QSlider;
 class QTabWidget;
 class QTableWidget;
 
 namespace stratamesh {
+
+class ClipControls;
 
 class HistogramChart;
 
@@ -71,15 +71,12 @@ private:
 
     void retranslate();
     void fill();
-    void emitClip();
 
     std::optional<Side> m_input;
     std::optional<Side> m_output;
     QLabel *m_colourLabel;
     QComboBox *m_colouring;
-    QCheckBox *m_clip;
-    QComboBox *m_axis;
-    QSlider *m_position;
+    ClipControls *m_clip;
     QTableWidget *m_table;
     QLabel *m_notes;
     QTabWidget *m_charts;
