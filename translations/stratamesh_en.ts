@@ -700,6 +700,10 @@ angle (°)</source>
         <source>Could not save the hybrid mesh</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Hybrid meshing cancelled: no mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::LedgerPanel</name>
@@ -1741,6 +1745,10 @@ angle (°)</source>
     </message>
     <message>
         <source>Tetrahedralisation cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation cancelled: the previous meshes, if any, are kept</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

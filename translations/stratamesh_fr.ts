@@ -702,6 +702,10 @@ min. (°)</translation>
         <source>Could not save the hybrid mesh</source>
         <translation>Impossible d&apos;enregistrer le maillage hybride</translation>
     </message>
+    <message>
+        <source>Hybrid meshing cancelled: no mesh</source>
+        <translation>Maillage hybride annulé : aucun maillage</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::LedgerPanel</name>
@@ -1746,6 +1750,10 @@ min. (°)</translation>
     <message>
         <source>Tetrahedralisation cancelled</source>
         <translation>Tétraédrisation annulée</translation>
+    </message>
+    <message>
+        <source>Tetrahedralisation cancelled: the previous meshes, if any, are kept</source>
+        <translation>Tétraédrisation annulée : les maillages précédents, s&apos;il y en a, sont conservés</translation>
     </message>
 </context>
 <context>

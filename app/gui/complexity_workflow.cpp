@@ -169,21 +169,14 @@ void ComplexityWorkflow::onMeasured(const ComplexityOutcome &outcome)
 
 void ComplexityWorkflow::onFailed(const Message &error)
 {
-    m_cancel->setEnabled(false);
-    Message shown = error;
-    shown.text = tr("Complexity analysis failed: %1").arg(error.text);
-    m_bench.addMessage(shown);
-    m_bench.showMessages();
-    m_bench.setStatus(tr("Complexity analysis failed — see Messages"));
+    reportFailure(error, tr("Complexity analysis failed: %1").arg(error.text),
+                  tr("Complexity analysis failed — see Messages"));
 }
 
 void ComplexityWorkflow::onCancelled()
 {
-    m_cancel->setEnabled(false);
-    Message cancelled;
-    cancelled.text = tr("Complexity analysis cancelled: no result, the model is unchanged");
-    m_bench.addMessage(cancelled);
-    m_bench.setStatus(tr("Complexity analysis cancelled"));
+    reportCancel(tr("Complexity analysis cancelled: no result, the model is unchanged"),
+                 tr("Complexity analysis cancelled"));
 }
 
 void ComplexityWorkflow::setHeatMapVisible(bool visible)

@@ -202,19 +202,15 @@ void HybridWorkflow::onBuilt(const HybridOutcome &outcome)
 
 void HybridWorkflow::onFailed(const Message &error)
 {
-    m_cancel->setEnabled(false);
-    Message shown = error;
-    shown.text = tr("Hybrid meshing failed: %1").arg(error.text);
-    m_bench.addMessage(shown);
-    m_bench.showMessages();
-    m_bench.setStatus(tr("Hybrid meshing failed — see Messages"));
+    reportFailure(error, tr("Hybrid meshing failed: %1").arg(error.text),
+                  tr("Hybrid meshing failed — see Messages"));
 }
 
 void HybridWorkflow::onCancelled()
 {
-    m_cancel->setEnabled(false);
-    m_bench.setStatus(m_outcome ? tr("Hybrid meshing cancelled; the previous mesh is kept")
-                                : tr("Hybrid meshing cancelled"));
+    reportCancel(m_outcome ? tr("Hybrid meshing cancelled; the previous mesh is kept")
+                           : tr("Hybrid meshing cancelled: no mesh"),
+                 tr("Hybrid meshing cancelled"));
 }
 
 // One drawing in the output view at a time: the TetGen meshes give way.

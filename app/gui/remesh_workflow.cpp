@@ -232,21 +232,14 @@ void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
 
 void RemeshWorkflow::onFailed(const Message &error)
 {
-    m_cancel->setEnabled(false);
-    Message shown = error;
-    shown.text = tr("Remeshing failed: %1").arg(error.text);
-    m_bench.addMessage(shown);
-    m_bench.showMessages();
-    m_bench.setStatus(tr("Remeshing failed — see Messages"));
+    reportFailure(error, tr("Remeshing failed: %1").arg(error.text),
+                  tr("Remeshing failed — see Messages"));
 }
 
 void RemeshWorkflow::onCancelled()
 {
-    m_cancel->setEnabled(false);
-    Message cancelled;
-    cancelled.text = tr("Remeshing cancelled: the previous result, if any, is kept");
-    m_bench.addMessage(cancelled);
-    m_bench.setStatus(tr("Remeshing cancelled"));
+    reportCancel(tr("Remeshing cancelled: the previous result, if any, is kept"),
+                 tr("Remeshing cancelled"));
 }
 
 void RemeshWorkflow::updateViewTitles()

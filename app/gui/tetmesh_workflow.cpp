@@ -180,18 +180,14 @@ void TetmeshWorkflow::onTetmeshed(const TetmeshOutcome &outcome)
 
 void TetmeshWorkflow::onFailed(const Message &error)
 {
-    m_cancel->setEnabled(false);
-    Message shown = error;
-    shown.text = tr("Tetrahedralisation failed: %1").arg(error.text);
-    m_bench.addMessage(shown);
-    m_bench.showMessages();
-    m_bench.setStatus(tr("Tetrahedralisation failed — see Messages"));
+    reportFailure(error, tr("Tetrahedralisation failed: %1").arg(error.text),
+                  tr("Tetrahedralisation failed — see Messages"));
 }
 
 void TetmeshWorkflow::onCancelled()
 {
-    m_cancel->setEnabled(false);
-    m_bench.setStatus(tr("Tetrahedralisation cancelled"));
+    reportCancel(tr("Tetrahedralisation cancelled: the previous meshes, if any, are kept"),
+                 tr("Tetrahedralisation cancelled"));
 }
 
 void TetmeshWorkflow::applyTetView()

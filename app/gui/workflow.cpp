@@ -1,5 +1,6 @@
 #include "workflow.h"
 
+#include "message.h"
 #include "workbench.h"
 #include "workflow_job.h"
 
@@ -72,6 +73,27 @@ void Workflow::relay(WorkflowJob *job)
         emit busyChanged();
         emit finished(ok);
     });
+}
+
+void Workflow::reportFailure(const Message &error, const QString &text, const QString &status)
+{
+    if (QAction *action = cancelAction())
+        action->setEnabled(false);
+    Message shown = error;
+    shown.text = text;
+    m_bench.addMessage(shown);
+    m_bench.showMessages();
+    m_bench.setStatus(status);
+}
+
+void Workflow::reportCancel(const QString &text, const QString &status)
+{
+    if (QAction *action = cancelAction())
+        action->setEnabled(false);
+    Message cancelled;
+    cancelled.text = text;
+    m_bench.addMessage(cancelled);
+    m_bench.setStatus(status);
 }
 
 QAction *Workflow::separator()

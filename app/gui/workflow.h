@@ -12,6 +12,7 @@ class QDockWidget;
 
 namespace stratamesh {
 
+struct Message;
 class Workbench;
 class WorkflowJob;
 
@@ -67,6 +68,11 @@ protected:
     // Relays job's start and end to busyChanged() and finished(); called once the workflow's own
     // handlers are connected, so finished() comes after the outcome is shown.
     void relay(WorkflowJob *job);
+    // A run ended without a result: Cancel is disabled, the error (its place kept) goes to Messages
+    // as `text` and the status line says `status`.
+    void reportFailure(const Message &error, const QString &text, const QString &status);
+    // A cancelled run is logged too, so the Messages tell the whole session.
+    void reportCancel(const QString &text, const QString &status);
     // A separator for menuActions().
     QAction *separator();
 

@@ -190,6 +190,7 @@ private slots:
             stoppedAfter = sinceCancel.isValid() ? sinceCancel.elapsed() : -1;
         });
         QSignalSpy finished(hybrid, &HybridWorkflow::finished);
+        const int messagesBefore = m_window->messagePanel()->count();
         HybridParams big;
         big.sites = 5000;
         QVERIFY(hybrid->start(big));
@@ -218,6 +219,12 @@ private slots:
         QVERIFY(hybrid->hybridAction()->isEnabled());
         QVERIFY(!hybrid->cancelAction()->isEnabled());
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), 0);
+        // The cancel is in the session's log, saying the previous mesh stays.
+        const int last = m_window->messagePanel()->count() - 1;
+        QVERIFY(last >= messagesBefore);
+        QVERIFY(m_window->messagePanel()
+                    ->cellText(last, MessagePanel::TextColumn)
+                    .contains(QLatin1String("previous mesh is kept")));
     }
 
     void saveReadsBack()
