@@ -409,6 +409,161 @@ per cell</source>
     </message>
 </context>
 <context>
+    <name>stratamesh::Core</name>
+    <message>
+        <source>two distinct points %1 apart at %2, closer than a volume mesher&apos;s merge tolerance (TetGen merges them)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>triangle %1 of %2 and triangle %3 of %4 intersect near %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>region %1 has no boundary surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 lists the same side of surface %2 twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the boundary of the Universe is not closed: %1 edges are used an odd number of times</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the boundary of region %2 is not closed: %1 edges are used an odd number of times</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the sides of the Universe are inconsistent: %1 edges are not run as often one way as the other</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the sides of region %2 are inconsistent: %1 edges are not run as often one way as the other</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the sides of the Universe disagree with the surface normals: its volume is %1 (expected negative; region on the side the normal points to is &apos;+&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the sides of region %2 disagree with the surface normals: its volume is %1 (expected positive; region on the side the normal points to is &apos;+&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>side %1 of surface %2 is claimed by %3 regions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>side %1 of surface %2 belongs to no region nor to the Universe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of the %2 edges of %3 are on the border of surface %4 only: the model is not sealed there (it touches no other surface)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an edge of surface %1 has %2 triangles around it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>triangle %1 of %2 uses one vertex twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>triangle %1 of %2 has two corners at the same position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>triangle %1 of %2 has zero area (collinear corners)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>triangle %1 of %2 lies on the same three points as triangle %3 of %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>two triangles of surface %1 run their common edge the same way (flipped normals)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sliver shared by two surfaces: its shortest edge collapsed (Alg 4.4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>points closer than the resolution merged to undo intersecting triangles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output triangles still intersect after flips and vertex moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>valence-3 vertex of a tiny cell removed (Fig 4.8a)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>degenerate triangle on a free border removed (Fig 4.8b)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cap along a contact: vertex inserted into the contact (Alg 4.4, configuration 6)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>surface entirely below the resolution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a connected part of the surface disappeared</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the surface was split into more parts: this one is separate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>contact or border line not in the output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line of the output with no counterpart in the input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>corner not in the output (distance to the nearest output corner)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>corner of the output with no counterpart in the input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>corners of one Voronoi cell joined by a line merged (Fig 4.6b)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a cell component with more than two points: points merged (Fig 4.6a)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a cell component with more than two points: its two closest merged (Fig 4.6a)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>model parts closer than d_resolution merged (Fig 4.7)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>strip %1 (%2 m wide, limit %3 m) removed: its two lines merged half-way (Fig 4.7 per strip)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>strip %1 (%2 m wide, limit %3 m) removed before remeshing</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::FeatureLegend</name>
     <message>
         <source>Horizons</source>

@@ -410,6 +410,161 @@ par cellule</translation>
     </message>
 </context>
 <context>
+    <name>stratamesh::Core</name>
+    <message>
+        <source>two distinct points %1 apart at %2, closer than a volume mesher&apos;s merge tolerance (TetGen merges them)</source>
+        <translation>deux points distincts à %1 l&apos;un de l&apos;autre en %2, plus proches que la tolérance de fusion d&apos;un mailleur volumique (TetGen les fusionne)</translation>
+    </message>
+    <message>
+        <source>triangle %1 of %2 and triangle %3 of %4 intersect near %5</source>
+        <translation>le triangle %1 de %2 et le triangle %3 de %4 se coupent près de %5</translation>
+    </message>
+    <message>
+        <source>region %1 has no boundary surface</source>
+        <translation>la région %1 n&apos;a aucune surface de bord</translation>
+    </message>
+    <message>
+        <source>%1 lists the same side of surface %2 twice</source>
+        <translation>%1 cite deux fois le même côté de la surface %2</translation>
+    </message>
+    <message>
+        <source>the boundary of the Universe is not closed: %1 edges are used an odd number of times</source>
+        <translation>le bord de l&apos;Univers n&apos;est pas fermé : %1 arêtes sont utilisées un nombre impair de fois</translation>
+    </message>
+    <message>
+        <source>the boundary of region %2 is not closed: %1 edges are used an odd number of times</source>
+        <translation>le bord de la région %2 n&apos;est pas fermé : %1 arêtes sont utilisées un nombre impair de fois</translation>
+    </message>
+    <message>
+        <source>the sides of the Universe are inconsistent: %1 edges are not run as often one way as the other</source>
+        <translation>les côtés de l&apos;Univers sont incohérents : %1 arêtes ne sont pas parcourues autant de fois dans un sens que dans l&apos;autre</translation>
+    </message>
+    <message>
+        <source>the sides of region %2 are inconsistent: %1 edges are not run as often one way as the other</source>
+        <translation>les côtés de la région %2 sont incohérents : %1 arêtes ne sont pas parcourues autant de fois dans un sens que dans l&apos;autre</translation>
+    </message>
+    <message>
+        <source>the sides of the Universe disagree with the surface normals: its volume is %1 (expected negative; region on the side the normal points to is &apos;+&apos;)</source>
+        <translation>les côtés de l&apos;Univers contredisent les normales des surfaces : son volume vaut %1 (négatif attendu ; la région du côté où pointe la normale est « + »)</translation>
+    </message>
+    <message>
+        <source>the sides of region %2 disagree with the surface normals: its volume is %1 (expected positive; region on the side the normal points to is &apos;+&apos;)</source>
+        <translation>les côtés de la région %2 contredisent les normales des surfaces : son volume vaut %1 (positif attendu ; la région du côté où pointe la normale est « + »)</translation>
+    </message>
+    <message>
+        <source>side %1 of surface %2 is claimed by %3 regions</source>
+        <translation>le côté %1 de la surface %2 est revendiqué par %3 régions</translation>
+    </message>
+    <message>
+        <source>side %1 of surface %2 belongs to no region nor to the Universe</source>
+        <translation>le côté %1 de la surface %2 n&apos;appartient à aucune région ni à l&apos;Univers</translation>
+    </message>
+    <message>
+        <source>%1 of the %2 edges of %3 are on the border of surface %4 only: the model is not sealed there (it touches no other surface)</source>
+        <translation>%1 des %2 arêtes de %3 sont au bord de la seule surface %4 : le modèle n&apos;est pas étanche à cet endroit (elle ne touche aucune autre surface)</translation>
+    </message>
+    <message>
+        <source>an edge of surface %1 has %2 triangles around it</source>
+        <translation>une arête de la surface %1 est entourée de %2 triangles</translation>
+    </message>
+    <message>
+        <source>triangle %1 of %2 uses one vertex twice</source>
+        <translation>le triangle %1 de %2 utilise deux fois le même sommet</translation>
+    </message>
+    <message>
+        <source>triangle %1 of %2 has two corners at the same position</source>
+        <translation>le triangle %1 de %2 a deux sommets à la même position</translation>
+    </message>
+    <message>
+        <source>triangle %1 of %2 has zero area (collinear corners)</source>
+        <translation>le triangle %1 de %2 a une aire nulle (sommets alignés)</translation>
+    </message>
+    <message>
+        <source>triangle %1 of %2 lies on the same three points as triangle %3 of %4</source>
+        <translation>le triangle %1 de %2 repose sur les trois mêmes points que le triangle %3 de %4</translation>
+    </message>
+    <message>
+        <source>two triangles of surface %1 run their common edge the same way (flipped normals)</source>
+        <translation>deux triangles de la surface %1 parcourent leur arête commune dans le même sens (normales inversées)</translation>
+    </message>
+    <message>
+        <source>sliver shared by two surfaces: its shortest edge collapsed (Alg 4.4)</source>
+        <translation>triangle plat partagé par deux surfaces : sa plus courte arête contractée (alg. 4.4)</translation>
+    </message>
+    <message>
+        <source>points closer than the resolution merged to undo intersecting triangles</source>
+        <translation>points plus proches que la résolution fusionnés pour défaire des triangles sécants</translation>
+    </message>
+    <message>
+        <source>output triangles still intersect after flips and vertex moves</source>
+        <translation>des triangles de la sortie se coupent encore après basculements et déplacements de sommets</translation>
+    </message>
+    <message>
+        <source>valence-3 vertex of a tiny cell removed (Fig 4.8a)</source>
+        <translation>sommet de valence 3 d&apos;une cellule minuscule supprimé (fig. 4.8a)</translation>
+    </message>
+    <message>
+        <source>degenerate triangle on a free border removed (Fig 4.8b)</source>
+        <translation>triangle dégénéré sur un bord libre supprimé (fig. 4.8b)</translation>
+    </message>
+    <message>
+        <source>cap along a contact: vertex inserted into the contact (Alg 4.4, configuration 6)</source>
+        <translation>triangle obtus le long d&apos;un contact : sommet inséré dans le contact (alg. 4.4, configuration 6)</translation>
+    </message>
+    <message>
+        <source>surface entirely below the resolution</source>
+        <translation>surface entièrement sous la résolution</translation>
+    </message>
+    <message>
+        <source>a connected part of the surface disappeared</source>
+        <translation>une partie connexe de la surface a disparu</translation>
+    </message>
+    <message>
+        <source>the surface was split into more parts: this one is separate</source>
+        <translation>la surface a été coupée en davantage de parties : celle-ci est séparée</translation>
+    </message>
+    <message>
+        <source>contact or border line not in the output</source>
+        <translation>ligne de contact ou de bord absente de la sortie</translation>
+    </message>
+    <message>
+        <source>line of the output with no counterpart in the input</source>
+        <translation>ligne de la sortie sans équivalent dans l&apos;entrée</translation>
+    </message>
+    <message>
+        <source>corner not in the output (distance to the nearest output corner)</source>
+        <translation>coin absent de la sortie (distance au coin de sortie le plus proche)</translation>
+    </message>
+    <message>
+        <source>corner of the output with no counterpart in the input</source>
+        <translation>coin de la sortie sans équivalent dans l&apos;entrée</translation>
+    </message>
+    <message>
+        <source>corners of one Voronoi cell joined by a line merged (Fig 4.6b)</source>
+        <translation>coins d&apos;une même cellule de Voronoï reliés par une ligne fusionnés (fig. 4.6b)</translation>
+    </message>
+    <message>
+        <source>a cell component with more than two points: points merged (Fig 4.6a)</source>
+        <translation>une composante de cellule de plus de deux points : points fusionnés (fig. 4.6a)</translation>
+    </message>
+    <message>
+        <source>a cell component with more than two points: its two closest merged (Fig 4.6a)</source>
+        <translation>une composante de cellule de plus de deux points : ses deux plus proches fusionnés (fig. 4.6a)</translation>
+    </message>
+    <message>
+        <source>model parts closer than d_resolution merged (Fig 4.7)</source>
+        <translation>parties du modèle plus proches que d_resolution fusionnées (fig. 4.7)</translation>
+    </message>
+    <message>
+        <source>strip %1 (%2 m wide, limit %3 m) removed: its two lines merged half-way (Fig 4.7 per strip)</source>
+        <translation>bande %1 (%2 m de large, limite %3 m) supprimée : ses deux lignes fusionnées à mi-chemin (fig. 4.7 par bande)</translation>
+    </message>
+    <message>
+        <source>strip %1 (%2 m wide, limit %3 m) removed before remeshing</source>
+        <translation>bande %1 (%2 m de large, limite %3 m) supprimée avant le remaillage</translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::FeatureLegend</name>
     <message>
         <source>Horizons</source>

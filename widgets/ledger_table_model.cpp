@@ -1,5 +1,7 @@
 #include "ledger_table_model.h"
 
+#include "core_text.h"
+
 #include <QLocale>
 
 namespace stratamesh {
@@ -46,7 +48,7 @@ QVariant LedgerTableModel::data(const QModelIndex &index, int role) const
             return entitiesText(r->inputs);
         if (index.column() == OutputsColumn)
             return entitiesText(r->outputs);
-        return QString::fromStdString(r->note);
+        return coreText(r->noteText, r->note);
     }
     if (role != Qt::DisplayRole)
         return {};
@@ -62,7 +64,7 @@ QVariant LedgerTableModel::data(const QModelIndex &index, int role) const
     case PositionColumn:
         return positionText(r->position);
     case NoteColumn:
-        return QString::fromStdString(r->note);
+        return coreText(r->noteText, r->note);
     default:
         return {};
     }

@@ -1,5 +1,7 @@
 #include "validity_messages.h"
 
+#include "core_text.h"
+
 #include <QCoreApplication>
 
 #include <map>
@@ -13,7 +15,7 @@ std::vector<Message> validityMessages(const ValidityReport &report, const QStrin
     for (const ValidityProblem &problem : report.problems) {
         Message m;
         m.severity = Message::Severity::Warning;
-        m.text = QString::fromStdString(problem.message);
+        m.text = coreText(problem.text, problem.message);
         m.file = file;
         m.position = problem.position;
         messages.push_back(m);

@@ -5,6 +5,7 @@
 // exact position and intersections use CGAL's exact predicates, no tolerance anywhere.
 #pragma once
 
+#include "common/message_text.h"
 #include "common/progress.h"
 #include "model/model.h"
 
@@ -44,7 +45,8 @@ struct ValidityProblem {
     std::string check;                 // one of validity_check::*
     std::vector<std::string> entities; // names of the surfaces/lines/regions involved
     Vec3 position = Vec3::Zero();      // where to look (z-up model coordinates)
-    std::string message;
+    std::string message;               // text.text()
+    MessageText text;                  // the same, for a translation
 };
 
 struct ValidityReport {

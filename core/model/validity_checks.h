@@ -10,13 +10,14 @@ namespace stratamesh::validity_detail {
 class ProblemSink {
 public:
     void add(const char *check, std::vector<std::string> entities, const Vec3 &position,
-             std::string message)
+             MessageText text)
     {
         std::size_t &n = m_report.counts[check];
         ++n;
         m_report.valid = false;
         if (n <= ValidityReport::kMaxListedPerCheck)
-            m_report.problems.push_back({check, std::move(entities), position, std::move(message)});
+            m_report.problems.push_back(
+                {check, std::move(entities), position, text.text(), std::move(text)});
     }
     // True when one more problem of this check would not be listed (callers may skip details).
     bool full(const char *check) const

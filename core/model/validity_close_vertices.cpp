@@ -9,6 +9,9 @@
 #include <cstdio>
 #include <numeric>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh::validity_detail {
 
 namespace {
@@ -59,8 +62,10 @@ void checkCloseVertices(const CheckInput &in, ProblemSink &sink)
             char distance[32];
             std::snprintf(distance, sizeof distance, "%.3g", d);
             sink.add(validity_check::closeVertices, names, p,
-                     "two distinct points " + std::string(distance) + " apart at " + pointText(p)
-                         + ", closer than a volume mesher's merge tolerance (TetGen merges them)");
+                     {QT_TRANSLATE_NOOP("stratamesh::Core",
+                                        "two distinct points %1 apart at %2, closer than a volume "
+                                        "mesher's merge tolerance (TetGen merges them)"),
+                      {distance, pointText(p)}});
         }
     }
 }

@@ -16,6 +16,9 @@
 #include <initializer_list>
 #include <optional>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh::validity_detail {
 
 namespace {
@@ -192,10 +195,12 @@ void checkIntersections(const CheckInput &in, ProblemSink &sink, Progress &progr
             std::vector<std::string> names{sf.name};
             if (f.surface != g.surface)
                 names.push_back(sg.name);
-            sink.add(validity_check::surfaceIntersection, names, where,
-                     "triangle " + std::to_string(f.triangle) + " of " + sf.name + " and triangle "
-                         + std::to_string(g.triangle) + " of " + sg.name + " intersect near "
-                         + pointText(where));
+            sink.add(
+                validity_check::surfaceIntersection, names, where,
+                {QT_TRANSLATE_NOOP("stratamesh::Core",
+                                   "triangle %1 of %2 and triangle %3 of %4 intersect near %5"),
+                 {std::to_string(f.triangle), sf.name, std::to_string(g.triangle), sg.name,
+                  pointText(where)}});
         }
         chunk.clear();
     };

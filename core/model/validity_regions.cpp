@@ -11,6 +11,9 @@
 #include <cstdio>
 #include <map>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh::validity_detail {
 
 namespace {
@@ -42,7 +45,8 @@ void checkShell(const Model &model, const SideOwner &owner, ProblemSink &sink)
     if (owner.sides->empty()) {
         if (!owner.universe)
             sink.add(validity_check::regionBoundary, {owner.name}, Vec3::Zero(),
-                     "region " + owner.name + " has no boundary surface");
+                     {QT_TRANSLATE_NOOP("stratamesh::Core", "region %1 has no boundary surface"),
+                      {owner.name}});
         return;
     }
     std::vector<RegionSide> sides = *owner.sides;
@@ -61,8 +65,9 @@ void checkShell(const Model &model, const SideOwner &owner, ProblemSink &sink)
         if (i > 0 && sides[i] == sides[i - 1]) {
             sink.add(validity_check::regionBoundary, {owner.name, model.surfaces[s].name},
                      surfaceCentre(model, s),
-                     owner.name + " lists the same side of surface " + model.surfaces[s].name
-                         + " twice");
+                     {QT_TRANSLATE_NOOP("stratamesh::Core",
+                                        "%1 lists the same side of surface %2 twice"),
+                      {owner.name, model.surfaces[s].name}});
             continue;
         }
         const bool both = (i > 0 && sides[i - 1].surface == s)
@@ -97,28 +102,45 @@ void checkShell(const Model &model, const SideOwner &owner, ProblemSink &sink)
         }
         i = j;
     }
-    const std::string what = owner.universe ? std::string("the Universe") : "region " + owner.name;
     if (open > 0)
         sink.add(validity_check::regionBoundary,
                  {owner.name, model.surfaces[firstOpen->surface].name},
                  edgeMidpoint(model, firstOpen->key),
-                 "the boundary of " + what + " is not closed: " + std::to_string(open)
-                     + " edges are used an odd number of times");
+                 {owner.universe ? QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                     "the boundary of the Universe is not closed: "
+                                                     "%1 edges are used an odd number of times")
+                                 : QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                     "the boundary of region %2 is not closed: %1 "
+                                                     "edges are used an odd number of times"),
+                  {std::to_string(open), owner.name}});
     if (unbalanced > 0)
         sink.add(validity_check::regionBoundary,
                  {owner.name, model.surfaces[firstUnbalanced->surface].name},
                  edgeMidpoint(model, firstUnbalanced->key),
-                 "the sides of " + what + " are inconsistent: " + std::to_string(unbalanced)
-                     + " edges are not run as often one way as the other");
+                 {owner.universe
+                      ? QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "the sides of the Universe are inconsistent: %1 edges "
+                                          "are not run as often one way as the other")
+                      : QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "the sides of region %2 are inconsistent: %1 edges are "
+                                          "not run as often one way as the other"),
+                  {std::to_string(unbalanced), owner.name}});
     if (open == 0 && unbalanced == 0 && anyOneSided) {
         const double volume = sidesVolume(model, *owner.sides);
         if (owner.universe ? volume >= 0.0 : volume <= 0.0)
-            sink.add(validity_check::regionBoundary, {owner.name},
-                     surfaceCentre(model, owner.sides->front().surface),
-                     "the sides of " + what + " disagree with the surface normals: its volume is "
-                         + numberText(volume) + " (expected "
-                         + (owner.universe ? "negative" : "positive")
-                         + "; region on the side the normal points to is '+')");
+            sink.add(
+                validity_check::regionBoundary, {owner.name},
+                surfaceCentre(model, owner.sides->front().surface),
+                {owner.universe
+                     ? QT_TRANSLATE_NOOP("stratamesh::Core",
+                                         "the sides of the Universe disagree with the surface "
+                                         "normals: its volume is %1 (expected negative; region on "
+                                         "the side the normal points to is '+')")
+                     : QT_TRANSLATE_NOOP(
+                         "stratamesh::Core",
+                         "the sides of region %2 disagree with the surface normals: its volume is "
+                         "%1 (expected positive; region on the side the normal points to is '+')"),
+                 {numberText(volume), owner.name}});
     }
 }
 
@@ -137,9 +159,10 @@ void checkSideOwnership(const Model &model, const std::vector<SideOwner> &owners
             for (std::size_t o : owning)
                 names.push_back(owners[o].name);
             sink.add(validity_check::regionBoundary, names, surfaceCentre(model, side.first),
-                     std::string("side ") + (side.second ? "+" : "-") + " of surface "
-                         + model.surfaces[side.first].name + " is claimed by "
-                         + std::to_string(owning.size()) + " regions");
+                     {QT_TRANSLATE_NOOP("stratamesh::Core",
+                                        "side %1 of surface %2 is claimed by %3 regions"),
+                      {side.second ? "+" : "-", model.surfaces[side.first].name,
+                       std::to_string(owning.size())}});
         }
     // With the Universe given, every side of every surface belongs to exactly one region.
     const bool universeGiven = owners.size() > model.regions.size();
@@ -150,9 +173,10 @@ void checkSideOwnership(const Model &model, const std::vector<SideOwner> &owners
             if (!claims.count({static_cast<int>(s), positive}))
                 sink.add(validity_check::regionBoundary, {model.surfaces[s].name},
                          surfaceCentre(model, static_cast<int>(s)),
-                         std::string("side ") + (positive ? "+" : "-") + " of surface "
-                             + model.surfaces[s].name
-                             + " belongs to no region nor to the Universe");
+                         {QT_TRANSLATE_NOOP(
+                              "stratamesh::Core",
+                              "side %1 of surface %2 belongs to no region nor to the Universe"),
+                          {positive ? "+" : "-", model.surfaces[s].name}});
 }
 
 } // namespace

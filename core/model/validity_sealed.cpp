@@ -4,6 +4,9 @@
 // fault or a horizon ending inside a layer, Fig 3.1 surface F4), i.e. listed there with both signs.
 #include "model/validity_checks.h"
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh::validity_detail {
 
 void checkSealed(const CheckInput &in, ProblemSink &sink)
@@ -35,10 +38,12 @@ void checkSealed(const CheckInput &in, ProblemSink &sink)
         if (free == 0)
             continue;
         const std::string &surface = model.surfaces[line.surfaces[0]].name;
-        sink.add(validity_check::notSealed, {surface, line.name}, edgeMidpoint(model, firstFree),
-                 std::to_string(free) + " of the " + std::to_string(edgeCount) + " edges of "
-                     + line.name + " are on the border of surface " + surface
-                     + " only: the model is not sealed there (it touches no other surface)");
+        sink.add(
+            validity_check::notSealed, {surface, line.name}, edgeMidpoint(model, firstFree),
+            {QT_TRANSLATE_NOOP("stratamesh::Core",
+                               "%1 of the %2 edges of %3 are on the border of surface %4 only: the "
+                               "model is not sealed there (it touches no other surface)"),
+             {std::to_string(free), std::to_string(edgeCount), line.name, surface}});
     }
 }
 

@@ -6,6 +6,9 @@
 
 #include <algorithm>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh::validity_detail {
 
 namespace {
@@ -22,19 +25,15 @@ Vec3 centroid(const Surface &s, const Triangle &t)
     return (s.vertices[t[0]] + s.vertices[t[1]] + s.vertices[t[2]]) / 3.0;
 }
 
-std::string triangleText(const Surface &s, std::size_t t)
-{
-    return "triangle " + std::to_string(t) + " of " + s.name;
-}
-
 void checkNonManifold(const CheckInput &in, ProblemSink &sink)
 {
     for (const SurfaceEdge &e : in.edges)
         if (e.triangles > 2) {
             const Surface &s = in.model.surfaces[e.surface];
             sink.add(validity_check::nonManifoldEdge, {s.name}, edgeMidpoint(in.model, e.key),
-                     "an edge of surface " + s.name + " has " + std::to_string(e.triangles)
-                         + " triangles around it");
+                     {QT_TRANSLATE_NOOP("stratamesh::Core",
+                                        "an edge of surface %1 has %2 triangles around it"),
+                      {s.name, std::to_string(e.triangles)}});
         }
 }
 
@@ -46,17 +45,20 @@ void checkDegenerate(const CheckInput &in, ProblemSink &sink)
         const std::vector<int> &g = model.surfaceVertexToGlobal[si];
         for (std::size_t ti = 0; ti < s.triangles.size(); ++ti) {
             const Triangle &t = s.triangles[ti];
-            std::string why;
+            const char *why = nullptr;
             if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
-                why = "uses one vertex twice";
+                why = QT_TRANSLATE_NOOP("stratamesh::Core",
+                                        "triangle %1 of %2 uses one vertex twice");
             else if (g[t[0]] == g[t[1]] || g[t[1]] == g[t[2]] || g[t[0]] == g[t[2]])
-                why = "has two corners at the same position";
+                why = QT_TRANSLATE_NOOP("stratamesh::Core",
+                                        "triangle %1 of %2 has two corners at the same position");
             else if (CGAL::collinear(toPoint(s.vertices[t[0]]), toPoint(s.vertices[t[1]]),
                                      toPoint(s.vertices[t[2]])))
-                why = "has zero area (collinear corners)";
-            if (!why.empty())
+                why = QT_TRANSLATE_NOOP("stratamesh::Core",
+                                        "triangle %1 of %2 has zero area (collinear corners)");
+            if (why)
                 sink.add(validity_check::degenerateTriangle, {s.name}, centroid(s, t),
-                         triangleText(s, ti) + " " + why);
+                         {why, {std::to_string(ti), s.name}});
         }
     }
 }
@@ -101,8 +103,11 @@ void checkDuplicates(const CheckInput &in, ProblemSink &sink)
         if (&a != &b)
             names.push_back(b.name);
         sink.add(validity_check::duplicateTriangle, names, c,
-                 triangleText(b, entries[i].triangle) + " lies on the same three points as "
-                     + triangleText(a, entries[first].triangle));
+                 {QT_TRANSLATE_NOOP(
+                      "stratamesh::Core",
+                      "triangle %1 of %2 lies on the same three points as triangle %3 of %4"),
+                  {std::to_string(entries[i].triangle), b.name,
+                   std::to_string(entries[first].triangle), a.name}});
     }
 }
 
@@ -130,8 +135,10 @@ void checkOrientation(const CheckInput &in, ProblemSink &sink)
                                  * (s.vertices[edgeKeyFirst(halfEdges[i].key)]
                                     + s.vertices[edgeKeySecond(halfEdges[i].key)]);
                 sink.add(validity_check::inconsistentOrientation, {s.name}, mid,
-                         "two triangles of surface " + s.name
-                             + " run their common edge the same way (flipped normals)");
+                         {QT_TRANSLATE_NOOP("stratamesh::Core",
+                                            "two triangles of surface %1 run their common edge the "
+                                            "same way (flipped normals)"),
+                          {s.name}});
             }
             i = j;
         }

@@ -17,6 +17,9 @@
 #include <map>
 #include <memory>
 
+// lupdate reads the notes from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -138,7 +141,10 @@ bool collapseSliver(EditableSoup &soup, const Model &input, int t, Simplificatio
     r.position = target;
     r.size = moved;
     r.sizeMeaning = "distance";
-    r.note = "sliver shared by two surfaces: its shortest edge collapsed (Alg 4.4)";
+    setNote(r, {QT_TRANSLATE_NOOP(
+                    "stratamesh::Core",
+                    "sliver shared by two surfaces: its shortest edge collapsed (Alg 4.4)"),
+                {}});
     if (!soup.collapse(u, w, target, 0.0))
         return false;
     ledger.push_back(r);

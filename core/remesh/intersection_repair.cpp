@@ -7,6 +7,9 @@
 
 #include <algorithm>
 
+// lupdate reads the notes from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -142,7 +145,10 @@ bool tryCollapses(EditableSoup &soup, const Model &input, const std::array<int, 
         r.position = target;
         r.size = length;
         r.sizeMeaning = "distance";
-        r.note = "points closer than the resolution merged to undo intersecting triangles";
+        setNote(r, {QT_TRANSLATE_NOOP(
+                        "stratamesh::Core",
+                        "points closer than the resolution merged to undo intersecting triangles"),
+                    {}});
         const int before = intersectionsAroundVertices(soup, {u, w});
         for (bool checkShape : {true, false}) {
             EditableSoup backup = soup;
@@ -250,7 +256,10 @@ IntersectionRepairResult repairIntersections(EditableSoup &soup, const Model &in
         r.position = c / 6.0;
         r.size = 0.5 * (soup.normal(t).norm() + soup.normal(u).norm()) * 0.5;
         r.sizeMeaning = "area";
-        r.note = "output triangles still intersect after flips and vertex moves";
+        setNote(r,
+                {QT_TRANSLATE_NOOP("stratamesh::Core",
+                                   "output triangles still intersect after flips and vertex moves"),
+                 {}});
         ledger.push_back(r);
     }
     return result;

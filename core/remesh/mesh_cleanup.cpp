@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
+// lupdate reads the notes from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 std::vector<EntityRef> inputEntitiesOf(const EditableSoup &soup, const Model &input,
@@ -29,7 +32,7 @@ namespace {
 
 LedgerRecord makeRecord(LedgerKind kind, const EditableSoup &soup, const Model &input,
                         const std::vector<int> &points, const Vec3 &position, double size,
-                        const std::string &note)
+                        const char *note)
 {
     LedgerRecord r;
     r.kind = kind;
@@ -39,7 +42,7 @@ LedgerRecord makeRecord(LedgerKind kind, const EditableSoup &soup, const Model &
     r.position = position;
     r.size = size;
     r.sizeMeaning = "distance";
-    r.note = note;
+    setNote(r, {note, {}});
     return r;
 }
 
@@ -106,10 +109,11 @@ CleanupCounts removeValence3Vertices(EditableSoup &soup, const Model &input,
             if (exists)
                 continue;
             const int surface = soup.triangle(tris[0]).surface;
-            ledger.push_back(makeRecord(LedgerKind::Valence3Removed, soup, input, {v},
-                                        soup.position(v),
-                                        pointPlaneDistance(soup.position(v), pa, pb, pc),
-                                        "valence-3 vertex of a tiny cell removed (Fig 4.8a)"));
+            ledger.push_back(makeRecord(
+                LedgerKind::Valence3Removed, soup, input, {v}, soup.position(v),
+                pointPlaneDistance(soup.position(v), pa, pb, pc),
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "valence-3 vertex of a tiny cell removed (Fig 4.8a)")));
             for (int t : tris)
                 soup.removeTriangle(t);
             soup.addTriangle({a, b, c}, surface);
@@ -155,9 +159,10 @@ bool fixDegenerate(EditableSoup &soup, int t, const Model &input, const CleanupP
                     (soup.position(r)
                      - projectOnSegment(soup.position(r), soup.position(a), soup.position(b)))
                         .norm();
-                ledger.push_back(
-                    makeRecord(LedgerKind::DegenerateBorderTriangle, soup, input, {r, a, b}, centre,
-                               size, "degenerate triangle on a free border removed (Fig 4.8b)"));
+                ledger.push_back(makeRecord(
+                    LedgerKind::DegenerateBorderTriangle, soup, input, {r, a, b}, centre, size,
+                    QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "degenerate triangle on a free border removed (Fig 4.8b)")));
                 soup.removeTriangle(t);
                 ++counts.borderTriangles;
                 return true;
@@ -173,10 +178,10 @@ bool fixDegenerate(EditableSoup &soup, int t, const Model &input, const CleanupP
                 return false;
             }
             soup.splitEdge(a, b, r);
-            ledger.push_back(makeRecord(LedgerKind::DegenerateContactTriangle, soup, input,
-                                        {r, a, b}, centre, moved,
-                                        "cap along a contact: vertex inserted into the contact "
-                                        "(Alg 4.4, configuration 6)"));
+            ledger.push_back(makeRecord(
+                LedgerKind::DegenerateContactTriangle, soup, input, {r, a, b}, centre, moved,
+                QT_TRANSLATE_NOOP("stratamesh::Core", "cap along a contact: vertex inserted into "
+                                                      "the contact (Alg 4.4, configuration 6)")));
             ++counts.contactTriangles;
             return true;
         }

@@ -10,6 +10,9 @@
 #include <map>
 #include <numeric>
 
+// lupdate reads the notes from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -93,7 +96,7 @@ matchByKeyAndDistance(const std::vector<Key> &inKeys, const std::vector<Vec3> &i
 }
 
 LedgerRecord entityRecord(LedgerKind kind, EntityRef ref, bool isInput, const Vec3 &position,
-                          double size, const std::string &meaning, const std::string &note)
+                          double size, const std::string &meaning, const char *note)
 {
     LedgerRecord r;
     r.kind = kind;
@@ -101,7 +104,7 @@ LedgerRecord entityRecord(LedgerKind kind, EntityRef ref, bool isInput, const Ve
     r.position = position;
     r.size = size;
     r.sizeMeaning = meaning;
-    r.note = note;
+    setNote(r, {note, {}});
     return r;
 }
 
@@ -167,20 +170,25 @@ void recordEntityChanges(const Model &input, const Model &output, Simplification
         if (outCount == 0)
             ledger.push_back(entityRecord(
                 LedgerKind::SurfaceLost, surfaceRef(input, static_cast<int>(s)), true, centre,
-                surfaceArea(in), "area", "surface entirely below the resolution"));
+                surfaceArea(in), "area",
+                QT_TRANSLATE_NOOP("stratamesh::Core", "surface entirely below the resolution")));
         else
             for (int k = outCount; k < inCount; ++k)
-                ledger.push_back(entityRecord(
-                    LedgerKind::SurfacePartLost, surfaceRef(input, static_cast<int>(s)), true,
-                    centre, 0.0, "area", "a connected part of the surface disappeared"));
+                ledger.push_back(
+                    entityRecord(LedgerKind::SurfacePartLost,
+                                 surfaceRef(input, static_cast<int>(s)), true, centre, 0.0, "area",
+                                 QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                   "a connected part of the surface disappeared")));
         if (outCount > inCount) {
             // The largest parts continue the input's; each smaller one is a new piece to review.
             const std::vector<SurfacePart> parts = surfaceParts(output.surfaces[it->second]);
             for (int k = inCount; k < outCount; ++k)
-                ledger.push_back(
-                    entityRecord(LedgerKind::SurfacePartCreated, surfaceRef(output, it->second),
-                                 false, parts[k].centroid, parts[k].area, "area",
-                                 "the surface was split into more parts: this one is separate"));
+                ledger.push_back(entityRecord(
+                    LedgerKind::SurfacePartCreated, surfaceRef(output, it->second), false,
+                    parts[k].centroid, parts[k].area, "area",
+                    QT_TRANSLATE_NOOP(
+                        "stratamesh::Core",
+                        "the surface was split into more parts: this one is separate")));
         }
     }
 
@@ -201,16 +209,18 @@ void recordEntityChanges(const Model &input, const Model &output, Simplification
             outMatched[match[i]] = 1;
             continue;
         }
-        ledger.push_back(entityRecord(LedgerKind::LineLost, lineRef(input, static_cast<int>(i)),
-                                      true, inPos[i], polylineLength(input, input.lines[i]),
-                                      "length", "contact or border line not in the output"));
+        ledger.push_back(entityRecord(
+            LedgerKind::LineLost, lineRef(input, static_cast<int>(i)), true, inPos[i],
+            polylineLength(input, input.lines[i]), "length",
+            QT_TRANSLATE_NOOP("stratamesh::Core", "contact or border line not in the output")));
     }
     for (std::size_t o = 0; o < output.lines.size(); ++o)
         if (!outMatched[o])
-            ledger.push_back(entityRecord(LedgerKind::LineCreated,
-                                          lineRef(output, static_cast<int>(o)), false, outPos[o],
-                                          polylineLength(output, output.lines[o]), "length",
-                                          "line of the output with no counterpart in the input"));
+            ledger.push_back(entityRecord(
+                LedgerKind::LineCreated, lineRef(output, static_cast<int>(o)), false, outPos[o],
+                polylineLength(output, output.lines[o]), "length",
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "line of the output with no counterpart in the input")));
 
     inKeys.clear();
     outKeys.clear();
@@ -239,13 +249,17 @@ void recordEntityChanges(const Model &input, const Model &output, Simplification
         }
         ledger.push_back(entityRecord(
             LedgerKind::CornerLost, cornerRef(input, static_cast<int>(i)), true, inPos[i], nearest,
-            "distance", "corner not in the output (distance to the nearest output corner)"));
+            "distance",
+            QT_TRANSLATE_NOOP("stratamesh::Core",
+                              "corner not in the output (distance to the nearest output corner)")));
     }
     for (std::size_t o = 0; o < output.corners.size(); ++o)
         if (!cornerMatched[o])
             ledger.push_back(entityRecord(
                 LedgerKind::CornerCreated, cornerRef(output, static_cast<int>(o)), false, outPos[o],
-                0.0, "distance", "corner of the output with no counterpart in the input"));
+                0.0, "distance",
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "corner of the output with no counterpart in the input")));
 }
 
 Model buildOutputModel(const Model &input, const OutputMesh &mesh, SimplificationLedger &ledger,

@@ -9,6 +9,9 @@
 #include <map>
 #include <numeric>
 
+// lupdate reads the notes from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -188,7 +191,7 @@ std::vector<EntityRef> refsOf(const Model &model, const OutputPoint &p)
 
 LedgerRecord mergeRecord(LedgerKind kind, const Model &model, PointSet &set,
                          const std::vector<Vec3> &before, int root, double size,
-                         const std::string &meaning, const std::string &note)
+                         const std::string &meaning, const char *note)
 {
     LedgerRecord r;
     r.kind = kind;
@@ -199,7 +202,7 @@ LedgerRecord mergeRecord(LedgerKind kind, const Model &model, PointSet &set,
         for (const Vec3 &b : before)
             r.size = std::max(r.size, (b - r.position).norm());
     r.sizeMeaning = meaning;
-    r.note = note;
+    setNote(r, {note, {}});
     return r;
 }
 
@@ -274,7 +277,9 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
         if (cornerPositions.size() > 1)
             ledger.push_back(mergeRecord(
                 LedgerKind::CornerMerge, model, set, cornerPositions, bcPoint[b], 0.0, "distance",
-                "corners of one Voronoi cell joined by a line merged (Fig 4.6b)"));
+                QT_TRANSLATE_NOOP(
+                    "stratamesh::Core",
+                    "corners of one Voronoi cell joined by a line merged (Fig 4.6b)")));
     }
 
     // (1) cell components without lines: centroid projected onto the component.
@@ -346,7 +351,9 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
             const int root = set.merge(roots, closestOn(all, mean(before)), PointOrigin::Line);
             ledger.push_back(mergeRecord(
                 LedgerKind::MultiPointMerge, model, set, before, root, 0.0, "distance",
-                "a cell component with more than two points: points merged (Fig 4.6a)"));
+                QT_TRANSLATE_NOOP(
+                    "stratamesh::Core",
+                    "a cell component with more than two points: points merged (Fig 4.6a)")));
             continue;
         }
         // Merge the two points whose model parts are closest, until two are left: the same
@@ -373,7 +380,8 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
                 set.merge({roots[bi], roots[bj]}, closestOn(both, mean(before)), origin);
             ledger.push_back(mergeRecord(
                 LedgerKind::MultiPointMerge, model, set, before, root, best, "distance",
-                "a cell component with more than two points: its two closest merged (Fig 4.6a)"));
+                QT_TRANSLATE_NOOP("stratamesh::Core", "a cell component with more than two points: "
+                                                      "its two closest merged (Fig 4.6a)")));
             roots.erase(roots.begin() + static_cast<std::ptrdiff_t>(bj));
             roots[bi] = root;
         }
@@ -399,7 +407,9 @@ CellPoints computeCellPoints(const Model &model, const RestrictionDomain &domain
                     const int root = set.merge({a, b}, mean(before), origin);
                     ledger.push_back(mergeRecord(
                         LedgerKind::CloseFeatureMerge, model, set, before, root, d, "distance",
-                        "model parts closer than d_resolution merged (Fig 4.7)"));
+                        QT_TRANSLATE_NOOP(
+                            "stratamesh::Core",
+                            "model parts closer than d_resolution merged (Fig 4.7)")));
                 }
         }
     }

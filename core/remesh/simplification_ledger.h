@@ -3,6 +3,7 @@
 // these records one by one; each names what it touched, where, and how big the change was.
 #pragma once
 
+#include "common/message_text.h"
 #include "model/model.h"
 
 #include <string>
@@ -52,7 +53,8 @@ struct LedgerRecord {
     Vec3 position = Vec3::Zero();   // where to look
     double size = 0.0;              // distance moved, area or length (see sizeMeaning)
     std::string sizeMeaning;        // "distance", "area", "length"
-    std::string note;               // one line for the reviewer
+    std::string note;               // one line for the reviewer: noteText.text()
+    MessageText noteText;           // the same, for a translation (empty when read from a file)
     // For a lost or created entity: the index in the ledger of the simplification that caused it
     // (the nearest one within reach), or -1 when none did (an artefact of the resolution).
     int cause = -1;
@@ -65,6 +67,13 @@ EntityRef surfaceRef(const Model &model, int surface);
 EntityRef lineRef(const Model &model, int line);
 EntityRef cornerRef(const Model &model, int corner);
 EntityRef vertexRef(int vertex);
+
+// Sets the record's note and its pattern for translations.
+inline void setNote(LedgerRecord &record, MessageText text)
+{
+    record.note = text.text();
+    record.noteText = std::move(text);
+}
 
 // Adds `ref` to `refs` unless already present (records list each entity once).
 void addUnique(std::vector<EntityRef> &refs, const EntityRef &ref);

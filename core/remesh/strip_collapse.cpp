@@ -13,6 +13,9 @@
 #include <string>
 #include <unordered_map>
 
+// lupdate reads the notes from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -548,9 +551,10 @@ StripCollapse removeThinStrips(const Model &input, double maxWidth, Simplificati
         }
         if (area > 0.0)
             centre /= area;
-        const std::string what =
-            "strip " + gone.name + " (" + std::to_string(static_cast<int>(strip.width + 0.5))
-            + " m wide, limit " + std::to_string(static_cast<int>(maxWidth + 0.5)) + " m)";
+        // The strip, its width and the limit it was under, in the notes' %1, %2, %3.
+        const std::vector<std::string> strip3{gone.name,
+                                              std::to_string(static_cast<int>(strip.width + 0.5)),
+                                              std::to_string(static_cast<int>(maxWidth + 0.5))};
         LedgerRecord merge;
         merge.kind = LedgerKind::CloseFeatureMerge;
         // The lines are named as in the input: a later strip's lines exist only in the model
@@ -566,7 +570,10 @@ StripCollapse removeThinStrips(const Model &input, double maxWidth, Simplificati
         merge.position = centre;
         merge.size = strip.width;
         merge.sizeMeaning = "distance";
-        merge.note = what + " removed: its two lines merged half-way (Fig 4.7 per strip)";
+        setNote(merge, {QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "strip %1 (%2 m wide, limit %3 m) removed: its two lines "
+                                          "merged half-way (Fig 4.7 per strip)"),
+                        strip3});
         ledger.push_back(merge);
         LedgerRecord lost;
         lost.kind = LedgerKind::SurfaceLost;
@@ -574,7 +581,10 @@ StripCollapse removeThinStrips(const Model &input, double maxWidth, Simplificati
         lost.position = centre;
         lost.size = area;
         lost.sizeMeaning = "area";
-        lost.note = what + " removed before remeshing";
+        setNote(lost,
+                {QT_TRANSLATE_NOOP("stratamesh::Core",
+                                   "strip %1 (%2 m wide, limit %3 m) removed before remeshing"),
+                 strip3});
         ledger.push_back(lost);
         ThinStrip recorded = strip;
         recorded.surface = inputSurface;

@@ -1,7 +1,11 @@
 // The French translation is complete, current with the sources, and loaded at run time.
+#include "core_text.h"
 #include "gui_options.h"
+#include "ledger_table_model.h"
 #include "main_window.h"
+#include "model/validity.h"
 #include "translations.h"
+#include "validity_messages.h"
 
 #include <QAction>
 #include <QApplication>
@@ -119,7 +123,9 @@ private slots:
                        QStringLiteral("-locations"), QStringLiteral("none"),
                        QStringLiteral(STRATAMESH_GUI_SOURCE_DIR),
                        QStringLiteral(STRATAMESH_WIDGETS_SOURCE_DIR),
-                       QStringLiteral(STRATAMESH_PARAMS_SOURCE_DIR), QStringLiteral("-ts"), fresh});
+                       QStringLiteral(STRATAMESH_PARAMS_SOURCE_DIR),
+                       QStringLiteral(STRATAMESH_MODEL_SOURCE_DIR),
+                       QStringLiteral(STRATAMESH_REMESH_SOURCE_DIR), QStringLiteral("-ts"), fresh});
         QVERIFY(lupdate.waitForFinished(60000));
         QVERIFY2(lupdate.exitCode() == 0, lupdate.readAll().constData());
         QSet<QString> expected, committed;
@@ -187,6 +193,46 @@ private slots:
                                      QStringLiteral("&Affichage"), QStringLiteral("&Maillage"),
                                      QStringLiteral("A&nalyse"), QStringLiteral("&Aide")}));
         QCOMPARE(window.showBoxAction()->text(), QStringLiteral("Afficher la &boîte"));
+
+        // Core's sentences too: a validity problem, with its values filled in after translation.
+        Model model;
+        Surface repeated;
+        repeated.name = "h1";
+        repeated.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+        repeated.triangles = {{0, 1, 1}};
+        model.surfaces.push_back(repeated);
+        const ValidityReport report = checkValidity(model);
+        QVERIFY(!report.problems.empty());
+        const std::vector<Message> messages = validityMessages(report, QStringLiteral("m.ml"));
+        QCOMPARE(messages.size(), report.problems.size());
+        for (std::size_t i = 0; i < messages.size(); ++i) {
+            QVERIFY(!report.problems[i].text.pattern.empty());
+            QVERIFY2(messages[i].text != QString::fromStdString(report.problems[i].message),
+                     qPrintable(messages[i].text));
+        }
+        const auto degenerate =
+            std::find_if(messages.begin(), messages.end(), [](const Message &m) {
+                return m.text.contains(QStringLiteral("utilise deux fois"));
+            });
+        QVERIFY(degenerate != messages.end());
+        QCOMPARE(degenerate->text,
+                 QStringLiteral("le triangle 0 de h1 utilise deux fois le même sommet"));
+
+        // A ledger note, made in core and read back from a report (no pattern) alike.
+        auto ledger = std::make_shared<SimplificationLedger>(2);
+        setNote((*ledger)[0], {"strip %1 (%2 m wide, limit %3 m) removed before remeshing",
+                               {"F2_a", "12", "40"}});
+        (*ledger)[1].note = "surface entirely below the resolution";
+        LedgerTableModel table;
+        table.setLedger(ledger);
+        QCOMPARE(table.index(0, LedgerTableModel::NoteColumn).data().toString(),
+                 QStringLiteral("bande F2_a (12 m de large, limite 40 m) supprimée avant le "
+                                "remaillage"));
+        QCOMPARE(table.index(1, LedgerTableModel::NoteColumn).data().toString(),
+                 QStringLiteral("surface entièrement sous la résolution"));
+        // A value holding a place marker is not filled again.
+        QCOMPARE(coreText({"region %1 has no boundary surface", {"%2"}}, {}),
+                 QStringLiteral("la région %2 n'a aucune surface de bord"));
     }
 };
 
