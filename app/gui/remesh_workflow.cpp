@@ -215,7 +215,8 @@ void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
     m_comparison->setComparison(outcome.comparison);
     QMainWindow *window = m_bench.window();
     window->resizeDocks({m_comparisonDock}, {m_comparison->sizeHint().width()}, Qt::Horizontal);
-    window->resizeDocks({m_ledgerDock}, {220}, Qt::Vertical);
+    // Room for the buttons and a few rows to review.
+    window->resizeDocks({m_ledgerDock}, {260}, Qt::Vertical);
     // Lay the new panes out now: the camera is framed for the views' final sizes.
     window->layout()->activate();
     m_bench.views()->splitEvenly();

@@ -4,15 +4,17 @@
 
 #include "io/atomic_file.h"
 
+#include <QLocale>
 #include <QStringList>
 
 namespace stratamesh {
 
 namespace {
 
+// The shortest text that reads back as the same double: a spreadsheet loses nothing.
 QString number(double value)
 {
-    return QString::number(value, 'g', 12);
+    return QString::number(value, 'g', QLocale::FloatingPointShortest);
 }
 
 } // namespace
