@@ -31,6 +31,8 @@ LedgerPanel::LedgerPanel(QWidget *parent, LedgerTableModel *model)
     m_table->horizontalHeader()->setSortIndicatorClearable(true);
     m_table->setSortingEnabled(true);
     m_search->setClearButtonEnabled(true);
+    // "All kinds" and the kind names stay whole beside the search field.
+    m_kinds->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);

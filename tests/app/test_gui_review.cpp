@@ -321,6 +321,27 @@ private slots:
         QCOMPARE(ledger->visibleRowCount(), m_records);
     }
 
+    void frenchTexts()
+    {
+        installTranslations(QStringLiteral("fr"));
+        auto *dock = qobject_cast<QDockWidget *>(m_panel->parentWidget());
+        // The language change reaches the window through the event loop.
+        QTRY_COMPARE(dock->windowTitle(), QStringLiteral("Contrôle"));
+        QCOMPARE(m_panel->progressText(), QStringLiteral("3 sur %1 examinés").arg(m_records));
+        QCOMPARE(cell(2, ReviewTableModel::DecisionColumn), QStringLiteral("Signalée"));
+        QCOMPARE(
+            m_panel->reviewModel()->headerData(ReviewTableModel::DecisionColumn, Qt::Horizontal),
+            QStringLiteral("Décision"));
+        QVERIFY(m_panel->acceptAction()->toolTip().contains(QStringLiteral("(A ;")));
+        dock->raise(); // the failed export above raised Messages
+        QTest::qWait(200);
+        QVERIFY(saveWindowScreenshot(m_window.get(), kShots + "/review_tab_fr.png"));
+        installTranslations(QStringLiteral("en"));
+        QLocale::setDefault(QLocale::c());
+        QTRY_COMPARE(dock->windowTitle(), QStringLiteral("Review"));
+        QCOMPARE(m_panel->progressText(), QStringLiteral("3 of %1 reviewed").arg(m_records));
+    }
+
     // A project file being loaded sets the decisions at once: the table and the count follow.
     void decisionsSetFromOutsideShow()
     {
