@@ -23,6 +23,8 @@
 #include <QFile>
 #include <QHeaderView>
 #include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QTableView>
@@ -123,6 +125,12 @@ private slots:
         QCOMPARE(m_panel->progressText(), QStringLiteral("0 of %1 reviewed").arg(m_records));
         QVERIFY(m_workflow->decisions().isEmpty());
         QVERIFY(m_workflow->exportReviewAction()->isEnabled());
+        QMenu *fileMenu = nullptr;
+        for (QAction *a : m_window->menuBar()->actions())
+            if (a->menu() && a->menu()->actions().contains(m_workflow->exportReviewAction()))
+                fileMenu = a->menu();
+        QVERIFY2(fileMenu, "Export Review as CSV is in a menu");
+        QCOMPARE(fileMenu->title(), QStringLiteral("&File"));
         QVERIFY(m_panel->acceptAction()->toolTip().contains(QStringLiteral("(A")));
         QVERIFY(m_panel->flagAction()->toolTip().contains(QStringLiteral("(F")));
         QVERIFY(m_panel->noteAction()->toolTip().contains(QStringLiteral("(N")));
@@ -359,6 +367,12 @@ private slots:
     void newRemeshStartsANewReview()
     {
         m_workflow->ledgerPanel()->selectRow(0);
+        m_panel->acceptCurrent();
+        QCOMPARE(m_workflow->decisions().reviewedCount(), 2);
+        // Accepting an accepted record reopens it.
+        m_panel->acceptCurrent();
+        QCOMPARE(m_workflow->decisions().decision(0).verdict, ReviewVerdict::Open);
+        QCOMPARE(m_undo->undoText(), QStringLiteral("Reopen record 0"));
         m_panel->acceptCurrent();
         QCOMPARE(m_workflow->decisions().reviewedCount(), 2);
         QVERIFY(remesh(400));
