@@ -76,6 +76,25 @@
     </message>
 </context>
 <context>
+    <name>ReviewCommand</name>
+    <message>
+        <source>Note on record %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Accept record %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Flag record %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reopen record %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>ValidityMessages</name>
     <message>
         <source>… and %1 more problems of kind “%2”</source>
@@ -874,6 +893,14 @@ angle (°)</source>
         <source>All kinds</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Search…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show only the records whose text holds this (any column)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::LedgerTableModel</name>
@@ -1521,14 +1548,6 @@ Click to show it in the views</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Simplifications</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Simplifications</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Input vs Output</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1559,13 +1578,6 @@ Click to show it in the views</source>
         <translation>
             <numerusform>Remeshed, NOT valid: %n problem — see Messages</numerusform>
             <numerusform>Remeshed, NOT valid: %n problems — see Messages</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>Remeshed: %n simplification(s) — see Simplifications</source>
-        <translation>
-            <numerusform>Remeshed: %n simplification — see Simplifications</numerusform>
-            <numerusform>Remeshed: %n simplifications — see Simplifications</numerusform>
         </translation>
     </message>
     <message>
@@ -1610,6 +1622,127 @@ Click to show it in the views</source>
     </message>
     <message>
         <source>The remeshed model has not been saved.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Re&amp;view as CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export Review as CSV: every record with its decision and note</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write every simplification with its decision and note as a CSV table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Review</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Review</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed: %n simplification(s) — see Review</source>
+        <translation>
+            <numerusform>Remeshed: %n simplification — see Review</numerusform>
+            <numerusform>Remeshed: %n simplifications — see Review</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export Review</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV table (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Review exported: %1 of %2 records reviewed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not export the review</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ReviewPanel</name>
+    <message>
+        <source>&amp;Accept</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Accept the selected simplification (A; again to reopen it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Flag</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Flag the selected simplification for a closer look (F; again to reopen it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Note</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write a note on the selected simplification (N; Enter keeps it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Previous</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go to the previous record and show it in both views (K or Up)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ne&amp;xt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go to the next record and show it in both views (J or Down)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 reviewed</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ReviewTableModel</name>
+    <message>
+        <source>Accepted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Flagged</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Decision</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Review note</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>#</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

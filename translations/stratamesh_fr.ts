@@ -76,6 +76,25 @@
     </message>
 </context>
 <context>
+    <name>ReviewCommand</name>
+    <message>
+        <source>Note on record %1</source>
+        <translation>Note sur l’enregistrement %1</translation>
+    </message>
+    <message>
+        <source>Accept record %1</source>
+        <translation>Accepter l’enregistrement %1</translation>
+    </message>
+    <message>
+        <source>Flag record %1</source>
+        <translation>Signaler l’enregistrement %1</translation>
+    </message>
+    <message>
+        <source>Reopen record %1</source>
+        <translation>Rouvrir l’enregistrement %1</translation>
+    </message>
+</context>
+<context>
     <name>ValidityMessages</name>
     <message>
         <source>… and %1 more problems of kind “%2”</source>
@@ -876,6 +895,14 @@ min. (°)</translation>
         <source>All kinds</source>
         <translation>Tous les types</translation>
     </message>
+    <message>
+        <source>Search…</source>
+        <translation>Rechercher…</translation>
+    </message>
+    <message>
+        <source>Show only the records whose text holds this (any column)</source>
+        <translation>N’afficher que les enregistrements dont le texte contient ceci (dans toute colonne)</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::LedgerTableModel</name>
@@ -1524,14 +1551,6 @@ Cliquer pour le montrer dans les vues</translation>
         <translation>Écrire le modèle remaillé dans un fichier Gocad, RINGMesh, Gmsh ou VTK</translation>
     </message>
     <message>
-        <source>Simplifications</source>
-        <translation>Simplifications</translation>
-    </message>
-    <message>
-        <source>&amp;Simplifications</source>
-        <translation>&amp;Simplifications</translation>
-    </message>
-    <message>
         <source>Input vs Output</source>
         <translation>Entrée et sortie</translation>
     </message>
@@ -1562,13 +1581,6 @@ Cliquer pour le montrer dans les vues</translation>
         <translation>
             <numerusform>Remaillé, NON valide : %n problème — voir Messages</numerusform>
             <numerusform>Remaillé, NON valide : %n problèmes — voir Messages</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>Remeshed: %n simplification(s) — see Simplifications</source>
-        <translation>
-            <numerusform>Remaillé : %n simplification — voir Simplifications</numerusform>
-            <numerusform>Remaillé : %n simplifications — voir Simplifications</numerusform>
         </translation>
     </message>
     <message>
@@ -1614,6 +1626,127 @@ Cliquer pour le montrer dans les vues</translation>
     <message>
         <source>The remeshed model has not been saved.</source>
         <translation>Le modèle remaillé n&apos;a pas été enregistré.</translation>
+    </message>
+    <message>
+        <source>Export Re&amp;view as CSV…</source>
+        <translation>Exporter le &amp;contrôle en CSV…</translation>
+    </message>
+    <message>
+        <source>Export Review as CSV: every record with its decision and note</source>
+        <translation>Exporter le contrôle en CSV : chaque enregistrement avec sa décision et sa note</translation>
+    </message>
+    <message>
+        <source>Write every simplification with its decision and note as a CSV table</source>
+        <translation>Écrire chaque simplification avec sa décision et sa note dans un tableau CSV</translation>
+    </message>
+    <message>
+        <source>Review</source>
+        <translation>Contrôle</translation>
+    </message>
+    <message>
+        <source>&amp;Review</source>
+        <translation>&amp;Contrôle</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remeshed: %n simplification(s) — see Review</source>
+        <translation>
+            <numerusform>Remaillé : %n simplification — voir Contrôle</numerusform>
+            <numerusform>Remaillé : %n simplifications — voir Contrôle</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export Review</source>
+        <translation>Exporter le contrôle</translation>
+    </message>
+    <message>
+        <source>CSV table (*.csv)</source>
+        <translation>Tableau CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Review exported: %1 of %2 records reviewed</source>
+        <translation>Contrôle exporté : %1 enregistrements sur %2 examinés</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exporté</translation>
+    </message>
+    <message>
+        <source>Could not export the review</source>
+        <translation>Impossible d’exporter le contrôle</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ReviewPanel</name>
+    <message>
+        <source>&amp;Accept</source>
+        <translation>&amp;Accepter</translation>
+    </message>
+    <message>
+        <source>Accept the selected simplification (A; again to reopen it)</source>
+        <translation>Accepter la simplification sélectionnée (A ; une seconde fois pour la rouvrir)</translation>
+    </message>
+    <message>
+        <source>&amp;Flag</source>
+        <translation>&amp;Signaler</translation>
+    </message>
+    <message>
+        <source>Flag the selected simplification for a closer look (F; again to reopen it)</source>
+        <translation>Signaler la simplification sélectionnée pour un examen plus attentif (F ; une seconde fois pour la rouvrir)</translation>
+    </message>
+    <message>
+        <source>&amp;Note</source>
+        <translation>&amp;Note</translation>
+    </message>
+    <message>
+        <source>Write a note on the selected simplification (N; Enter keeps it)</source>
+        <translation>Écrire une note sur la simplification sélectionnée (N ; Entrée la garde)</translation>
+    </message>
+    <message>
+        <source>&amp;Previous</source>
+        <translation>&amp;Précédent</translation>
+    </message>
+    <message>
+        <source>Go to the previous record and show it in both views (K or Up)</source>
+        <translation>Aller à l’enregistrement précédent et le montrer dans les deux vues (K ou Haut)</translation>
+    </message>
+    <message>
+        <source>Ne&amp;xt</source>
+        <translation>Sui&amp;vant</translation>
+    </message>
+    <message>
+        <source>Go to the next record and show it in both views (J or Down)</source>
+        <translation>Aller à l’enregistrement suivant et le montrer dans les deux vues (J ou Bas)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 reviewed</source>
+        <translation>%1 sur %2 examinés</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ReviewTableModel</name>
+    <message>
+        <source>Accepted</source>
+        <translation>Acceptée</translation>
+    </message>
+    <message>
+        <source>Flagged</source>
+        <translation>Signalée</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>À examiner</translation>
+    </message>
+    <message>
+        <source>Decision</source>
+        <translation>Décision</translation>
+    </message>
+    <message>
+        <source>Review note</source>
+        <translation>Note de contrôle</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>n°</translation>
     </message>
 </context>
 <context>

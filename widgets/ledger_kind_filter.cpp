@@ -4,7 +4,11 @@
 
 namespace stratamesh {
 
-LedgerKindFilter::LedgerKindFilter(QObject *parent) : QSortFilterProxyModel(parent) {}
+LedgerKindFilter::LedgerKindFilter(QObject *parent) : QSortFilterProxyModel(parent)
+{
+    setSortRole(LedgerTableModel::SortRole);
+    setSortCaseSensitivity(Qt::CaseInsensitive);
+}
 
 void LedgerKindFilter::setKind(std::optional<LedgerKind> kind)
 {
@@ -12,6 +16,15 @@ void LedgerKindFilter::setKind(std::optional<LedgerKind> kind)
         return;
     // Qt 6.4 has no begin/endFilterChange: invalidateFilter() re-runs filterAcceptsRow.
     m_kind = kind;
+    invalidateFilter();
+}
+
+void LedgerKindFilter::setSearchText(const QString &text)
+{
+    const QString trimmed = text.trimmed();
+    if (trimmed == m_search)
+        return;
+    m_search = trimmed;
     invalidateFilter();
 }
 
@@ -24,10 +37,21 @@ int LedgerKindFilter::recordIndex(int row) const
 
 bool LedgerKindFilter::filterAcceptsRow(int sourceRow, const QModelIndex &sourceParent) const
 {
-    if (!m_kind)
+    const QAbstractItemModel *source = sourceModel();
+    if (m_kind
+        && source->index(sourceRow, 0, sourceParent).data(LedgerTableModel::KindRole).toInt()
+               != int(*m_kind))
+        return false;
+    if (m_search.isEmpty())
         return true;
-    const QModelIndex i = sourceModel()->index(sourceRow, 0, sourceParent);
-    return i.data(LedgerTableModel::KindRole).toInt() == int(*m_kind);
+    // Every column the source has, so a derived model's columns (a review note) are searched too.
+    for (int c = 0; c < source->columnCount(sourceParent); ++c)
+        if (source->index(sourceRow, c, sourceParent)
+                .data()
+                .toString()
+                .contains(m_search, Qt::CaseInsensitive))
+            return true;
+    return false;
 }
 
 } // namespace stratamesh

@@ -9,6 +9,7 @@
 #include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QLabel>
+#include <QLineEdit>
 #include <QTableView>
 #include <QVBoxLayout>
 
@@ -16,13 +17,22 @@
 
 namespace stratamesh {
 
-LedgerPanel::LedgerPanel(QWidget *parent)
-    : QWidget(parent), m_model(new LedgerTableModel(this)), m_filter(new LedgerKindFilter(this)),
-      m_kinds(new QComboBox(this)), m_filterLabel(new QLabel(this)), m_summary(new QLabel(this)),
+LedgerPanel::LedgerPanel(QWidget *parent, LedgerTableModel *model)
+    : QWidget(parent), m_model(model ? model : new LedgerTableModel(this)),
+      m_filter(new LedgerKindFilter(this)), m_kinds(new QComboBox(this)),
+      m_filterLabel(new QLabel(this)), m_search(new QLineEdit(this)), m_summary(new QLabel(this)),
       m_table(new QTableView(this))
 {
+    m_model->setParent(this);
     m_filter->setSourceModel(m_model);
     m_table->setModel(m_filter);
+    // The ledger order first; a click on a header sorts, a third click returns to that order.
+    m_table->horizontalHeader()->setSortIndicator(-1, Qt::AscendingOrder);
+    m_table->horizontalHeader()->setSortIndicatorClearable(true);
+    m_table->setSortingEnabled(true);
+    m_search->setClearButtonEnabled(true);
+    // "All kinds" and the kind names stay whole beside the search field.
+    m_kinds->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -37,6 +47,7 @@ LedgerPanel::LedgerPanel(QWidget *parent)
     auto *top = new QHBoxLayout;
     top->addWidget(m_filterLabel);
     top->addWidget(m_kinds);
+    top->addWidget(m_search);
     top->addWidget(m_summary, 1);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -47,6 +58,10 @@ LedgerPanel::LedgerPanel(QWidget *parent)
         const QVariant kind = m_kinds->itemData(i);
         m_filter->setKind(kind.isValid() ? std::optional<LedgerKind>(LedgerKind(kind.toInt()))
                                          : std::nullopt);
+        onSelectionChanged();
+    });
+    connect(m_search, &QLineEdit::textChanged, this, [this](const QString &text) {
+        m_filter->setSearchText(text);
         onSelectionChanged();
     });
     connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this,
@@ -79,6 +94,11 @@ void LedgerPanel::setKindFilter(std::optional<LedgerKind> kind)
         m_filter->setKind(kind); // a kind absent from the ledger: an empty table
 }
 
+void LedgerPanel::setSearchText(const QString &text)
+{
+    m_search->setText(text);
+}
+
 void LedgerPanel::selectRow(int row)
 {
     if (row < 0 || row >= m_filter->rowCount())
@@ -107,6 +127,8 @@ void LedgerPanel::changeEvent(QEvent *event)
 void LedgerPanel::retranslate()
 {
     m_filterLabel->setText(tr("Kind:"));
+    m_search->setPlaceholderText(tr("Search…"));
+    m_search->setToolTip(tr("Show only the records whose text holds this (any column)"));
     fillKinds();
     if (m_model->ledger() && !m_model->ledger()->empty())
         m_summary->setText(LedgerTableModel::summary(*m_model->ledger()));

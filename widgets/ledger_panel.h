@@ -1,5 +1,6 @@
-// The "Simplifications" panel: the ledger of a remeshing as a table, filtered by kind, with a
-// summary line of the counts per kind. Selecting a row tells which record to look at.
+// The "Simplifications" panel: the ledger of a remeshing as a table, filtered by kind and by a
+// search text, sortable by any column, with a summary line of the counts per kind. Selecting a
+// row tells which record to look at.
 #pragma once
 
 #include "remesh/simplification_ledger.h"
@@ -11,6 +12,7 @@
 
 class QComboBox;
 class QLabel;
+class QLineEdit;
 class QTableView;
 
 namespace stratamesh {
@@ -21,12 +23,15 @@ class LedgerTableModel;
 class LedgerPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit LedgerPanel(QWidget *parent = nullptr);
+    // `model` (adopted) may be a LedgerTableModel with more columns, such as the review's.
+    explicit LedgerPanel(QWidget *parent = nullptr, LedgerTableModel *model = nullptr);
 
     // nullptr clears the table.
     void setLedger(std::shared_ptr<const SimplificationLedger> ledger);
     // Same as choosing in the kind combo; std::nullopt shows every kind.
     void setKindFilter(std::optional<LedgerKind> kind);
+    // Same as typing in the search field.
+    void setSearchText(const QString &text);
     // Selects the visible row `row` (as a user click would), -1 clears the selection.
     void selectRow(int row);
 
@@ -36,6 +41,7 @@ public:
     LedgerKindFilter *filter() const { return m_filter; }
     QTableView *tableView() const { return m_table; }
     QComboBox *kindCombo() const { return m_kinds; }
+    QLineEdit *searchEdit() const { return m_search; }
 
 signals:
     // Index in the ledger of the selected record, -1 when nothing is selected.
@@ -53,6 +59,7 @@ private:
     LedgerKindFilter *m_filter;
     QComboBox *m_kinds;
     QLabel *m_filterLabel;
+    QLineEdit *m_search;
     QLabel *m_summary;
     QTableView *m_table;
 };

@@ -41,6 +41,12 @@ QVariant LedgerTableModel::data(const QModelIndex &index, int role) const
         return int(r->kind);
     if (role == RecordIndexRole)
         return index.row();
+    if (role == SortRole) {
+        // "12.5 (distance)" sorts as text after "100 (distance)"; the size itself does not.
+        if (index.column() == SizeColumn)
+            return r->size;
+        return data(index, Qt::DisplayRole);
+    }
     if (role == Qt::TextAlignmentRole && index.column() == SizeColumn)
         return int(Qt::AlignRight | Qt::AlignVCenter);
     if (role == Qt::ToolTipRole) {

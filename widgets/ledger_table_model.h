@@ -28,6 +28,7 @@ public:
     enum Role {
         KindRole = Qt::UserRole + 1, // int(LedgerKind), for filtering
         RecordIndexRole,             // index of the record in the ledger
+        SortRole,                    // what a column sorts by: numbers as numbers
     };
 
     explicit LedgerTableModel(QObject *parent = nullptr);

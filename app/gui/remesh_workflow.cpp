@@ -7,6 +7,9 @@
 #include "position_marker.h"
 #include "remesh_controller.h"
 #include "remesh_dialog.h"
+#include "review_command.h"
+#include "review_csv.h"
+#include "review_panel.h"
 #include "validity_messages.h"
 #include "view_pair.h"
 #include "vtk_view_widget.h"
@@ -25,6 +28,7 @@
 #include <QMainWindow>
 #include <QSettings>
 #include <QStyle>
+#include <QUndoStack>
 
 #include <vtkRenderer.h>
 
@@ -34,10 +38,10 @@ namespace stratamesh {
 
 RemeshWorkflow::RemeshWorkflow(Workbench &bench, QObject *parent)
     : Workflow(bench, parent), m_controller(new RemeshController(this)),
-      m_ledger(new LedgerPanel(bench.window())), m_ledgerDock(new QDockWidget(bench.window())),
+      m_review(new ReviewPanel(bench.window())), m_ledgerDock(new QDockWidget(bench.window())),
       m_comparison(new ComparisonTable(bench.window())),
       m_comparisonDock(new QDockWidget(bench.window())), m_remesh(new QAction(this)),
-      m_cancel(new QAction(this)), m_save(new QAction(this))
+      m_cancel(new QAction(this)), m_save(new QAction(this)), m_exportReview(new QAction(this))
 {
     const QStyle *style = bench.window()->style();
     m_remesh->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
@@ -53,12 +57,20 @@ RemeshWorkflow::RemeshWorkflow(Workbench &bench, QObject *parent)
                                      style->standardIcon(QStyle::SP_DialogSaveButton)));
     m_save->setEnabled(false);
     connect(m_save, &QAction::triggered, this, &RemeshWorkflow::chooseFile);
+    m_exportReview->setIcon(style->standardIcon(QStyle::SP_DialogSaveButton));
+    m_exportReview->setEnabled(false);
+    connect(m_exportReview, &QAction::triggered, this, &RemeshWorkflow::chooseReviewFile);
 
-    m_ledgerDock->setObjectName(QStringLiteral("SimplificationsDock"));
-    m_ledgerDock->setWidget(m_ledger);
+    m_ledgerDock->setObjectName(QStringLiteral("ReviewDock"));
+    m_ledgerDock->setWidget(m_review);
+    m_review->addAction(m_exportReview);
     m_comparisonDock->setObjectName(QStringLiteral("ComparisonDock"));
     m_comparisonDock->setWidget(m_comparison);
-    connect(m_ledger, &LedgerPanel::recordSelected, this, &RemeshWorkflow::showLedgerRecord);
+    connect(m_review, &ReviewPanel::recordSelected, this, &RemeshWorkflow::showLedgerRecord);
+    connect(m_review, &ReviewPanel::decisionRequested, this, &RemeshWorkflow::review);
+    // However the decisions change (a choice, an undo, a project loaded), the table follows.
+    connect(this, &RemeshWorkflow::decisionsChanged, this,
+            [this] { m_review->setDecisions(m_decisions); });
 
     connect(m_controller, &RemeshController::started, this, &RemeshWorkflow::onStarted);
     connect(m_controller, &RemeshController::succeeded, this, &RemeshWorkflow::onRemeshed);
@@ -77,7 +89,7 @@ QList<QAction *> RemeshWorkflow::menuActions(Menu menu) const
 {
     switch (menu) {
     case Menu::File:
-        return {m_save};
+        return {m_save, m_exportReview};
     case Menu::Mesh:
         return {m_remesh, m_cancel};
     case Menu::Edit:
@@ -112,8 +124,12 @@ void RemeshWorkflow::retranslate()
     m_cancel->setStatusTip(tr("Stop the remeshing; the input model is left as it is"));
     m_save->setText(tr("Save Remeshed Model &As…"));
     m_save->setStatusTip(tr("Write the remeshed model as a Gocad, RINGMesh, Gmsh or VTK file"));
-    m_ledgerDock->setWindowTitle(tr("Simplifications"));
-    m_ledgerDock->toggleViewAction()->setText(tr("&Simplifications"));
+    m_exportReview->setText(tr("Export Re&view as CSV…"));
+    m_exportReview->setToolTip(tr("Export Review as CSV: every record with its decision and note"));
+    m_exportReview->setStatusTip(
+        tr("Write every simplification with its decision and note as a CSV table"));
+    m_ledgerDock->setWindowTitle(tr("Review"));
+    m_ledgerDock->toggleViewAction()->setText(tr("&Review"));
     m_comparisonDock->setWindowTitle(tr("Input vs Output"));
     m_comparisonDock->toggleViewAction()->setText(tr("&Input vs Output"));
     updateViewTitles();
@@ -133,12 +149,13 @@ void RemeshWorkflow::clear()
     setDecisions({});
     m_bench.hidePosition();
     m_bench.outputScene()->setModel(nullptr);
-    m_ledger->setLedger(nullptr);
+    m_review->setLedger(nullptr);
     m_comparison->setComparison(std::nullopt);
     m_bench.views()->setOutputShown(false);
     m_ledgerDock->hide();
     m_comparisonDock->hide();
     m_save->setEnabled(false);
+    m_exportReview->setEnabled(false);
     updateViewTitles();
 }
 
@@ -146,6 +163,7 @@ void RemeshWorkflow::enableActions(bool busy)
 {
     m_remesh->setEnabled(!busy && m_bench.model());
     m_save->setEnabled(!busy && m_outcome.has_value());
+    m_exportReview->setEnabled(m_outcome.has_value());
 }
 
 void RemeshWorkflow::remesh()
@@ -192,11 +210,13 @@ void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
     m_ledgerDock->show();
     m_ledgerDock->raise();
     m_comparisonDock->show();
-    m_ledger->setLedger(outcome.ledger);
+    m_review->setLedger(outcome.ledger);
+    m_exportReview->setEnabled(true);
     m_comparison->setComparison(outcome.comparison);
     QMainWindow *window = m_bench.window();
     window->resizeDocks({m_comparisonDock}, {m_comparison->sizeHint().width()}, Qt::Horizontal);
-    window->resizeDocks({m_ledgerDock}, {220}, Qt::Vertical);
+    // Room for the buttons and a few rows to review.
+    window->resizeDocks({m_ledgerDock}, {260}, Qt::Vertical);
     // Lay the new panes out now: the camera is framed for the views' final sizes.
     window->layout()->activate();
     m_bench.views()->splitEvenly();
@@ -226,8 +246,8 @@ void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
                              int(outcome.validity.problems.size())));
         return;
     }
-    m_bench.setStatus(tr("Remeshed: %n simplification(s) — see Simplifications", nullptr,
-                         int(outcome.ledger->size())));
+    m_bench.setStatus(
+        tr("Remeshed: %n simplification(s) — see Review", nullptr, int(outcome.ledger->size())));
 }
 
 void RemeshWorkflow::onFailed(const Message &error)
@@ -256,6 +276,11 @@ void RemeshWorkflow::updateViewTitles()
                         locale.toString(qulonglong(m_outcome->output->triangleCount()))));
 }
 
+LedgerPanel *RemeshWorkflow::ledgerPanel() const
+{
+    return m_review->ledgerPanel();
+}
+
 PositionMarker *RemeshWorkflow::marker() const
 {
     return m_bench.outputMarker();
@@ -274,6 +299,55 @@ void RemeshWorkflow::showLedgerRecord(int recordIndex)
     // A distance or a length hints at how large the change is; an area is no radius.
     const bool isLength = record->sizeMeaning == "distance" || record->sizeMeaning == "length";
     m_bench.showPosition(record->position, isLength ? 0.5 * record->size : 0.0);
+}
+
+void RemeshWorkflow::review(int record, const ReviewDecision &decision)
+{
+    if (!m_outcome || record < 0 || record >= int(m_outcome->ledger->size()))
+        return;
+    const ReviewDecision before = m_decisions.decision(record);
+    if (before == decision)
+        return;
+    m_bench.undoStack()->push(new ReviewCommand(*this, record, before, decision));
+}
+
+bool RemeshWorkflow::chooseReviewFile()
+{
+    if (!m_outcome)
+        return false;
+    QSettings settings;
+    const QString dir = settings.value(QStringLiteral("lastDirectory")).toString();
+    QString path = QFileDialog::getSaveFileName(m_bench.window(), tr("Export Review"), dir,
+                                                tr("CSV table (*.csv)"));
+    if (path.isEmpty())
+        return false;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".csv");
+    settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
+    return exportReview(path);
+}
+
+bool RemeshWorkflow::exportReview(const QString &path)
+{
+    if (!m_outcome)
+        return false;
+    Message message;
+    message.file = path;
+    try {
+        writeReviewCsv(path, *m_outcome->ledger, m_decisions);
+        message.text = tr("Review exported: %1 of %2 records reviewed")
+                           .arg(QLocale().toString(m_decisions.reviewedCount()),
+                                QLocale().toString(qulonglong(m_outcome->ledger->size())));
+        m_bench.addMessage(message);
+        m_bench.setStatus(tr("Exported %1").arg(QFileInfo(path).fileName()));
+        return true;
+    } catch (const std::exception &e) {
+        message = errorMessage(e, path);
+    }
+    m_bench.addMessage(message);
+    m_bench.showMessages();
+    m_bench.setStatus(tr("Could not export the review"));
+    return false;
 }
 
 QString RemeshWorkflow::unsavedWork() const

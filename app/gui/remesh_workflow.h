@@ -1,6 +1,6 @@
 // Mesh > Remesh…: the dialog, the run (RemeshController), and the result beside the input in the
-// output view with its Simplifications ledger and its Input vs Output comparison; File > Save
-// Remeshed Model As….
+// output view with its Review tab (the ledger, a decision and a note per record, undoable) and its
+// Input vs Output comparison; File > Save Remeshed Model As… and File > Export Review as CSV….
 #pragma once
 
 #include "remesh_outcome.h"
@@ -15,6 +15,7 @@ namespace stratamesh {
 class ComparisonTable;
 class LedgerPanel;
 class PositionMarker;
+class ReviewPanel;
 class RemeshController;
 
 class RemeshWorkflow : public Workflow {
@@ -27,15 +28,19 @@ public:
     RemeshController *controller() const { return m_controller; }
     // The last remeshing shown, if any (cleared when another model is opened).
     const std::optional<RemeshOutcome> &outcome() const { return m_outcome; }
-    LedgerPanel *ledgerPanel() const { return m_ledger; }
+    ReviewPanel *reviewPanel() const { return m_review; }
+    // The review panel's ledger table (kind filter, search, sorting).
+    LedgerPanel *ledgerPanel() const;
     ComparisonTable *comparisonTable() const { return m_comparison; }
     // The record's mark in the output view (Workbench marks the input view too).
     PositionMarker *marker() const;
     // The review of the shown outcome's ledger (empty for a new remesh).
     const ReviewDecisions &decisions() const { return m_decisions; }
+    // Replaces every decision at once (a project being loaded, an undo); not undoable itself.
     void setDecisions(const ReviewDecisions &decisions);
     QAction *remeshAction() const { return m_remesh; }
     QAction *saveAction() const { return m_save; }
+    QAction *exportReviewAction() const { return m_exportReview; }
 
     QList<QAction *> menuActions(Menu menu) const override;
     QList<QAction *> toolBarActions() const override;
@@ -59,6 +64,13 @@ public slots:
     bool save(const QString &path);
     // Marks a ledger record in both views and flies the camera to it (-1: no mark).
     void showLedgerRecord(int recordIndex);
+    // The geologist's decision on one record, as a command on the undo stack (nothing when it
+    // changes nothing or the record is not in the shown ledger).
+    void review(int record, const ReviewDecision &decision);
+    // False when nothing was written.
+    bool chooseReviewFile();
+    // The review as CSV (review_csv.h); errors go to messages.
+    bool exportReview(const QString &path);
 
 signals:
     // A new remesh replaces the last, before it is shown: what was made of the last one goes.
@@ -77,13 +89,14 @@ private:
     RemeshParams m_lastParams;
     ReviewDecisions m_decisions;
     bool m_saved = false; // the shown outcome has been written to a file
-    LedgerPanel *m_ledger;
+    ReviewPanel *m_review;
     QDockWidget *m_ledgerDock;
     ComparisonTable *m_comparison;
     QDockWidget *m_comparisonDock;
     QAction *m_remesh;
     QAction *m_cancel;
     QAction *m_save;
+    QAction *m_exportReview;
 };
 
 } // namespace stratamesh
