@@ -8,6 +8,7 @@
 #include "export_controller.h"
 #include "export_dialog.h"
 #include "export_workflow.h"
+#include "hybrid_workflow.h"
 #include "io/mesh_reader.h"
 #include "main_window.h"
 #include "message_panel.h"
@@ -21,6 +22,7 @@
 #include "vtk_view_widget.h"
 #include "workbench.h"
 
+#include <QAbstractItemView>
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
@@ -288,6 +290,11 @@ private slots:
                 QVERIFY(d.setFormat(QStringLiteral(".vtu")));
                 d.setPath(path);
                 QVERIFY(d.grab().save(kShots + "/export_dialog_tets.png"));
+                d.formatBox()->showPopup();
+                QTest::qWait(200);
+                QVERIFY(d.formatBox()->view()->window()->grab().save(kShots
+                                                                     + "/export_formats_tets.png"));
+                d.formatBox()->hidePopup();
             },
             true));
         QVERIFY(vtpRefused);
@@ -315,6 +322,68 @@ private slots:
         if (!counted.isEmpty())
             QCOMPARE(counted,
                      QStringLiteral("%1 %2").arg(mesh->cells.size()).arg(mesh->points.size()));
+    }
+
+    // One surface of the remesh as OBJ, chosen in the dialog: `info` reads that surface alone.
+    void oneSurfaceAsObj()
+    {
+        const Model &output = *m_window->remeshWorkflow()->outcome()->output;
+        QVERIFY(output.surfaces.size() > 3);
+        const QString path = m_dir.filePath(QStringLiteral("surface.obj"));
+        QString warning;
+        QVERIFY(exportThroughDialog(
+            [&](ExportDialog &d) {
+                d.subjectBox()->setCurrentIndex(int(Subject::RemeshedModel));
+                d.setPath(path);
+                QVERIFY(d.surfaceBox()->isVisibleTo(&d));
+                QCOMPARE(d.surfaceBox()->count(), int(output.surfaces.size()));
+                d.surfaceBox()->setCurrentIndex(3);
+                QCOMPARE(d.options().surface, 3);
+                warning = d.warning();
+            },
+            true));
+        QVERIFY2(warning.contains("every surface but the chosen one"), qPrintable(warning));
+        QVERIFY(warning.contains("surface names") && warning.contains("regions"));
+        const QJsonObject read = info(path);
+        QCOMPARE(read.value("mesh").toObject().value("triangles").toInteger(),
+                 qint64(output.surfaces[3].triangles.size()));
+        QCOMPARE(read.value("counts").toObject().value("all").toObject().value("surfaces").toInt(),
+                 1);
+    }
+
+    // A hybrid mesh goes only where pyramids and prisms are kept; as Gmsh 4.1, every cell of
+    // every type comes back.
+    void hybridMeshAsMsh()
+    {
+        HybridParams params;
+        params.sites = 300;
+        QSignalSpy built(m_window->hybridWorkflow(), &HybridWorkflow::finished);
+        QVERIFY(m_window->hybridWorkflow()->start(params));
+        QVERIFY(built.wait(kTimeoutMs) && built.first().first().toBool());
+        const auto mesh = m_window->hybridWorkflow()->outcome()->mesh();
+        QVERIFY(mesh
+                && mesh->countCells(CellType::Prism) + mesh->countCells(CellType::Pyramid) > 0);
+        QCOMPARE(m_export->subjects()[int(Subject::HybridMesh)].data, ExportData::HybridMesh);
+
+        const QString path = m_dir.filePath(QStringLiteral("hybrid.msh"));
+        QString soWhy;
+        QVERIFY(exportThroughDialog(
+            [&](ExportDialog &d) {
+                d.subjectBox()->setCurrentIndex(int(Subject::HybridMesh));
+                const int so = d.formatBox()->findData(QStringLiteral(".so"));
+                if (!entryEnabled(d.formatBox(), so))
+                    soWhy = d.formatBox()->itemData(so, Qt::ToolTipRole).toString();
+                QVERIFY(d.setFormat(QStringLiteral(".msh")));
+                d.setPath(path);
+            },
+            true));
+        QVERIFY2(soWhy.contains("pyramids and prisms"), qPrintable(soWhy));
+        const VolumeMesh back = readVolumeMesh(path.toStdString());
+        for (const CellType type : {CellType::Tet, CellType::Pyramid, CellType::Prism})
+            QCOMPARE(back.countCells(type), mesh->countCells(type));
+        qInfo("hybrid mesh: %zu tets, %zu pyramids, %zu prisms read back from .msh",
+              back.countCells(CellType::Tet), back.countCells(CellType::Pyramid),
+              back.countCells(CellType::Prism));
     }
 
 private:
