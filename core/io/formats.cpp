@@ -283,6 +283,29 @@ std::vector<FormatLoss> formatLosses(const FileFormat &f, ExportData data)
     return out;
 }
 
+std::string describe(FormatLoss loss)
+{
+    switch (loss) {
+    case FormatLoss::OtherSurfaces:
+        return "all surfaces but one";
+    case FormatLoss::SurfaceNames:
+        return "surface names";
+    case FormatLoss::FeatureTypes:
+        return "feature types";
+    case FormatLoss::Regions:
+        return "regions";
+    case FormatLoss::LinesAndCorners:
+        return "lines and corners";
+    case FormatLoss::VolumeCells:
+        return "volume cells";
+    case FormatLoss::PyramidsPrisms:
+        return "pyramids and prisms";
+    case FormatLoss::DoublePrecision:
+        return "double precision (coordinates as 32-bit floats)";
+    }
+    return {};
+}
+
 std::vector<std::string> whatFormatDrops(const std::string &path, bool volume)
 {
     const FileFormat *f = findFormat(path);
@@ -290,34 +313,8 @@ std::vector<std::string> whatFormatDrops(const std::string &path, bool volume)
         return {};
     std::vector<std::string> out;
     for (const FormatLoss loss :
-         formatLosses(*f, volume ? ExportData::HybridMesh : ExportData::SurfaceModel)) {
-        switch (loss) {
-        case FormatLoss::OtherSurfaces:
-            out.emplace_back("all surfaces but one");
-            break;
-        case FormatLoss::SurfaceNames:
-            out.emplace_back("surface names");
-            break;
-        case FormatLoss::FeatureTypes:
-            out.emplace_back("feature types");
-            break;
-        case FormatLoss::Regions:
-            out.emplace_back("regions");
-            break;
-        case FormatLoss::LinesAndCorners:
-            out.emplace_back("lines and corners");
-            break;
-        case FormatLoss::VolumeCells:
-            out.emplace_back("volume cells");
-            break;
-        case FormatLoss::PyramidsPrisms:
-            out.emplace_back("pyramids and prisms");
-            break;
-        case FormatLoss::DoublePrecision:
-            out.emplace_back("double precision (coordinates as 32-bit floats)");
-            break;
-        }
-    }
+         formatLosses(*f, volume ? ExportData::HybridMesh : ExportData::SurfaceModel))
+        out.push_back(describe(loss));
     return out;
 }
 

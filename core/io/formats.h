@@ -135,6 +135,8 @@ enum class FormatLoss {
     DoublePrecision, // coordinates as 32-bit floats
 };
 std::vector<FormatLoss> formatLosses(const FileFormat &format, ExportData data);
+// In English, for the command line: "feature types".
+std::string describe(FormatLoss loss);
 
 // What writing to this format loses, in words ("feature types", "regions", ...), for an export
 // dialog to warn with; empty when it keeps everything or the extension is unknown. `volume`
