@@ -38,7 +38,7 @@ ExportData meshData(const VolumeMesh &mesh)
 
 } // namespace
 
-ExportWorkflow::ExportWorkflow(Workbench &bench, const RemeshWorkflow &remesh,
+ExportWorkflow::ExportWorkflow(Workbench &bench, RemeshWorkflow &remesh,
                                const TetmeshWorkflow &tetmesh, const HybridWorkflow &hybrid,
                                QObject *parent)
     : Workflow(bench, parent), m_remesh(remesh), m_tetmesh(tetmesh), m_hybrid(hybrid),
@@ -200,6 +200,8 @@ bool ExportWorkflow::start(Subject subject, const QString &path, const ExportOpt
         request.role = QStringLiteral("hybrid mesh");
         break;
     }
+    m_savesRemesh = subject == Subject::RemeshedModel
+                    && formatLosses(*format, ExportData::SurfaceModel).empty();
     if (!m_controller->start(request)) {
         refuse(path, tr("another run is under way"));
         return false;
@@ -218,6 +220,8 @@ void ExportWorkflow::onSucceeded(const QString &path, const QString &format,
         0,
         {}};
     m_bench.addMessage(message);
+    if (m_savesRemesh)
+        m_remesh.markSaved();
     if (untaggedSkipped > 0)
         m_bench.addMessage({Message::Severity::Warning,
                             tr("%1 elements without a region, surface or line were left out, as "

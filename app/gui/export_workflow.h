@@ -21,7 +21,8 @@ public:
     // The entries of the dialog, in its order.
     enum class Subject { InputModel, RemeshedModel, InputTets, RemeshTets, HybridMesh };
 
-    ExportWorkflow(Workbench &bench, const RemeshWorkflow &remesh, const TetmeshWorkflow &tetmesh,
+    // An export of the remesh to a format that keeps all of it counts as its save.
+    ExportWorkflow(Workbench &bench, RemeshWorkflow &remesh, const TetmeshWorkflow &tetmesh,
                    const HybridWorkflow &hybrid, QObject *parent = nullptr);
     ~ExportWorkflow() override;
 
@@ -49,12 +50,13 @@ private:
     void onFailed(const Message &error);
     void refuse(const QString &path, const QString &cause);
 
-    const RemeshWorkflow &m_remesh;
+    RemeshWorkflow &m_remesh;
     const TetmeshWorkflow &m_tetmesh;
     const HybridWorkflow &m_hybrid;
     ExportController *m_controller;
     QAction *m_separator;
     QAction *m_export;
+    bool m_savesRemesh = false; // the run under way writes all of the remesh
 };
 
 } // namespace stratamesh

@@ -170,6 +170,8 @@ private slots:
             true));
         QVERIFY2(warning.contains("feature types"), qPrintable(warning));
         QVERIFY(!warning.contains("surface names"));
+        // Not all of the remesh is in the file: it still counts as unsaved.
+        QVERIFY(!m_window->remeshWorkflow()->unsavedWork().isEmpty());
         QVERIFY(readAll(path).startsWith("$MeshFormat\n4.1 "));
         checkCounts(path, true);
     }
@@ -203,6 +205,7 @@ private slots:
             },
             true));
         QVERIFY2(warning.isEmpty(), qPrintable(warning)); // VTK keeps names, types, regions
+        QVERIFY(m_window->remeshWorkflow()->unsavedWork().isEmpty()); // so the remesh is saved
         QVERIFY(readAll(path).contains("UnstructuredGrid"));
         checkCounts(path, true);
     }
