@@ -389,6 +389,28 @@ private slots:
               back.countCells(CellType::Prism));
     }
 
+    // In French the dialog and its warning are French, and still fit.
+    void frenchDialog()
+    {
+        QCOMPARE(installTranslations(QStringLiteral("fr")), QStringLiteral("fr"));
+        // The language change reaches the widgets through posted events: let it pass before the
+        // dialog is made, as at start-up (else its button box would reset "Export" to "OK").
+        QCoreApplication::processEvents();
+        {
+            ExportDialog dialog(m_export->subjects(), m_dir.path(), m_window.get());
+            dialog.setSubject(int(Subject::RemeshedModel));
+            QVERIFY(dialog.setFormat(QStringLiteral(".obj")));
+            dialog.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+            QVERIFY2(dialog.warning().contains(QStringLiteral("ne conserve pas")),
+                     qPrintable(dialog.warning()));
+            QCOMPARE(dialog.subjectBox()->currentText(), QStringLiteral("Modèle remaillé"));
+            QCOMPARE(dialog.exportButton()->text(), QStringLiteral("E&xporter"));
+            QVERIFY(dialog.grab().save(kShots + "/export_dialog_fr.png"));
+        }
+        installTranslations(QStringLiteral("en"));
+    }
+
 private:
     // Opens File > Export…, lets `fill` set the dialog's widgets, presses Export and waits for the
     // write; true when it succeeded.
