@@ -96,7 +96,9 @@ QList<ExportSubject> ExportWorkflow::subjects() const
                              : QFileInfo(m_bench.modelPath()).completeBaseName();
     QList<ExportSubject> out;
 
-    ExportSubject input{tr("Input model"), {}, ExportData::SurfaceModel, {}, base};
+    // Never offered under the open model's own name, which the export would refuse.
+    ExportSubject input{
+        tr("Input model"), {}, ExportData::SurfaceModel, {}, base + QStringLiteral("_export")};
     if (const auto &model = m_bench.model())
         input.surfaceNames = surfaceNames(*model);
     else

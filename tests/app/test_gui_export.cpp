@@ -125,7 +125,7 @@ private slots:
         QVERIFY(!dialog.setFormat(QStringLiteral(".so")));
         // The file follows the format, and a typed extension chooses the format.
         QVERIFY(dialog.setFormat(QStringLiteral(".vtu")));
-        QCOMPARE(dialog.path(), m_dir.filePath(QStringLiteral("modelA1.vtu")));
+        QCOMPARE(dialog.path(), m_dir.filePath(QStringLiteral("modelA1_export.vtu")));
         dialog.setPath(m_dir.filePath(QStringLiteral("other.ts")));
         QCOMPARE(dialog.format()->extension, std::string(".ts"));
         QVERIFY(dialog.surfaceBox()->isVisibleTo(&dialog));
