@@ -3,7 +3,8 @@
 // one exchange format to another, both chosen by extension (core/io/mesh_writer.h lists them).
 // OUT is planned before IN is read (io/output_plan.h); OUT = IN only with --overwrite.
 // Volume meshes (.so, .msh, .vtu, .vtk, .vtp) keep their cells; surface models get their topology
-// recovered first so that lines, corners and Gocad BSTONE/BORDER are written too.
+// recovered first so that lines, corners and Gocad BSTONE/BORDER are written too. A note (and
+// "format_drops" in JSON) says what OUT's format does not keep, from the table File > Export… uses.
 #include "cli_output.h"
 #include "command_args.h"
 #include "common/error.h"
@@ -17,6 +18,9 @@
 #include "model/topology.h"
 
 #include <QFileInfo>
+#include <QJsonArray>
+
+#include <algorithm>
 
 namespace stratamesh::cli {
 
@@ -59,6 +63,7 @@ int runConvert(CommandArgs &args)
 
     ExportReport report;
     QJsonObject counts;
+    ExportData written = ExportData::SurfaceModel; // what the output's losses are measured on
     // A GeoModel without region meshes is a B-Rep: read it whole (universe, layers, features).
     const bool brepGeoModel =
         isRingMeshFile(in.toStdString()) && !hasRingMeshRegionMeshes(in.toStdString());
@@ -75,6 +80,11 @@ int runConvert(CommandArgs &args)
                              {"edges", qint64(mesh.edges.size())},
                              {"regions", qint64(mesh.regionNames.size())},
                              {"surfaces", qint64(mesh.surfaces.size())}};
+        if (mesh.hasCells())
+            written = std::any_of(mesh.cells.begin(), mesh.cells.end(),
+                                  [](const Cell &c) { return c.type != CellType::Tet; })
+                          ? ExportData::HybridMesh
+                          : ExportData::TetMesh;
         plan.write(output.toStdString(), [&](const std::string &temporary) {
             if (!mesh.hasCells() && isModelFormat(output))
                 report = exportModel(recoverTopology(modelFromMesh(mesh)), temporary, options);
@@ -94,6 +104,11 @@ int runConvert(CommandArgs &args)
         });
     }
     plan.commit();
+    // The same words File > Export… warns with, from the same table.
+    QStringList drops;
+    for (const FormatLoss loss : formatLosses(*findFormat(output.toStdString()), written))
+        if (loss != FormatLoss::OtherSurfaces || counts.value("surfaces").toInteger() > 1)
+            drops << QString::fromStdString(describe(loss));
 
     if (json) {
         printJson(QJsonObject{{"input", in},
@@ -101,7 +116,8 @@ int runConvert(CommandArgs &args)
                               {"format", QString::fromStdString(report.format)},
                               {"counts", counts},
                               {"untagged_elements_skipped", qint64(report.untaggedSkipped)},
-                              {"cells_dropped", qint64(report.cellsDropped)}});
+                              {"cells_dropped", qint64(report.cellsDropped)},
+                              {"format_drops", QJsonArray::fromStringList(drops)}});
     } else {
         QTextStream &s = cli::out();
         s << "wrote " << output << " (" << QString::fromStdString(report.format)
@@ -115,6 +131,9 @@ int runConvert(CommandArgs &args)
         if (report.cellsDropped > 0)
             s << "note: " << report.cellsDropped
               << " volume cells are not part of this format and were left out\n";
+        if (!drops.isEmpty())
+            s << "note: " << QString::fromStdString(report.format)
+              << " does not keep: " << drops.join(QStringLiteral(", ")) << '\n';
     }
     return 0;
 }

@@ -2,6 +2,7 @@
 
 #include "about_dialog.h"
 #include "complexity_workflow.h"
+#include "export_workflow.h"
 #include "hybrid_workflow.h"
 #include "message_panel.h"
 #include "model_scene.h"
@@ -54,6 +55,7 @@ MainWindow::MainWindow(QWidget *parent)
     m_complexity = add(new ComplexityWorkflow(*m_bench, this));
     m_tetmesh = add(new TetmeshWorkflow(*m_bench, *m_remesh, this));
     m_hybrid = add(new HybridWorkflow(*m_bench, *m_remesh, *m_tetmesh, this));
+    add(new ExportWorkflow(*m_bench, *m_remesh, *m_tetmesh, *m_hybrid, this));
     connect(m_open, &OpenWorkflow::opened, this, &MainWindow::showModel);
     // The input view halves beside the output: the heat map's colour bar would be cut there,
     // and the cells were measured on the input only. The Complexity dock shows them again.

@@ -52,6 +52,9 @@ public:
     void enableActions(bool busy) override;
     QString unsavedWork() const override;
     bool saveUnsavedWork() override;
+    // The shown outcome was written whole by another step (File > Export… to a format that keeps
+    // all of a model): opening another model no longer asks to save it.
+    void markSaved() { m_saved = m_outcome.has_value(); }
 
 public slots:
     // Opens the parameter dialog, then remeshes the shown model.

@@ -103,6 +103,11 @@ constexpr FormatKeeps kVtkPolyData{true, true, true, true, true, false, false, t
 constexpr FormatKeeps kExactSurface{false, false, false, false, false, false, false, true};
 constexpr FormatKeeps kFloatSurface{false, false, false, false, false, false, false, false};
 
+// Field order: gmsh, surface, allSurfaces.
+constexpr FormatOptions kGmshOptions{true, false, false};
+constexpr FormatOptions kAnySurfaces{false, true, true};
+constexpr FormatOptions kOneSurface{false, true, false};
+
 // The extension part of one dialog filter entry: "Gocad Model3d (*.ml)" → ".ml".
 std::string filterExtension(const std::string &entry)
 {
@@ -122,17 +127,17 @@ const std::vector<FileFormat> &fileFormats()
         {".ml", "Gocad Model3d", FormatHolds::Model, kGocadModel3d, readGocadFile, nullptr, writeMl,
          nullptr, false},
         {".ts", "Gocad TSurf", FormatHolds::Model, kGocadTSurf, readGocadFile, nullptr, writeTs,
-         nullptr, false},
+         nullptr, false, kAnySurfaces},
         {".gm", "RINGMesh GeoModel", FormatHolds::Model, kRingMesh, readRingMeshModel,
          readRingMeshVolume, writeGmModel, writeGmMesh, false},
         {".obj", "Wavefront OBJ", FormatHolds::SingleSurface, kExactSurface, readSurfaceMesh,
-         nullptr, writeSurface, nullptr, false},
+         nullptr, writeSurface, nullptr, false, kOneSurface},
         {".off", "Object File Format", FormatHolds::SingleSurface, kExactSurface, readSurfaceMesh,
-         nullptr, writeSurface, nullptr, false},
+         nullptr, writeSurface, nullptr, false, kOneSurface},
         {".so", "Gocad TSolid", FormatHolds::VolumeMesh, kTSolid, readAsModel<readGocadTSolid>,
          readGocadTSolid, nullptr, writeSo, true},
         {".msh", "Gmsh MSH", FormatHolds::VolumeMesh, kGmsh, readAsModel<readGmsh>, readGmsh,
-         nullptr, writeMsh, false},
+         nullptr, writeMsh, false, kGmshOptions},
         {".vtu", "VTK XML unstructured grid", FormatHolds::VolumeMesh, kVtkCells,
          readAsModel<readVtk>, readVtk, nullptr, writeVtu, false},
         {".vtk", "VTK legacy", FormatHolds::VolumeMesh, kVtkCells, readAsModel<readVtk>, readVtk,
@@ -141,9 +146,9 @@ const std::vector<FileFormat> &fileFormats()
          readVtk, nullptr, writeVtp, false},
         // readModel() has never read STL and PLY: readVolumeMesh() and convert do.
         {".stl", "STL", FormatHolds::SingleSurface, kFloatSurface, nullptr, readStlOrPly,
-         writeSurface, nullptr, false},
+         writeSurface, nullptr, false, kOneSurface},
         {".ply", "Stanford PLY", FormatHolds::SingleSurface, kExactSurface, nullptr, readStlOrPly,
-         writeSurface, nullptr, false},
+         writeSurface, nullptr, false, kOneSurface},
     };
     return formats;
 }
@@ -242,29 +247,74 @@ std::string withFormatExtension(const std::string &path, FormatUse use,
     return all.empty() ? path : path + all.front()->extension;
 }
 
+ExportFit exportFit(const FileFormat &f, ExportData data)
+{
+    if (data == ExportData::SurfaceModel)
+        return f.needsCells ? ExportFit::NeedsCells : ExportFit::Fits;
+    if (f.writeMesh == nullptr || !f.keeps.tetrahedra)
+        return ExportFit::DropsCells;
+    if (data == ExportData::HybridMesh && !f.keeps.pyramidsPrisms)
+        return ExportFit::DropsPyramidsPrisms;
+    return ExportFit::Fits;
+}
+
+std::vector<FormatLoss> formatLosses(const FileFormat &f, ExportData data)
+{
+    if (!f.writes())
+        return {};
+    const FormatKeeps &k = f.keeps;
+    std::vector<FormatLoss> out;
+    if (!k.severalSurfaces)
+        out.push_back(FormatLoss::OtherSurfaces);
+    if (!k.surfaceNames)
+        out.push_back(FormatLoss::SurfaceNames);
+    if (!k.featureTypes)
+        out.push_back(FormatLoss::FeatureTypes);
+    if (!k.regions)
+        out.push_back(FormatLoss::Regions);
+    if (!k.linesAndCorners)
+        out.push_back(FormatLoss::LinesAndCorners);
+    if (data != ExportData::SurfaceModel && !k.tetrahedra)
+        out.push_back(FormatLoss::VolumeCells);
+    else if (data == ExportData::HybridMesh && !k.pyramidsPrisms)
+        out.push_back(FormatLoss::PyramidsPrisms);
+    if (!k.exactCoordinates)
+        out.push_back(FormatLoss::DoublePrecision);
+    return out;
+}
+
+std::string describe(FormatLoss loss)
+{
+    switch (loss) {
+    case FormatLoss::OtherSurfaces:
+        return "all surfaces but one";
+    case FormatLoss::SurfaceNames:
+        return "surface names";
+    case FormatLoss::FeatureTypes:
+        return "feature types";
+    case FormatLoss::Regions:
+        return "regions";
+    case FormatLoss::LinesAndCorners:
+        return "lines and corners";
+    case FormatLoss::VolumeCells:
+        return "volume cells";
+    case FormatLoss::PyramidsPrisms:
+        return "pyramids and prisms";
+    case FormatLoss::DoublePrecision:
+        return "double precision (coordinates as 32-bit floats)";
+    }
+    return {};
+}
+
 std::vector<std::string> whatFormatDrops(const std::string &path, bool volume)
 {
     const FileFormat *f = findFormat(path);
-    if (f == nullptr || !f->writes())
+    if (f == nullptr)
         return {};
-    const FormatKeeps &k = f->keeps;
     std::vector<std::string> out;
-    if (!k.severalSurfaces)
-        out.emplace_back("all surfaces but one");
-    if (!k.surfaceNames)
-        out.emplace_back("surface names");
-    if (!k.featureTypes)
-        out.emplace_back("feature types");
-    if (!k.regions)
-        out.emplace_back("regions");
-    if (!k.linesAndCorners)
-        out.emplace_back("lines and corners");
-    if (volume && !k.tetrahedra)
-        out.emplace_back("volume cells");
-    else if (volume && !k.pyramidsPrisms)
-        out.emplace_back("pyramids and prisms");
-    if (!k.exactCoordinates)
-        out.emplace_back("double precision (coordinates as 32-bit floats)");
+    for (const FormatLoss loss :
+         formatLosses(*f, volume ? ExportData::HybridMesh : ExportData::SurfaceModel))
+        out.push_back(describe(loss));
     return out;
 }
 

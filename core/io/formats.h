@@ -27,6 +27,13 @@ struct ExportReport {
     std::size_t cellsDropped = 0;    // volume cells a surface format cannot hold
 };
 
+// Which ExportOptions fields a format's writer reads, for an export dialog to offer them.
+struct FormatOptions {
+    bool gmsh = false;        // GmshWriteOptions: MSH version 4.1 or 2.2, saveAll
+    bool surface = false;     // ExportOptions::surface: the writer takes one surface by index
+    bool allSurfaces = false; // ... or every surface with surface = -1 (else only a lone one)
+};
+
 // What the file natively stands for.
 enum class FormatHolds {
     Model,         // a B-Rep of surfaces and regions (Gocad Model3d and TSurf, RINGMesh)
@@ -61,6 +68,7 @@ struct FileFormat {
                       ExportReport &);
     // True when writing a surface model is refused (a TSolid holds tetrahedra only).
     bool needsCells;
+    FormatOptions options = {};
 
     bool readsModel() const { return readModel != nullptr; }
     bool readsMesh() const { return readMesh != nullptr; }
@@ -104,6 +112,31 @@ std::string fileDialogFilter(FormatUse use, const std::string &allFormatsLabel,
 // the first format serving `use`.
 std::string withFormatExtension(const std::string &path, FormatUse use,
                                 const std::string &selectedFilter);
+
+// What an export writes: a surface model, or a volume mesh of tetrahedra only or with pyramids and
+// prisms (a hybrid mesh). A volume mesh goes only to formats that keep its cells.
+enum class ExportData { SurfaceModel, TetMesh, HybridMesh };
+
+// Whether a format takes the data: NeedsCells for a surface model to a TSolid, DropsCells for a
+// volume mesh to a format without cells, DropsPyramidsPrisms for a hybrid mesh to a TSolid.
+enum class ExportFit { Fits, NeedsCells, DropsCells, DropsPyramidsPrisms };
+ExportFit exportFit(const FileFormat &format, ExportData data);
+
+// What the data loses through a format that fits it, from its FormatKeeps row, in the order of
+// whatFormatDrops(); front ends put it in their own (translated) words.
+enum class FormatLoss {
+    OtherSurfaces, // all surfaces but one
+    SurfaceNames,
+    FeatureTypes,
+    Regions,
+    LinesAndCorners,
+    VolumeCells,
+    PyramidsPrisms,
+    DoublePrecision, // coordinates as 32-bit floats
+};
+std::vector<FormatLoss> formatLosses(const FileFormat &format, ExportData data);
+// In English, for the command line: "feature types".
+std::string describe(FormatLoss loss);
 
 // What writing to this format loses, in words ("feature types", "regions", ...), for an export
 // dialog to warn with; empty when it keeps everything or the extension is unknown. `volume`

@@ -1,6 +1,6 @@
 // stratamesh-cli on RINGMesh GeoModels: info reads .gm like .ml, convert writes .gm and reads it
 // back with the same counts and volumes, a volume-meshed .gm converts with its tets, and a broken
-// archive exits 1 with the archive and entry on stderr.
+// archive exits 1 with the archive and entry on stderr; convert notes what a format drops.
 #include "cli_runner.h"
 #include "io/zip_archive.h"
 #include "support/test_data.h"
@@ -72,6 +72,19 @@ private slots:
         QVERIFY2(c.finished && c.exitCode == 0, qPrintable(c.err));
         QCOMPARE(jsonOf(runCli({"info", back, "--json"}))["regions"].toArray(),
                  jsonOf(a)["regions"].toArray());
+    }
+
+    // convert says what the output's format does not keep, in the words of the format table.
+    void convertNotesWhatTheFormatDrops()
+    {
+        STRATAMESH_REQUIRE_DATA(ml, "modelA1.ml");
+        const CliRun msh = runCli({"convert", ml, m_dir.filePath("drops.msh"), "--json"});
+        QVERIFY2(msh.finished && msh.exitCode == 0, qPrintable(msh.err));
+        QCOMPARE(jsonOf(msh)["format_drops"].toArray(), QJsonArray({"feature types"}));
+        const CliRun gm = runCli({"convert", ml, m_dir.filePath("drops.gm"), "--json"});
+        QCOMPARE(jsonOf(gm)["format_drops"].toArray(), QJsonArray());
+        const CliRun ts = runCli({"convert", ml, m_dir.filePath("drops.ts")});
+        QVERIFY2(ts.out.contains("note: Gocad TSurf does not keep: regions\n"), qPrintable(ts.out));
     }
 
     void volumeMeshedKeepsTets()

@@ -19,6 +19,8 @@
 #include <QtTest>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 
@@ -440,6 +442,81 @@ private slots:
             QCOMPARE(whatFormatDrops(std::string("x") + f.extension, true).empty(),
                      all && k.tetrahedra && k.pyramidsPrisms);
         }
+    }
+
+    // The options an export dialog offers per row are the ones its writer reads: the surface
+    // index changes what a model writes, -1 writes them all where claimed, and the Gmsh version
+    // changes the file.
+    void optionsFollowTheWriters()
+    {
+        const Model box = offsetBox();
+        for (const FileFormat &f : fileFormats()) {
+            if (!f.writes() || f.needsCells)
+                continue;
+            const auto written = [&](const char *stem, const ExportOptions &o) {
+                const std::string path = pathFor(stem, f);
+                exportModel(box, path, o);
+                return readBack(f, path);
+            };
+            ExportOptions first, second, all, v22;
+            first.surface = 0;
+            second.surface = 1;
+            v22.surface = 0;
+            v22.gmsh.version = GmshWriteOptions::Version::V22;
+            const Model a = written("opt_first", first);
+            const Model b = written("opt_second", second);
+            const bool surface = a.surfaces.size() == 1 && b.surfaces.size() == 1
+                                 && a.triangleCount() == box.surfaces[0].triangles.size()
+                                 && b.triangleCount() == box.surfaces[1].triangles.size();
+            QVERIFY2(surface == f.options.surface, f.extension);
+            bool allWritten = true;
+            try {
+                allWritten = written("opt_all", all).surfaces.size() == box.surfaces.size();
+            } catch (const InputError &) {
+                allWritten = false;
+            }
+            if (f.options.surface)
+                QVERIFY2(allWritten == f.options.allSurfaces, f.extension);
+            const auto bytes = [&](const char *stem) {
+                std::ifstream in(pathFor(stem, f), std::ios::binary);
+                return std::string((std::istreambuf_iterator<char>(in)), {});
+            };
+            exportModel(box, pathFor("opt_again", f), first);
+            exportModel(box, pathFor("opt_v22", f), v22);
+            // A writer whose output varies from run to run (a zip's time stamps) shows nothing.
+            if (bytes("opt_first") == bytes("opt_again"))
+                QVERIFY2((bytes("opt_first") != bytes("opt_v22")) == f.options.gmsh, f.extension);
+            else
+                QVERIFY2(!f.options.gmsh, f.extension);
+        }
+    }
+
+    // Which rows take which data, and what each loses, follow FormatKeeps.
+    void exportFitFollowsTheKeeps()
+    {
+        for (const FileFormat &f : fileFormats()) {
+            if (!f.writes())
+                continue;
+            QCOMPARE(exportFit(f, ExportData::SurfaceModel) == ExportFit::Fits, !f.needsCells);
+            QCOMPARE(exportFit(f, ExportData::TetMesh) == ExportFit::Fits, f.keeps.tetrahedra);
+            QCOMPARE(exportFit(f, ExportData::HybridMesh) == ExportFit::Fits,
+                     f.keeps.pyramidsPrisms);
+            const auto loses = [&](ExportData data, FormatLoss loss) {
+                const std::vector<FormatLoss> all = formatLosses(f, data);
+                return std::find(all.begin(), all.end(), loss) != all.end();
+            };
+            QCOMPARE(loses(ExportData::SurfaceModel, FormatLoss::FeatureTypes),
+                     !f.keeps.featureTypes);
+            QCOMPARE(loses(ExportData::SurfaceModel, FormatLoss::SurfaceNames),
+                     !f.keeps.surfaceNames);
+            QVERIFY(!loses(ExportData::SurfaceModel, FormatLoss::VolumeCells));
+            QCOMPARE(loses(ExportData::TetMesh, FormatLoss::VolumeCells), !f.keeps.tetrahedra);
+            QVERIFY(!loses(ExportData::TetMesh, FormatLoss::PyramidsPrisms));
+        }
+        const FileFormat *so = findFormat("a.so");
+        QVERIFY(so && exportFit(*so, ExportData::HybridMesh) == ExportFit::DropsPyramidsPrisms);
+        QVERIFY(exportFit(*so, ExportData::SurfaceModel) == ExportFit::NeedsCells);
+        QVERIFY(exportFit(*findFormat("a.vtp"), ExportData::TetMesh) == ExportFit::DropsCells);
     }
 };
 
