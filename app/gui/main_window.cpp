@@ -7,6 +7,8 @@
 #include "model_scene.h"
 #include "open_workflow.h"
 #include "progress_strip.h"
+#include "project_file.h"
+#include "project_workflow.h"
 #include "remesh_workflow.h"
 #include "study_workflow.h"
 #include "tetmesh_workflow.h"
@@ -15,6 +17,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCloseEvent>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -54,6 +57,7 @@ MainWindow::MainWindow(QWidget *parent)
     m_complexity = add(new ComplexityWorkflow(*m_bench, this));
     m_tetmesh = add(new TetmeshWorkflow(*m_bench, *m_remesh, this));
     m_hybrid = add(new HybridWorkflow(*m_bench, *m_remesh, *m_tetmesh, this));
+    m_project = add(new ProjectWorkflow(*m_bench, *m_open, *m_remesh, this));
     connect(m_open, &OpenWorkflow::opened, this, &MainWindow::showModel);
     // The input view halves beside the output: the heat map's colour bar would be cut there,
     // and the cells were measured on the input only. The Complexity dock shows them again.
@@ -261,7 +265,8 @@ void MainWindow::retranslate()
     m_messageDock->setWindowTitle(tr("Messages"));
     m_messageDock->toggleViewAction()->setText(tr("&Messages"));
     const QString &name = m_bench->displayName();
-    setWindowTitle(name.isEmpty() ? tr("StrataMesh") : tr("%1 — StrataMesh").arg(name));
+    // [*]: the unsaved-project marker (ProjectWorkflow sets windowModified).
+    setWindowTitle(name.isEmpty() ? tr("StrataMesh[*]") : tr("%1[*] — StrataMesh").arg(name));
     updateCounts();
 }
 
@@ -274,7 +279,19 @@ void MainWindow::changeEvent(QEvent *event)
 
 void MainWindow::openFile(const QString &path)
 {
-    m_open->openFile(path);
+    if (isProjectFile(path))
+        m_project->openProject(path);
+    else
+        m_open->openFile(path);
+}
+
+// Unsaved results (a project's runs and reviews, a remeshed model) are offered for saving.
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (m_bench->mayDiscardWork())
+        event->accept();
+    else
+        event->ignore();
 }
 
 void MainWindow::openSample()

@@ -34,6 +34,11 @@ public:
     // The review of the shown outcome's ledger (empty for a new remesh).
     const ReviewDecisions &decisions() const { return m_decisions; }
     void setDecisions(const ReviewDecisions &decisions);
+    // Shows a run made earlier (a project's, or another of this session's) in place of the shown
+    // one, with its review: no engine run, no message.
+    void show(const RemeshOutcome &outcome, const ReviewDecisions &decisions);
+    // The shown result is kept in a file (a saved project holds it): no prompt before closing.
+    void markSaved() { m_saved = true; }
     QAction *remeshAction() const { return m_remesh; }
     QAction *saveAction() const { return m_save; }
 
@@ -64,6 +69,8 @@ signals:
     // A new remesh replaces the last, before it is shown: what was made of the last one goes.
     void outputReplaced();
     void decisionsChanged();
+    // A remesh finished and was shown (after outputReplaced()): the run list keeps it.
+    void runAdded(const stratamesh::RemeshOutcome &outcome);
 
 private:
     void onStarted();
