@@ -35,7 +35,7 @@ RunsPanel::RunsPanel(QWidget *parent) : QWidget(parent), m_table(new QTableWidge
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->verticalHeader()->hide();
-    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->horizontalHeader()->setStretchLastSection(false);
     m_table->setObjectName(QStringLiteral("RunsTable"));
     connect(m_table, &QTableWidget::itemSelectionChanged, this, [this] {
         const QList<QTableWidgetItem *> selected = m_table->selectedItems();

@@ -56,6 +56,8 @@ std::unique_ptr<MainWindow> newWindow(int *asked)
         ++*asked;
         return QMessageBox::Discard;
     });
+    // Never a file dialog in a test: a missing input is not found unless a test says where.
+    window->projectWorkflow()->setLocate([](const QString &) { return QString(); });
     return window;
 }
 
@@ -263,7 +265,7 @@ private slots:
         QCOMPARE(window->workbench()->modelPath(), QFileInfo(moved).absoluteFilePath());
         QVERIFY(window->isWindowModified()); // the new place is saved with the project
         QVERIFY(project->saveProject(m_project));
-        QVERIFY(QFile::rename(moved, m_input) || true);
+        // The project now names the new place: the tests below open it from there.
     }
 
     void movedRunsFolderIsRefused()
