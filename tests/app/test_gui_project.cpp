@@ -168,6 +168,23 @@ private slots:
         undo->undo();
         QCOMPARE(project->shownRun(), 1);
 
+        // Unsaved: closing asks once for the remeshed model and the project; Cancel keeps the
+        // window.
+        QStringList questions;
+        window->workbench()->setAsk([&questions](const QString &question) {
+            questions.append(question);
+            return QMessageBox::Cancel;
+        });
+        QVERIFY(!window->close());
+        QCOMPARE(questions.size(), 1);
+        QVERIFY2(questions.first().contains(QStringLiteral("project's runs")),
+                 qPrintable(questions.first()));
+        QVERIFY(window->isVisible());
+        window->workbench()->setAsk([&asked](const QString &) {
+            ++asked;
+            return QMessageBox::Discard;
+        });
+
         // Save: the folder, then the project; no dirty marker after.
         QVERIFY(project->saveProject(m_project));
         QVERIFY(!window->isWindowModified());
