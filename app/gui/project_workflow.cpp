@@ -166,7 +166,7 @@ void ProjectWorkflow::setModified(bool modified)
 
 void ProjectWorkflow::onRunAdded(const RemeshOutcome &outcome)
 {
-    m_runs.push_back({outcome, {}, {}});
+    m_runs.push_back({outcome, {}, {}, {}});
     m_shown = int(m_runs.size()) - 1;
     setModified(true);
     updatePanel();
@@ -366,7 +366,7 @@ void ProjectWorkflow::install(Pending &pending)
                      {}});
                 decisions = ReviewDecisions();
             }
-            runs.push_back({std::move(o), *decisions, report});
+            runs.push_back({std::move(o), *decisions, report, pending.path});
         }
     } catch (const std::exception &e) {
         fail(errorMessage(e, pending.path),
@@ -468,7 +468,8 @@ bool ProjectWorkflow::saveProject(const QString &path)
             parts.facts = factsOf(o);
             run.report = remeshReportJson(parts);
         }
-        contents.push_back({o.output.get(), o.ledger.get(), run.report});
+        const bool written = run.savedIn == absolute;
+        contents.push_back({written ? nullptr : o.output.get(), o.ledger.get(), run.report});
         file.runs.push_back(std::move(entry));
     }
     try {
@@ -478,6 +479,8 @@ bool ProjectWorkflow::saveProject(const QString &path)
         return false;
     }
     m_path = absolute;
+    for (Run &run : m_runs)
+        run.savedIn = absolute;
     setModified(false);
     m_remesh.markSaved();
     m_bench.addMessage({Message::Severity::Info,

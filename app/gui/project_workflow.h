@@ -31,6 +31,7 @@ public:
         RemeshOutcome outcome;
         ReviewDecisions decisions;
         QJsonObject report; // as read from its folder; built at the first save for a new run
+        QString savedIn;    // the project whose run folder holds it (not written again there)
     };
     const std::vector<Run> &runs() const { return m_runs; }
     int shownRun() const { return m_shown; }

@@ -56,6 +56,11 @@ void writeProject(const QString &projectPath, const ProjectFile &project,
     OutputPlan plan({inputPath.toStdString()}, true);
     for (std::size_t i = 0; i < runs.size(); ++i) {
         const RunFolderPaths paths = runFolderPaths(projectPath, project.runs[i].folder);
+        if (!runs[i].output) {
+            if (!QFileInfo::exists(paths.model))
+                fail(paths.model, QStringLiteral("missing: the run's folder was moved"));
+            continue;
+        }
         if (!QDir().mkpath(paths.folder))
             fail(paths.folder, QStringLiteral("cannot create the run folder"));
         plan.add(paths.model.toStdString(), "run model");

@@ -24,7 +24,8 @@ struct RunFolderPaths {
 };
 RunFolderPaths runFolderPaths(const QString &projectPath, const QString &folder);
 
-// What one run writes; the pointers outlive the call.
+// What one run writes; the pointers outlive the call. A null output: the run's folder already
+// holds its files (saved there before), it is left as it is.
 struct RunContent {
     const Model *output = nullptr;
     const SimplificationLedger *ledger = nullptr;

@@ -195,6 +195,19 @@ private slots:
                              m_dir.filePath(QStringLiteral("study_runs/%1/%2")
                                                 .arg(QLatin1String(run), QLatin1String(file)))),
                          file);
+        // Save again after a review change: the run folders are not written again.
+        const QString firstModel = m_dir.filePath(QStringLiteral("study_runs/run-001/output.ml"));
+        const QDateTime written = QFileInfo(firstModel).lastModified();
+        QTest::qWait(20);
+        ReviewDecisions more = decisions;
+        more.setDecision(1, {ReviewVerdict::Flagged, QString()});
+        remesh->setDecisions(more);
+        QVERIFY(window->isWindowModified());
+        remesh->setDecisions(decisions);
+        QVERIFY(project->save());
+        QVERIFY(!window->isWindowModified());
+        QCOMPARE(QFileInfo(firstModel).lastModified(), written);
+
         std::vector<Figures> before;
         for (const auto &run : project->runs())
             before.push_back(figuresOf(run));
@@ -250,6 +263,29 @@ private slots:
         QVERIFY(reopened->isWindowModified());
         reopened->workbench()->undoStack()->undo();
         QCOMPARE(again->shownRun(), 1);
+        QCOMPARE(asked, 0);
+    }
+
+    // The bundled sample has no file: its project says so and reopens it.
+    void sampleProject()
+    {
+        int asked = 0;
+        auto window = newWindow(&asked);
+        QSignalSpy opened(window->openWorkflow(), &OpenWorkflow::finished);
+        window->openSample();
+        QVERIFY(opened.wait(kTimeoutMs));
+        QVERIFY(waitForRemesh(*window, 150));
+        const QString path = m_dir.filePath(QStringLiteral("sample.smproj"));
+        QVERIFY(window->projectWorkflow()->saveProject(path));
+        const std::size_t triangles = window->outputScene()->model()->triangleCount();
+        QSignalSpy done(window->projectWorkflow(), &ProjectWorkflow::projectOpened);
+        QVERIFY(window->projectWorkflow()->openProject(path));
+        QVERIFY(done.wait(kTimeoutMs));
+        QVERIFY(done.first().first().toBool());
+        QVERIFY(window->workbench()->modelPath().isEmpty());
+        QCOMPARE(window->projectWorkflow()->runs().size(), std::size_t(1));
+        QCOMPARE(window->outputScene()->model()->triangleCount(), triangles);
+        QCOMPARE(window->remeshWorkflow()->controller()->runCount(), 1); // the one before saving
         QCOMPARE(asked, 0);
     }
 
