@@ -211,6 +211,7 @@ private slots:
         std::vector<Figures> before;
         for (const auto &run : project->runs())
             before.push_back(figuresOf(run));
+        const LedgerRecord lastRecord = project->runs()[1].outcome.ledger->back();
         const std::size_t shownTriangles = project->runs()[1].outcome.output->triangleCount();
         const std::size_t shownVertices = project->runs()[1].outcome.output->vertices.size();
 
@@ -256,8 +257,11 @@ private slots:
                  int(before[1].records));
         QCOMPARE(again->runsPanel()->table()->rowCount(), 2);
         // The ledger read back is the one written.
-        QCOMPARE(again->runs()[1].outcome.ledger->front().note,
-                 again->runs()[1].outcome.ledger->front().note);
+        const LedgerRecord &readBack = again->runs()[1].outcome.ledger->back();
+        QCOMPARE(readBack.kind, lastRecord.kind);
+        QCOMPARE(readBack.note, lastRecord.note);
+        QCOMPARE(readBack.position, lastRecord.position);
+        QCOMPARE(readBack.inputs.size(), lastRecord.inputs.size());
         // A run choice is a change to save.
         again->chooseRun(0);
         QVERIFY(reopened->isWindowModified());
