@@ -10,6 +10,7 @@
 #include "remesh_report.h"
 #include "remesh_workflow.h"
 #include "runs_panel.h"
+#include "vtk_view_widget.h"
 #include "workbench.h"
 
 #include <QAction>
@@ -23,6 +24,9 @@
 #include <QSettings>
 #include <QUndoCommand>
 #include <QUndoStack>
+
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
 
 namespace stratamesh {
 
@@ -57,6 +61,47 @@ QString describeParams(const RemeshParams &p)
     if (p.adaptive)
         text += ProjectWorkflow::tr(", adaptive");
     return text;
+}
+
+QJsonArray triple(const double v[3])
+{
+    return QJsonArray{v[0], v[1], v[2]};
+}
+
+bool readTriple(const QJsonValue &value, double v[3])
+{
+    const QJsonArray a = value.toArray();
+    if (a.size() != 3)
+        return false;
+    for (int i = 0; i < 3; ++i)
+        v[i] = a[i].toDouble();
+    return true;
+}
+
+// The shared camera of both views, so that a reopened project looks where it was left.
+QJsonObject cameraJson(vtkCamera *camera)
+{
+    double position[3], focal[3], up[3];
+    camera->GetPosition(position);
+    camera->GetFocalPoint(focal);
+    camera->GetViewUp(up);
+    return QJsonObject{{QStringLiteral("position"), triple(position)},
+                       {QStringLiteral("focal_point"), triple(focal)},
+                       {QStringLiteral("view_up"), triple(up)},
+                       {QStringLiteral("view_angle"), camera->GetViewAngle()}};
+}
+
+void applyCamera(const QJsonObject &json, vtkCamera *camera)
+{
+    double position[3], focal[3], up[3];
+    if (!readTriple(json.value(QLatin1String("position")), position)
+        || !readTriple(json.value(QLatin1String("focal_point")), focal)
+        || !readTriple(json.value(QLatin1String("view_up")), up))
+        return; // no camera saved: the views keep the framing of the whole model
+    camera->SetPosition(position);
+    camera->SetFocalPoint(focal);
+    camera->SetViewUp(up);
+    camera->SetViewAngle(json.value(QLatin1String("view_angle")).toDouble(30.0));
 }
 
 RemeshReportFacts factsOf(const RemeshOutcome &o)
@@ -380,6 +425,11 @@ void ProjectWorkflow::install(Pending &pending)
     const int shown = pending.file.shownRun >= 0 ? pending.file.shownRun : int(m_runs.size()) - 1;
     if (shown >= 0)
         showRun(shown);
+    applyCamera(pending.file.view.value(QLatin1String("camera")).toObject(),
+                m_bench.inputView()->renderer()->GetActiveCamera());
+    m_bench.inputView()->renderer()->ResetCameraClippingRange();
+    m_bench.outputView()->renderer()->ResetCameraClippingRange();
+    m_bench.render();
     m_remesh.markSaved();
     setModified(pending.relocated);
     updatePanel();
@@ -439,6 +489,8 @@ bool ProjectWorkflow::saveProject(const QString &path)
     file.inputPath = inputPath;
     file.inputIsSample = inputPath.isEmpty();
     file.shownRun = m_shown;
+    file.view.insert(QStringLiteral("camera"),
+                     cameraJson(m_bench.inputView()->renderer()->GetActiveCamera()));
     std::vector<RunContent> contents;
     for (std::size_t i = 0; i < m_runs.size(); ++i) {
         Run &run = m_runs[i];

@@ -30,6 +30,9 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+
 using namespace stratamesh;
 
 namespace {
@@ -185,6 +188,13 @@ private slots:
             return QMessageBox::Discard;
         });
 
+        // The camera is part of the view state kept.
+        vtkCamera *camera = window->view()->renderer()->GetActiveCamera();
+        camera->Azimuth(40.0);
+        camera->Elevation(15.0);
+        double savedPosition[3];
+        camera->GetPosition(savedPosition);
+
         // Save: the folder, then the project; no dirty marker after.
         QVERIFY(project->saveProject(m_project));
         QVERIFY(!window->isWindowModified());
@@ -256,6 +266,10 @@ private slots:
         QCOMPARE(reopened->remeshWorkflow()->ledgerPanel()->tableModel()->rowCount(),
                  int(before[1].records));
         QCOMPARE(again->runsPanel()->table()->rowCount(), 2);
+        double position[3];
+        reopened->view()->renderer()->GetActiveCamera()->GetPosition(position);
+        for (int i = 0; i < 3; ++i)
+            QVERIFY(qAbs(position[i] - savedPosition[i]) < 1e-6 * (1.0 + qAbs(savedPosition[i])));
         // The ledger read back is the one written.
         const LedgerRecord &readBack = again->runs()[1].outcome.ledger->back();
         QCOMPARE(readBack.kind, lastRecord.kind);
