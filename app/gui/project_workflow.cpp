@@ -28,6 +28,8 @@
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
+
 namespace stratamesh {
 
 namespace {
@@ -211,7 +213,10 @@ void ProjectWorkflow::setModified(bool modified)
 
 void ProjectWorkflow::onRunAdded(const RemeshOutcome &outcome)
 {
-    m_runs.push_back({outcome, {}, {}, {}});
+    int id = 1;
+    for (const Run &run : m_runs)
+        id = std::max(id, run.id + 1);
+    m_runs.push_back({outcome, {}, {}, {}, id, runFolderName(id)});
     m_shown = int(m_runs.size()) - 1;
     setModified(true);
     updatePanel();
@@ -236,8 +241,8 @@ void ProjectWorkflow::chooseRun(int index)
         updatePanel(); // the selection goes back to the run shown
         return;
     }
-    m_bench.undoStack()->push(
-        new ShowRunCommand(*this, m_shown, index, tr("Show Run %1").arg(index + 1)));
+    m_bench.undoStack()->push(new ShowRunCommand(
+        *this, m_shown, index, tr("Show Run %1").arg(m_runs[std::size_t(index)].id)));
 }
 
 void ProjectWorkflow::showRun(int index)
@@ -251,7 +256,7 @@ void ProjectWorkflow::showRun(int index)
     setModified(true);
     updatePanel();
     m_dock->show();
-    m_bench.setStatus(tr("Showing run %1").arg(index + 1));
+    m_bench.setStatus(tr("Showing run %1").arg(m_runs[std::size_t(index)].id));
 }
 
 void ProjectWorkflow::updatePanel()
@@ -260,7 +265,7 @@ void ProjectWorkflow::updatePanel()
     for (std::size_t i = 0; i < m_runs.size(); ++i) {
         const RemeshOutcome &o = m_runs[i].outcome;
         RunsRow row;
-        row.id = int(i) + 1;
+        row.id = m_runs[i].id;
         row.parameters = describeParams(o.params);
         row.sites = o.siteCount;
         row.vertices = qint64(o.comparison.output.mesh.vertices);
@@ -411,7 +416,8 @@ void ProjectWorkflow::install(Pending &pending)
                      {}});
                 decisions = ReviewDecisions();
             }
-            runs.push_back({std::move(o), *decisions, report, pending.path});
+            runs.push_back(
+                {std::move(o), *decisions, report, pending.path, entry.id, entry.folder});
         }
     } catch (const std::exception &e) {
         fail(errorMessage(e, pending.path),
@@ -496,8 +502,8 @@ bool ProjectWorkflow::saveProject(const QString &path)
         Run &run = m_runs[i];
         const RemeshOutcome &o = run.outcome;
         ProjectRun entry;
-        entry.id = int(i) + 1;
-        entry.folder = runFolderName(entry.id);
+        entry.id = run.id;
+        entry.folder = run.folder;
         entry.params = o.params;
         entry.figures.sites = o.siteCount;
         entry.figures.vertices = qint64(o.comparison.output.mesh.vertices);

@@ -32,6 +32,8 @@ public:
         ReviewDecisions decisions;
         QJsonObject report; // as read from its folder; built at the first save for a new run
         QString savedIn;    // the project whose run folder holds it (not written again there)
+        int id = 0;         // 1, 2, … as listed; kept from the project file it was read from
+        QString folder;     // "run-001" in the project's runs folder
     };
     const std::vector<Run> &runs() const { return m_runs; }
     int shownRun() const { return m_shown; }
