@@ -1949,6 +1949,10 @@ angle (°)</source>
         <source>%1 Save it before it is replaced?</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 Save them before they are replaced?</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::Workflow</name>

@@ -1953,6 +1953,10 @@ min. (°)</translation>
         <source>%1 Save it before it is replaced?</source>
         <translation>%1 L&apos;enregistrer avant qu&apos;il ne soit remplacé ?</translation>
     </message>
+    <message>
+        <source>%1 Save them before they are replaced?</source>
+        <translation>%1 Les enregistrer avant qu&apos;ils ne soient remplacés ?</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::Workflow</name>

@@ -161,7 +161,10 @@ bool Workbench::mayDiscardWork()
     if (unsaved.isEmpty())
         return true;
     const QString question =
-        QCoreApplication::translate("stratamesh::Workbench", "%1 Save it before it is replaced?")
+        (unsaved.size() == 1 ? QCoreApplication::translate("stratamesh::Workbench",
+                                                           "%1 Save it before it is replaced?")
+                             : QCoreApplication::translate(
+                                 "stratamesh::Workbench", "%1 Save them before they are replaced?"))
             .arg(unsaved.join(QLatin1Char(' ')));
     switch (m_ask(question)) {
     case QMessageBox::Save:

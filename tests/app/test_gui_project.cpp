@@ -182,6 +182,8 @@ private slots:
         QCOMPARE(questions.size(), 1);
         QVERIFY2(questions.first().contains(QStringLiteral("project's runs")),
                  qPrintable(questions.first()));
+        QVERIFY2(questions.first().contains(QStringLiteral("remeshed model")),
+                 qPrintable(questions.first()));
         QVERIFY(window->isVisible());
         window->workbench()->setAsk([&asked](const QString &) {
             ++asked;
