@@ -197,6 +197,22 @@ private slots:
         double savedPosition[3];
         camera->GetPosition(savedPosition);
 
+        // A save that cannot be written says where and why, and leaves the project unsaved.
+        const QString blocker = m_dir.filePath(QStringLiteral("not_a_folder"));
+        {
+            QFile file(blocker);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+        }
+        const int errors = window->messagePanel()->count(Message::Severity::Error);
+        QVERIFY(!project->saveProject(blocker + QStringLiteral("/x.smproj")));
+        QCOMPARE(window->messagePanel()->count(Message::Severity::Error), errors + 1);
+        const Message failed = window->messagePanel()->message(window->messagePanel()->count() - 1);
+        QCOMPARE(failed.severity, Message::Severity::Error);
+        QVERIFY2(failed.file.contains(QStringLiteral("not_a_folder")), qPrintable(failed.file));
+        QVERIFY2(failed.text.contains(QStringLiteral("cannot create")), qPrintable(failed.text));
+        QVERIFY(window->isWindowModified());
+        QVERIFY(project->projectPath().isEmpty());
+
         // Save: the folder, then the project; no dirty marker after.
         QVERIFY(project->saveProject(m_project));
         QVERIFY(!window->isWindowModified());
