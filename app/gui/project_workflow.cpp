@@ -1,14 +1,13 @@
 #include "project_workflow.h"
 
 #include "error_message.h"
-#include "json_report_read.h"
-#include "model/model_counts.h"
 #include "open_model_controller.h"
 #include "open_workflow.h"
 #include "project_file.h"
 #include "project_runs.h"
 #include "remesh_report.h"
 #include "remesh_workflow.h"
+#include "restored_outcome.h"
 #include "runs_panel.h"
 #include "vtk_view_widget.h"
 #include "workbench.h"
@@ -378,32 +377,8 @@ void ProjectWorkflow::install(Pending &pending)
             RunRead &read = pending.runs[i];
             const QString reportPath = runFolderPaths(pending.path, entry.folder).report;
             const QJsonObject &report = read.report;
-            RemeshOutcome o;
-            o.input = input;
-            auto output = std::make_shared<const Model>(std::move(read.output));
-            o.output = output;
-            o.comparison = restoredComparison(*input, *output, report, reportPath);
-            o.counts = countEntities(*output);
-            o.params = entry.params;
-            const QJsonObject refinement = report.value(QLatin1String("refinement")).toObject();
-            o.siteCount = refinement.value(QLatin1String("final_sites")).toInt();
-            o.initialSiteCount = refinement.value(QLatin1String("initial_sites")).toInt();
-            o.refinementRounds = refinement.value(QLatin1String("rounds")).toInt();
-            o.remainingTargets = refinement.value(QLatin1String("remaining_places")).toInt();
-            o.validity = validityFromJson(report.value(QLatin1String("output"))
-                                              .toObject()
-                                              .value(QLatin1String("validity"))
-                                              .toObject(),
-                                          reportPath);
-            const QJsonObject timings = report.value(QLatin1String("timings")).toObject();
-            o.timings.samplingSeconds = timings.value(QLatin1String("sampling_s")).toDouble();
-            o.timings.meshSeconds = timings.value(QLatin1String("mesh_s")).toDouble();
-            o.timings.totalSeconds = timings.value(QLatin1String("total_s")).toDouble();
-            o.milliseconds = qint64(o.timings.totalSeconds * 1000.0);
-            for (const QJsonValue &e : report.value(QLatin1String("energy")).toArray())
-                o.energy.push_back(e.toDouble());
-            const int records = int(read.ledger.size());
-            o.ledger = std::make_shared<const SimplificationLedger>(std::move(read.ledger));
+            RemeshOutcome o = restoredOutcome(input, entry, read, reportPath);
+            const int records = int(o.ledger->size());
             QString error;
             std::optional<ReviewDecisions> decisions =
                 ReviewDecisions::fromJson(entry.review, records, &error);
