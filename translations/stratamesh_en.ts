@@ -31,10 +31,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Open the model in &lt;file&gt;.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Load the model, save the window as a PNG image in &lt;png&gt; and exit (status 0 when saved, 1 when the image could not be written, 2 when the model could not be opened).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -72,6 +68,10 @@
     </message>
     <message>
         <source>--complexity-cells needs a number of cells in [%1, %2], not &apos;%3&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open the model or the project (.smproj) in &lt;file&gt;.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1067,14 +1067,6 @@ angle (°)</source>
         <source>&amp;Messages</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <source>StrataMesh</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 — StrataMesh</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message numerus="yes">
         <source>%n surface(s)</source>
         <translation>
@@ -1129,6 +1121,14 @@ angle (°)</source>
     </message>
     <message>
         <source>&amp;Edit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>StrataMesh[*]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1[*] — StrataMesh</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1496,6 +1496,142 @@ Click to show it in the views</source>
     </message>
 </context>
 <context>
+    <name>stratamesh::ProjectWorkflow</name>
+    <message>
+        <source>edge %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 sites</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n iteration(s)</source>
+        <translation>
+            <numerusform>, %n iteration</numerusform>
+            <numerusform>, %n iterations</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>, d_resolution %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, adaptive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Locate the Input Model %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;Project…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a StrataMesh project: its model, remesh runs and reviews</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Save Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the remesh runs, their results and reviews as a project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Project As…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the project under another name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R&amp;uns</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project&apos;s runs and reviews have not been saved.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show Run %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Showing run %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>StrataMesh projects (*.smproj)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not open the project %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project&apos;s input model is not where the project says: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Project not opened: its input model %1 is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not open the project&apos;s input model — see Messages</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run %1: its review was not read (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Project %1 opened: %n run(s), read from its folder without remeshing</source>
+        <translation>
+            <numerusform>Project %1 opened: %n run, read from its folder without remeshing</numerusform>
+            <numerusform>Project %1 opened: %n runs, read from its folder without remeshing</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The input model was found at %1: save the project to keep it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opened project %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not save the project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Project saved with %n run(s)</source>
+        <translation>
+            <numerusform>Project saved with %n run</numerusform>
+            <numerusform>Project saved with %n runs</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::RemeshController</name>
     <message>
         <source>Remeshing</source>
@@ -1743,6 +1879,57 @@ Click to show it in the views</source>
     </message>
     <message>
         <source>#</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::RunsPanel</name>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sites</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Valid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hausdorff (% diag.)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mean Q</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reviewed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NO</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2048,6 +2235,10 @@ angle (°)</source>
     </message>
     <message>
         <source>%1 Save it before it is replaced?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 Save them before they are replaced?</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -31,10 +31,6 @@
         <translation>StrataMesh : remaillage et maillage de modèles structuraux 3D.</translation>
     </message>
     <message>
-        <source>Open the model in &lt;file&gt;.</source>
-        <translation>Ouvrir le modèle contenu dans &lt;file&gt;.</translation>
-    </message>
-    <message>
         <source>Load the model, save the window as a PNG image in &lt;png&gt; and exit (status 0 when saved, 1 when the image could not be written, 2 when the model could not be opened).</source>
         <translation>Charger le modèle, enregistrer la fenêtre en image PNG dans &lt;png&gt; et quitter (code 0 si l&apos;image est enregistrée, 1 si elle n&apos;a pas pu être écrite, 2 si le modèle n&apos;a pas pu être ouvert).</translation>
     </message>
@@ -73,6 +69,10 @@
     <message>
         <source>--complexity-cells needs a number of cells in [%1, %2], not &apos;%3&apos;.</source>
         <translation>--complexity-cells demande un nombre de cellules dans [%1, %2], pas « %3 ».</translation>
+    </message>
+    <message>
+        <source>Open the model or the project (.smproj) in &lt;file&gt;.</source>
+        <translation>Ouvrir le modèle ou le projet (.smproj) dans &lt;file&gt;.</translation>
     </message>
 </context>
 <context>
@@ -1069,14 +1069,6 @@ min. (°)</translation>
         <source>&amp;Messages</source>
         <translation>&amp;Messages</translation>
     </message>
-    <message>
-        <source>StrataMesh</source>
-        <translation>StrataMesh</translation>
-    </message>
-    <message>
-        <source>%1 — StrataMesh</source>
-        <translation>%1 — StrataMesh</translation>
-    </message>
     <message numerus="yes">
         <source>%n surface(s)</source>
         <translation>
@@ -1132,6 +1124,14 @@ min. (°)</translation>
     <message>
         <source>&amp;Edit</source>
         <translation>É&amp;dition</translation>
+    </message>
+    <message>
+        <source>StrataMesh[*]</source>
+        <translation>StrataMesh[*]</translation>
+    </message>
+    <message>
+        <source>%1[*] — StrataMesh</source>
+        <translation>%1[*] — StrataMesh</translation>
     </message>
 </context>
 <context>
@@ -1499,6 +1499,142 @@ Cliquer pour le montrer dans les vues</translation>
     </message>
 </context>
 <context>
+    <name>stratamesh::ProjectWorkflow</name>
+    <message>
+        <source>edge %1</source>
+        <translation>arête %1</translation>
+    </message>
+    <message>
+        <source>%1 sites</source>
+        <translation>%1 sites</translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n iteration(s)</source>
+        <translation>
+            <numerusform>, %n itération</numerusform>
+            <numerusform>, %n itérations</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>, d_resolution %1</source>
+        <translation>, d_resolution %1</translation>
+    </message>
+    <message>
+        <source>, adaptive</source>
+        <translation>, adaptatif</translation>
+    </message>
+    <message>
+        <source>Locate the Input Model %1</source>
+        <translation>Retrouver le modèle d&apos;entrée %1</translation>
+    </message>
+    <message>
+        <source>Open &amp;Project…</source>
+        <translation>Ouvrir un &amp;projet…</translation>
+    </message>
+    <message>
+        <source>Open a StrataMesh project: its model, remesh runs and reviews</source>
+        <translation>Ouvrir un projet StrataMesh : son modèle, ses remaillages et leurs revues</translation>
+    </message>
+    <message>
+        <source>&amp;Save Project</source>
+        <translation>&amp;Enregistrer le projet</translation>
+    </message>
+    <message>
+        <source>Save the remesh runs, their results and reviews as a project</source>
+        <translation>Enregistrer les remaillages, leurs résultats et leurs revues dans un projet</translation>
+    </message>
+    <message>
+        <source>Save Project As…</source>
+        <translation>Enregistrer le projet sous…</translation>
+    </message>
+    <message>
+        <source>Save the project under another name</source>
+        <translation>Enregistrer le projet sous un autre nom</translation>
+    </message>
+    <message>
+        <source>Runs</source>
+        <translation>Remaillages</translation>
+    </message>
+    <message>
+        <source>R&amp;uns</source>
+        <translation>Rema&amp;illages</translation>
+    </message>
+    <message>
+        <source>The project&apos;s runs and reviews have not been saved.</source>
+        <translation>Les remaillages du projet et leurs revues n&apos;ont pas été enregistrés.</translation>
+    </message>
+    <message>
+        <source>Show Run %1</source>
+        <translation>Afficher le remaillage %1</translation>
+    </message>
+    <message>
+        <source>Showing run %1</source>
+        <translation>Remaillage %1 affiché</translation>
+    </message>
+    <message>
+        <source>Open Project</source>
+        <translation>Ouvrir un projet</translation>
+    </message>
+    <message>
+        <source>StrataMesh projects (*.smproj)</source>
+        <translation>Projets StrataMesh (*.smproj)</translation>
+    </message>
+    <message>
+        <source>Could not open the project %1</source>
+        <translation>Impossible d&apos;ouvrir le projet %1</translation>
+    </message>
+    <message>
+        <source>The project&apos;s input model is not where the project says: %1</source>
+        <translation>Le modèle d&apos;entrée du projet n&apos;est pas à l&apos;endroit indiqué : %1</translation>
+    </message>
+    <message>
+        <source>Project not opened: its input model %1 is missing</source>
+        <translation>Projet non ouvert : son modèle d&apos;entrée %1 est introuvable</translation>
+    </message>
+    <message>
+        <source>Could not open the project&apos;s input model — see Messages</source>
+        <translation>Impossible d&apos;ouvrir le modèle d&apos;entrée du projet — voir Messages</translation>
+    </message>
+    <message>
+        <source>Run %1: its review was not read (%2)</source>
+        <translation>Remaillage %1 : sa revue n&apos;a pas été lue (%2)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Project %1 opened: %n run(s), read from its folder without remeshing</source>
+        <translation>
+            <numerusform>Projet %1 ouvert : %n remaillage, relu depuis son dossier sans remailler</numerusform>
+            <numerusform>Projet %1 ouvert : %n remaillages, relus depuis son dossier sans remailler</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The input model was found at %1: save the project to keep it</source>
+        <translation>Le modèle d&apos;entrée a été trouvé à %1 : enregistrez le projet pour le garder</translation>
+    </message>
+    <message>
+        <source>Opened project %1</source>
+        <translation>Projet %1 ouvert</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>Enregistrer le projet</translation>
+    </message>
+    <message>
+        <source>Could not save the project</source>
+        <translation>Impossible d&apos;enregistrer le projet</translation>
+    </message>
+    <message numerus="yes">
+        <source>Project saved with %n run(s)</source>
+        <translation>
+            <numerusform>Projet enregistré avec %n remaillage</numerusform>
+            <numerusform>Projet enregistré avec %n remaillages</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 enregistré</translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::RemeshController</name>
     <message>
         <source>Remeshing</source>
@@ -1747,6 +1883,57 @@ Cliquer pour le montrer dans les vues</translation>
     <message>
         <source>#</source>
         <translation>n°</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::RunsPanel</name>
+    <message>
+        <source>Run</source>
+        <translation>Remaillage</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Paramètres</translation>
+    </message>
+    <message>
+        <source>Sites</source>
+        <translation>Sites</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Sommets</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Triangles</translation>
+    </message>
+    <message>
+        <source>Valid</source>
+        <translation>Valide</translation>
+    </message>
+    <message>
+        <source>Hausdorff (% diag.)</source>
+        <translation>Hausdorff (% diag.)</translation>
+    </message>
+    <message>
+        <source>Mean Q</source>
+        <translation>Q moyen</translation>
+    </message>
+    <message>
+        <source>Reviewed</source>
+        <translation>Revus</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>oui</translation>
+    </message>
+    <message>
+        <source>NO</source>
+        <translation>NON</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 sur %2</translation>
     </message>
 </context>
 <context>
@@ -2053,6 +2240,10 @@ min. (°)</translation>
     <message>
         <source>%1 Save it before it is replaced?</source>
         <translation>%1 L&apos;enregistrer avant qu&apos;il ne soit remplacé ?</translation>
+    </message>
+    <message>
+        <source>%1 Save them before they are replaced?</source>
+        <translation>%1 Les enregistrer avant qu&apos;ils ne soient remplacés ?</translation>
     </message>
 </context>
 <context>

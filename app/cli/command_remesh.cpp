@@ -22,6 +22,7 @@
 #include "remesh/ledger_reconciliation.h"
 #include "remesh/remesh_review.h"
 #include "remesh/surface_remesher.h"
+#include "remesh_report.h"
 
 #include <QElapsedTimer>
 #include <QFileInfo>
@@ -33,17 +34,6 @@
 namespace stratamesh::cli {
 
 using RemeshTable = ParamTable<RemeshParams>;
-
-namespace {
-
-QJsonObject sideJson(const Model &model, const MeshStatistics &mesh, const ValidityReport &validity)
-{
-    return QJsonObject{{QStringLiteral("counts"), toJson(countEntities(model))},
-                       {QStringLiteral("mesh"), toJson(mesh)},
-                       {QStringLiteral("validity"), toJson(validity)}};
-}
-
-} // namespace
 
 int runRemesh(CommandArgs &args)
 {
@@ -105,50 +95,20 @@ int runRemesh(CommandArgs &args)
                [&](const std::string &temporary) { exportModel(result.model, temporary); });
 
     const ModelComparison &comparison = review.comparison;
-    const ValidityReport &inValidity = review.inputValidity;
     const TopologyEdits edits = countTopologyEdits(result.ledger);
-    QJsonArray energy;
-    for (double e : result.energy)
-        energy.append(e);
-    // Every table parameter, so that `remesh --params REPORT.json` repeats the run; `sites` is
-    // the number the run started from (derived from the edge length when that was asked).
-    QJsonObject parameters = paramsToJson(table, params);
-    parameters.insert(QStringLiteral("sites"), result.initialSiteCount);
-    parameters.insert(QStringLiteral("final_sites"), result.siteCount);
-    const QJsonObject report{
-        {QStringLiteral("file"), path},
-        {QStringLiteral("output_file"), *output},
-        {QStringLiteral("topology_edits"), toJson(edits)},
-        {QStringLiteral("ledger_balance"),
-         toJson(ledgerBalance(input, result.model, result.ledger))},
-        {QStringLiteral("refinement"),
-         QJsonObject{{QStringLiteral("initial_sites"), result.initialSiteCount},
-                     {QStringLiteral("final_sites"), result.siteCount},
-                     {QStringLiteral("rounds"), result.refinementRounds},
-                     {QStringLiteral("remaining_places"), result.remainingTargets}}},
-        {QStringLiteral("parameters"), parameters},
-        {QStringLiteral("input"), sideJson(input, comparison.input.mesh, inValidity)},
-        {QStringLiteral("output"), sideJson(result.model, comparison.output.mesh, outValidity)},
-        {QStringLiteral("hausdorff_pct_bbox"), comparison.hausdorff.symmetricPctBbox},
-        {QStringLiteral("hausdorff"),
-         QJsonObject{{QStringLiteral("input_to_output"), comparison.hausdorff.aToB},
-                     {QStringLiteral("output_to_input"), comparison.hausdorff.bToA},
-                     {QStringLiteral("symmetric"), comparison.hausdorff.symmetric},
-                     {QStringLiteral("bbox_diagonal"), comparison.hausdorff.bboxDiagonal}}},
-        {QStringLiteral("histograms"),
-         QJsonObject{{QStringLiteral("min_angle_deg"),
-                      QJsonObject{{QStringLiteral("input"), toJson(comparison.inputMinAngle)},
-                                  {QStringLiteral("output"), toJson(comparison.outputMinAngle)}}},
-                     {QStringLiteral("quality"),
-                      QJsonObject{{QStringLiteral("input"), toJson(comparison.inputQuality)},
-                                  {QStringLiteral("output"), toJson(comparison.outputQuality)}}}}},
-        {QStringLiteral("timings"),
-         QJsonObject{{QStringLiteral("sampling_s"), result.timings.samplingSeconds},
-                     {QStringLiteral("mesh_s"), result.timings.meshSeconds},
-                     {QStringLiteral("total_s"), result.timings.totalSeconds}}},
-        {QStringLiteral("ledger"), toJson(result.ledger)},
-        {QStringLiteral("energy"), energy},
-    };
+    RemeshReportParts parts;
+    parts.file = path;
+    parts.outputFile = *output;
+    parts.input = &input;
+    parts.output = &result.model;
+    parts.params = &params;
+    parts.ledger = &result.ledger;
+    parts.comparison = &comparison;
+    parts.inputValidity = &review.inputValidity;
+    parts.outputValidity = &outValidity;
+    parts.facts = {result.initialSiteCount, result.siteCount, result.refinementRounds,
+                   result.remainingTargets, result.timings,   result.energy};
+    const QJsonObject report = remeshReportJson(parts);
     if (reportPath)
         plan.writeText(reportPath->toStdString(), [&](std::ostream &o) {
             o << QJsonDocument(report).toJson(QJsonDocument::Indented).toStdString();

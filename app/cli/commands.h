@@ -30,6 +30,7 @@
     X("tetmesh", runTetmesh, "MODEL {params} [-o OUT.(vtu|vtk|msh|so)] [--msh-version 4.1|2.2] [--report R.json] [--json] [--poly PLC.poly] [--overwrite]", "TetGen comparison mesh in a helper process (thesis §5.2): tets per region, dihedral angles, slivers, outcome (ok, aborted, timed_out, out_of_memory, killed, invalid_input)") \
     X("study", runStudy, "STUDY.smstudy (--plan | --run [--jobs N] | --task ID | --gather | --status | --submit slurm [--partition P] [--time T] [--mem M] [--max-parallel K] | --resubmit-failed [same options]) [--json]", "Many models x many parameter sets: plan, run here (resumable) or as one Slurm job array, gather one table of every task") \
     X("hybrid", runHybrid, "MODEL {params} [-o OUT.(vtu|msh)] [--report R.json] [--json] [--cavity-poly PLC.poly] [--overwrite]", "Hybrid tet/prism/pyramid mesh from one Voronoi diagram, prisms in thin layers, checked valid (thesis ch. 5)") \
+    X("project", runProject, "PROJECT.smproj", "List the remesh runs of a StrataMesh project (parameters, sizes, validity, review progress) as JSON, without remeshing") \
     /* end of the list */
 // clang-format on
 

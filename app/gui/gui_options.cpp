@@ -31,7 +31,8 @@ bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exi
     parser.addVersionOption();
     const QCommandLineOption open(
         QStringLiteral("open"),
-        QCoreApplication::translate("GuiOptions", "Open the model in <file>."),
+        QCoreApplication::translate("GuiOptions",
+                                    "Open the model or the project (.smproj) in <file>."),
         QStringLiteral("file"));
     const QCommandLineOption screenshot(
         QStringLiteral("screenshot"),

@@ -8,6 +8,8 @@
 #include "model_scene.h"
 #include "open_workflow.h"
 #include "progress_strip.h"
+#include "project_file.h"
+#include "project_workflow.h"
 #include "remesh_workflow.h"
 #include "study_workflow.h"
 #include "tetmesh_workflow.h"
@@ -16,6 +18,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCloseEvent>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -56,6 +59,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_tetmesh = add(new TetmeshWorkflow(*m_bench, *m_remesh, this));
     m_hybrid = add(new HybridWorkflow(*m_bench, *m_remesh, *m_tetmesh, this));
     add(new ExportWorkflow(*m_bench, *m_remesh, *m_tetmesh, *m_hybrid, this));
+
+    m_project = add(new ProjectWorkflow(*m_bench, *m_open, *m_remesh, this));
     connect(m_open, &OpenWorkflow::opened, this, &MainWindow::showModel);
     // The input view halves beside the output: the heat map's colour bar would be cut there,
     // and the cells were measured on the input only. The Complexity dock shows them again.
@@ -263,7 +268,8 @@ void MainWindow::retranslate()
     m_messageDock->setWindowTitle(tr("Messages"));
     m_messageDock->toggleViewAction()->setText(tr("&Messages"));
     const QString &name = m_bench->displayName();
-    setWindowTitle(name.isEmpty() ? tr("StrataMesh") : tr("%1 — StrataMesh").arg(name));
+    // [*]: the unsaved-project marker (ProjectWorkflow sets windowModified).
+    setWindowTitle(name.isEmpty() ? tr("StrataMesh[*]") : tr("%1[*] — StrataMesh").arg(name));
     updateCounts();
 }
 
@@ -276,7 +282,19 @@ void MainWindow::changeEvent(QEvent *event)
 
 void MainWindow::openFile(const QString &path)
 {
-    m_open->openFile(path);
+    if (isProjectFile(path))
+        m_project->openProject(path);
+    else
+        m_open->openFile(path);
+}
+
+// Unsaved results (a project's runs and reviews, a remeshed model) are offered for saving.
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (m_bench->mayDiscardWork())
+        event->accept();
+    else
+        event->ignore();
 }
 
 void MainWindow::openSample()

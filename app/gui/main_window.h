@@ -24,6 +24,7 @@ class MessagePanel;
 class ModelScene;
 class OpenWorkflow;
 class ProgressStrip;
+class ProjectWorkflow;
 class RemeshWorkflow;
 class StudyWorkflow;
 class TetmeshWorkflow;
@@ -59,8 +60,10 @@ public:
     ComplexityWorkflow *complexityWorkflow() const { return m_complexity; }
     TetmeshWorkflow *tetmeshWorkflow() const { return m_tetmesh; }
     HybridWorkflow *hybridWorkflow() const { return m_hybrid; }
+    ProjectWorkflow *projectWorkflow() const { return m_project; }
 
 public slots:
+    // A model, or a project (.smproj).
     void openFile(const QString &path);
     void openSample();
     void setBoxVisible(bool visible);
@@ -69,6 +72,7 @@ public slots:
 
 protected:
     void changeEvent(QEvent *event) override;
+    void closeEvent(QCloseEvent *event) override;
     void dragEnterEvent(QDragEnterEvent *event) override;
     void dropEvent(QDropEvent *event) override;
 
@@ -96,6 +100,7 @@ private:
     ComplexityWorkflow *m_complexity = nullptr;
     TetmeshWorkflow *m_tetmesh = nullptr;
     HybridWorkflow *m_hybrid = nullptr;
+    ProjectWorkflow *m_project = nullptr;
 
     QAction *m_quit = nullptr;
     QAction *m_showBox = nullptr;

@@ -37,6 +37,10 @@ void runRemesh(QPromise<RemeshRun> &promise, std::shared_ptr<const Model> input,
         o.siteCount = result.siteCount;
         o.initialSiteCount = result.initialSiteCount;
         o.validity = result.validity;
+        o.refinementRounds = result.refinementRounds;
+        o.remainingTargets = result.remainingTargets;
+        o.timings = result.timings;
+        o.energy = result.energy;
         o.params = params;
         o.input = std::move(input);
         o.ledger = std::make_shared<const SimplificationLedger>(std::move(result.ledger));
@@ -71,6 +75,7 @@ bool RemeshController::start(std::shared_ptr<const Model> input, const RemeshPar
     std::shared_ptr<Progress> progress = begin(tr("Remeshing"));
     if (!progress)
         return false;
+    ++m_runCount;
     m_watcher.setFuture(
         QtConcurrent::run(&runRemesh, std::move(input), params, std::move(progress)));
     return true;

@@ -20,6 +20,8 @@ public:
 
     // Returns immediately; false when busy or without a model.
     bool start(std::shared_ptr<const Model> input, const RemeshParams &params);
+    // Engine runs started so far: a reopened project shows its runs without one.
+    int runCount() const { return m_runCount; }
 
 signals:
     void succeeded(const stratamesh::RemeshOutcome &outcome);
@@ -28,6 +30,7 @@ private:
     void onFinished();
 
     QFutureWatcher<RemeshRun> m_watcher;
+    int m_runCount = 0;
 };
 
 } // namespace stratamesh

@@ -27,6 +27,11 @@ struct RemeshOutcome {
     int initialSiteCount = 0; // asked for; siteCount includes the local refinement
     ValidityReport validity;  // of the output: an invalid result is shown as such
     qint64 milliseconds = 0;
+    // For the run's report in a project (the same report as the command line's).
+    int refinementRounds = 0;
+    int remainingTargets = 0;
+    RemeshTimings timings;
+    std::vector<double> energy;
 };
 
 struct RemeshRun {

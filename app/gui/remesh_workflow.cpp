@@ -193,13 +193,11 @@ void RemeshWorkflow::onStarted()
     m_bench.setStatus(tr("Remeshing %1…").arg(m_bench.displayName()));
 }
 
-void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
+void RemeshWorkflow::show(const RemeshOutcome &outcome, const ReviewDecisions &decisions)
 {
     emit outputReplaced();
     m_outcome = outcome;
-    setDecisions({});
-    m_saved = false;
-    m_cancel->setEnabled(false);
+    setDecisions(decisions);
     ModelScene *input = m_bench.inputScene();
     ModelScene *output = m_bench.outputScene();
     m_bench.hidePosition();
@@ -213,6 +211,7 @@ void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
     m_review->setLedger(outcome.ledger);
     m_exportReview->setEnabled(true);
     m_comparison->setComparison(outcome.comparison);
+    m_save->setEnabled(!m_bench.isBusy());
     QMainWindow *window = m_bench.window();
     window->resizeDocks({m_comparisonDock}, {m_comparison->sizeHint().width()}, Qt::Horizontal);
     // Room for the buttons and a few rows to review.
@@ -222,6 +221,14 @@ void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
     m_bench.views()->splitEvenly();
     updateViewTitles();
     m_bench.resetCamera();
+}
+
+void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
+{
+    m_saved = false;
+    m_cancel->setEnabled(false);
+    show(outcome, {});
+    emit runAdded(outcome);
 
     Message done;
     done.text = tr("Remeshed with %1 sites in %2 s: %3 triangles, %n simplification(s) recorded",

@@ -38,6 +38,11 @@ public:
     const ReviewDecisions &decisions() const { return m_decisions; }
     // Replaces every decision at once (a project being loaded, an undo); not undoable itself.
     void setDecisions(const ReviewDecisions &decisions);
+    // Shows a run made earlier (a project's, or another of this session's) in place of the shown
+    // one, with its review: no engine run, no message.
+    void show(const RemeshOutcome &outcome, const ReviewDecisions &decisions);
+    // The shown result is kept in a file (a saved project holds it): no prompt before closing.
+    void markSaved() { m_saved = true; }
     QAction *remeshAction() const { return m_remesh; }
     QAction *saveAction() const { return m_save; }
     QAction *exportReviewAction() const { return m_exportReview; }
@@ -79,6 +84,8 @@ signals:
     // A new remesh replaces the last, before it is shown: what was made of the last one goes.
     void outputReplaced();
     void decisionsChanged();
+    // A remesh finished and was shown (after outputReplaced()): the run list keeps it.
+    void runAdded(const stratamesh::RemeshOutcome &outcome);
 
 private:
     void onStarted();

@@ -149,27 +149,34 @@ void Workbench::addWorkflow(Workflow *workflow)
     m_workflows.append(workflow);
 }
 
+// One question for all that is unsaved (a remeshed model, the project holding it and its
+// reviews). Saving goes from the last workflow to the first: a later one builds on the earlier
+// (a saved project holds the remeshed model, which then needs no file of its own).
 bool Workbench::mayDiscardWork()
 {
-    for (Workflow *workflow : std::as_const(m_workflows)) {
-        const QString unsaved = workflow->unsavedWork();
-        if (unsaved.isEmpty())
-            continue;
-        const QString question = QCoreApplication::translate("stratamesh::Workbench",
-                                                             "%1 Save it before it is replaced?")
-                                     .arg(unsaved);
-        switch (m_ask(question)) {
-        case QMessageBox::Save:
-            if (!workflow->saveUnsavedWork())
+    QStringList unsaved;
+    for (const Workflow *workflow : std::as_const(m_workflows))
+        if (const QString text = workflow->unsavedWork(); !text.isEmpty())
+            unsaved.append(text);
+    if (unsaved.isEmpty())
+        return true;
+    const QString question =
+        (unsaved.size() == 1 ? QCoreApplication::translate("stratamesh::Workbench",
+                                                           "%1 Save it before it is replaced?")
+                             : QCoreApplication::translate(
+                                 "stratamesh::Workbench", "%1 Save them before they are replaced?"))
+            .arg(unsaved.join(QLatin1Char(' ')));
+    switch (m_ask(question)) {
+    case QMessageBox::Save:
+        for (auto it = m_workflows.crbegin(); it != m_workflows.crend(); ++it)
+            if (!(*it)->unsavedWork().isEmpty() && !(*it)->saveUnsavedWork())
                 return false;
-            break;
-        case QMessageBox::Discard:
-            break;
-        default:
-            return false;
-        }
+        return true;
+    case QMessageBox::Discard:
+        return true;
+    default:
+        return false;
     }
-    return true;
 }
 
 void Workbench::addJob(WorkflowJob *job)

@@ -77,8 +77,9 @@ public:
     // shown.
     void updateLegend();
 
-    // Before the work shown is replaced (another model opened): each workflow's unsaved result
-    // is offered for saving; false when the user keeps it (Cancel, or a save that failed).
+    // Before the work shown is replaced (another model or project opened, the window closed): one
+    // question lists every workflow's unsaved result, Save saves them all; false when the user
+    // keeps them (Cancel, or a save that failed).
     bool mayDiscardWork();
     // Asks Save, Discard or Cancel; tests answer in place of the user.
     using Ask = std::function<QMessageBox::StandardButton(const QString &text)>;
