@@ -11,6 +11,7 @@
 #include "study_workflow.h"
 #include "tetmesh_workflow.h"
 #include "view_pair.h"
+#include "view_workflow.h"
 #include "workbench.h"
 
 #include <QAction>
@@ -54,6 +55,7 @@ MainWindow::MainWindow(QWidget *parent)
     m_complexity = add(new ComplexityWorkflow(*m_bench, this));
     m_tetmesh = add(new TetmeshWorkflow(*m_bench, *m_remesh, this));
     m_hybrid = add(new HybridWorkflow(*m_bench, *m_remesh, *m_tetmesh, this));
+    m_view = add(new ViewWorkflow(*m_bench, *m_remesh, *m_tetmesh, *m_hybrid, this));
     connect(m_open, &OpenWorkflow::opened, this, &MainWindow::showModel);
     // The input view halves beside the output: the heat map's colour bar would be cut there,
     // and the cells were measured on the input only. The Complexity dock shows them again.

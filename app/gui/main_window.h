@@ -27,6 +27,7 @@ class ProgressStrip;
 class RemeshWorkflow;
 class StudyWorkflow;
 class TetmeshWorkflow;
+class ViewWorkflow;
 class ViewPair;
 class VtkViewWidget;
 class Workbench;
@@ -59,6 +60,7 @@ public:
     ComplexityWorkflow *complexityWorkflow() const { return m_complexity; }
     TetmeshWorkflow *tetmeshWorkflow() const { return m_tetmesh; }
     HybridWorkflow *hybridWorkflow() const { return m_hybrid; }
+    ViewWorkflow *viewWorkflow() const { return m_view; }
 
 public slots:
     void openFile(const QString &path);
@@ -96,6 +98,7 @@ private:
     ComplexityWorkflow *m_complexity = nullptr;
     TetmeshWorkflow *m_tetmesh = nullptr;
     HybridWorkflow *m_hybrid = nullptr;
+    ViewWorkflow *m_view = nullptr;
 
     QAction *m_quit = nullptr;
     QAction *m_showBox = nullptr;
