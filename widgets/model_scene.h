@@ -9,6 +9,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <utility>
@@ -129,8 +130,9 @@ private:
     vtkSmartPointer<vtkLookupTable> m_scalarTable;
     vtkSmartPointer<vtkScalarBarActor> m_scalarBar;
     std::vector<vtkSmartPointer<vtkClipPolyData>> m_clips; // one per surface while clipped
-    vtkSmartPointer<vtkPlane> m_plane;                     // clips surfaces (filter)
-    vtkSmartPointer<vtkPlane> m_mapperPlane;               // clips lines, corners, highlight (GPU)
+    // Lines, box lines, corners, box corners, highlight, box highlight while clipped.
+    std::array<vtkSmartPointer<vtkClipPolyData>, 6> m_otherClips;
+    vtkSmartPointer<vtkPlane> m_plane;
     vtkSmartPointer<vtkActor> m_highlight;
     vtkSmartPointer<vtkActor> m_boxHighlight; // shown with the box only
     int m_highlightCount = 0;

@@ -15,6 +15,7 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkProperty2D.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTextProperty.h>
@@ -34,6 +35,30 @@ void styleText(vtkTextProperty *text, int size)
     text->ShadowOff();
     text->BoldOff();
     text->ItalicOff();
+}
+
+// Routes the actor's mapper through `clip` while clipped, back to its own data when not. A filter
+// rather than a mapper's clipping plane: what remains can be counted, and it is the same cut in
+// every renderer.
+void routeThroughClip(vtkActor *actor, vtkSmartPointer<vtkClipPolyData> &clip, vtkPlane *plane,
+                      bool clipped)
+{
+    if (!actor)
+        return;
+    auto *mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+    if (clipped) {
+        if (!clip) {
+            clip = vtkSmartPointer<vtkClipPolyData>::New();
+            clip->SetInputData(vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)));
+            clip->InsideOutOn(); // keeps the negative side, as TetMeshScene
+            mapper->SetInputConnection(clip->GetOutputPort());
+        }
+        clip->SetClipFunction(plane);
+        clip->Modified();
+    } else if (clip) {
+        mapper->SetInputData(vtkPolyData::SafeDownCast(clip->GetInput()));
+        clip = nullptr;
+    }
 }
 
 } // namespace
@@ -88,7 +113,11 @@ void ModelScene::setScalarColouring(const std::vector<std::vector<double>> &valu
         m_scalarBar->SetMaximumWidthInPixels(90);
         m_scalarBar->SetMaximumHeightInPixels(300);
         // Right-hand side: the left one belongs to the complexity heat map and the tets.
-        m_scalarBar->SetPosition(0.86, 0.25);
+        m_scalarBar->SetPosition(0.84, 0.25);
+        // Labels stay readable over dark colourings of the surfaces behind them.
+        m_scalarBar->DrawBackgroundOn();
+        m_scalarBar->GetBackgroundProperty()->SetColor(1.0, 1.0, 1.0);
+        m_scalarBar->GetBackgroundProperty()->SetOpacity(0.7);
         m_scalarBar->SetWidth(0.12);
         m_scalarBar->SetHeight(0.5);
         m_renderer->AddViewProp(m_scalarBar);
@@ -138,15 +167,10 @@ vtkDataArray *ModelScene::surfaceScalars(int surface) const
 
 void ModelScene::setClipPlane(const double origin[3], const double normal[3])
 {
-    if (!m_plane) {
+    if (!m_plane)
         m_plane = vtkSmartPointer<vtkPlane>::New();
-        m_mapperPlane = vtkSmartPointer<vtkPlane>::New();
-    }
     m_plane->SetOrigin(origin);
     m_plane->SetNormal(normal);
-    // A mapper's clipping plane keeps the side its normal points to.
-    m_mapperPlane->SetOrigin(origin);
-    m_mapperPlane->SetNormal(-normal[0], -normal[1], -normal[2]);
     m_clipped = true;
     applyClip();
 }
@@ -159,35 +183,13 @@ void ModelScene::clearClipPlane()
 
 void ModelScene::applyClip()
 {
-    // Surfaces through a filter, so what remains can be counted; the thin rest on the GPU.
-    for (std::size_t i = 0; i < m_surfaceActors.size(); ++i) {
-        auto *mapper = vtkPolyDataMapper::SafeDownCast(m_surfaceActors[i]->GetMapper());
-        vtkPolyData *data = surfaceData(i);
-        if (m_clipped) {
-            if (m_clips.size() != m_surfaceActors.size())
-                m_clips.resize(m_surfaceActors.size());
-            if (!m_clips[i]) {
-                m_clips[i] = vtkSmartPointer<vtkClipPolyData>::New();
-                m_clips[i]->SetInputData(data);
-                m_clips[i]->InsideOutOn(); // keeps the negative side, as TetMeshScene
-                mapper->SetInputConnection(m_clips[i]->GetOutputPort());
-            }
-            m_clips[i]->SetClipFunction(m_plane);
-            m_clips[i]->Modified();
-        } else if (i < m_clips.size() && m_clips[i]) {
-            mapper->SetInputData(data);
-        }
-    }
-    if (!m_clipped)
-        m_clips.clear();
-    for (vtkActor *actor : {m_lines.Get(), m_boxLines.Get(), m_corners.Get(), m_boxCorners.Get(),
-                            m_highlight.Get(), m_boxHighlight.Get()}) {
-        if (!actor)
-            continue;
-        actor->GetMapper()->RemoveAllClippingPlanes();
-        if (m_clipped)
-            actor->GetMapper()->AddClippingPlane(m_mapperPlane);
-    }
+    m_clips.resize(m_surfaceActors.size());
+    for (std::size_t i = 0; i < m_surfaceActors.size(); ++i)
+        routeThroughClip(m_surfaceActors[i], m_clips[i], m_plane, m_clipped);
+    vtkActor *others[6] = {m_lines,      m_boxLines,  m_corners,
+                           m_boxCorners, m_highlight, m_boxHighlight};
+    for (std::size_t k = 0; k < m_otherClips.size(); ++k)
+        routeThroughClip(others[k], m_otherClips[k], m_plane, m_clipped);
 }
 
 int ModelScene::shownTriangleCount() const
@@ -213,6 +215,7 @@ void ModelScene::setHighlight(const std::vector<std::pair<int, int>> &triangles)
             m_renderer->RemoveActor(*actor);
         *actor = nullptr;
     }
+    m_otherClips[4] = m_otherClips[5] = nullptr;
     m_highlightCount = 0;
     if (!m_model || triangles.empty())
         return;
@@ -286,7 +289,10 @@ void ModelScene::clearExtras()
         *actor = nullptr;
     }
     m_highlightCount = 0;
-    m_clips.clear(); // the actors they fed are gone; the plane itself is kept
+    // The actors they fed are gone; the plane itself is kept.
+    m_clips.clear();
+    for (auto &clip : m_otherClips)
+        clip = nullptr;
 }
 
 } // namespace stratamesh

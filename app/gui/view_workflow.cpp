@@ -253,7 +253,7 @@ void ViewWorkflow::applyColourChoice(const ColourChoice &choice)
         case Colouring::Distance:
             perVertex = true;
             lowIsBad = false;
-            title = tr("Distance (model units)");
+            title = tr("Distance\n(model units)");
             if (m_inputDistance.empty())
                 m_inputDistance = vertexDistances(*input, *out);
             inValues = m_inputDistance;

@@ -3,12 +3,17 @@
 // selects its count, Next Worst goes by increasing Q, the clip cuts both views.
 #include "comparison_table.h"
 #include "histogram_chart.h"
+#include "hybrid_panel.h"
+#include "hybrid_workflow.h"
 #include "main_window.h"
 #include "model_scene.h"
 #include "open_workflow.h"
 #include "progress_strip.h"
 #include "remesh/surface_remesher.h"
 #include "remesh_workflow.h"
+#include "tet_mesh_pair.h"
+#include "tetmesh_panel.h"
+#include "tetmesh_workflow.h"
 #include "translations.h"
 #include "view_workflow.h"
 #include "vtk_view_widget.h"
@@ -112,7 +117,7 @@ private slots:
 
         m_view->colourAction(Colouring::Distance)->trigger();
         QCOMPARE(QString::fromUtf8(m_window->outputScene()->scalarBar()->GetTitle()),
-                 QStringLiteral("Distance (model units)"));
+                 QStringLiteral("Distance\n(model units)"));
         table = m_window->outputScene()->lookupTable();
         double range[2];
         table->GetTableRange(range);
@@ -217,12 +222,17 @@ private slots:
             QVERIFY(after > 0);
             QVERIFY(after < before[i]);
         }
+        // The tet meshes' clip follows (their controls and their scenes).
+        QVERIFY(m_window->tetmeshWorkflow()->panel()->clipEnabled());
+        QVERIFY(m_window->tetmeshWorkflow()->scenes()->isClipped());
+        QVERIFY(m_window->hybridWorkflow()->panel()->clipEnabled());
         // The colouring goes through the clip: the cut surfaces stay coloured.
         QVERIFY(scenes[1]->hasScalarColouring());
         QVERIFY(saveWindowScreenshot(m_window.get(), kShots + "/colour_clip.png"));
         m_view->clipAction()->trigger();
         for (int i = 0; i < 2; ++i)
             QCOMPARE(scenes[i]->shownTriangleCount(), before[i]);
+        QVERIFY(!m_window->tetmeshWorkflow()->scenes()->isClipped());
     }
 
 private:
