@@ -376,11 +376,15 @@ int ViewWorkflow::selectBin(bool quality, int bin, bool output)
     }
     const QLocale locale;
     const int decimals = quality ? 2 : 0;
-    m_bench.setStatus(
-        tr("%n triangle(s) of the %1 highlighted: %2 in [%3, %4]", nullptr, m_selectionCount)
-            .arg(output ? tr("output") : tr("input"), quality ? tr("Q") : tr("min angle"),
-                 locale.toString(histogram->edges()[std::size_t(bin)], 'f', decimals),
-                 locale.toString(histogram->edges()[std::size_t(bin) + 1], 'f', decimals)));
+    const QString what = quality ? tr("Q") : tr("min angle");
+    const QString low = locale.toString(histogram->edges()[std::size_t(bin)], 'f', decimals);
+    const QString high = locale.toString(histogram->edges()[std::size_t(bin) + 1], 'f', decimals);
+    // Whole sentences for each side: the article differs in French.
+    m_bench.setStatus((output ? tr("%n triangle(s) of the output highlighted: %1 in [%2, %3]",
+                                   nullptr, m_selectionCount)
+                              : tr("%n triangle(s) of the input highlighted: %1 in [%2, %3]",
+                                   nullptr, m_selectionCount))
+                          .arg(what, low, high));
     m_bench.render();
     return m_selectionCount;
 }
@@ -430,8 +434,10 @@ void ViewWorkflow::nextWorst()
     m_selectionCount = 1;
     m_bench.showPosition(t.centroid);
     const QLocale locale;
-    m_bench.setStatus(tr("Worst triangle %1 of the %2: surface %3, triangle %4, Q = %5")
-                          .arg(locale.toString(m_worstNext), out ? tr("output") : tr("input"),
+    const QString text =
+        out ? tr("Worst triangle %1 of the output: surface %2, triangle %3, Q = %4")
+            : tr("Worst triangle %1 of the input: surface %2, triangle %3, Q = %4");
+    m_bench.setStatus(text.arg(locale.toString(m_worstNext),
                                QString::fromStdString(model->surfaces[std::size_t(t.surface)].name),
                                locale.toString(t.triangle), locale.toString(t.value, 'f', 3)));
 }
