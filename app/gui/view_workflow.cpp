@@ -357,7 +357,7 @@ int ViewWorkflow::selectBin(bool quality, int bin, bool output)
     const TriangleMeasure measure = quality ? TriangleMeasure::Quality : TriangleMeasure::MinAngle;
     std::vector<std::pair<int, int>> triangles;
     try {
-        for (const TriangleRef &t : trianglesInBin(*model, measure, *histogram, bin))
+        for (const MeasuredTriangle &t : trianglesInBin(*model, measure, *histogram, bin))
             triangles.emplace_back(t.surface, t.triangle);
     } catch (const std::exception &e) {
         m_bench.addMessage(errorMessage(e, m_bench.modelPath()));
@@ -415,7 +415,7 @@ void ViewWorkflow::nextWorst()
         }
         if (!withBox)
             m_worst.erase(std::remove_if(m_worst.begin(), m_worst.end(),
-                                         [&](const TriangleRef &t) {
+                                         [&](const MeasuredTriangle &t) {
                                              return model->surfaces[std::size_t(t.surface)].type
                                                     == FeatureType::Boundary;
                                          }),
@@ -428,7 +428,7 @@ void ViewWorkflow::nextWorst()
         return;
     if (m_worstNext >= int(m_worst.size()))
         m_worstNext = 0; // round again from the worst
-    const TriangleRef &t = m_worst[std::size_t(m_worstNext++)];
+    const MeasuredTriangle &t = m_worst[std::size_t(m_worstNext++)];
     (out ? m_bench.inputScene() : m_bench.outputScene())->clearHighlight();
     scene->setHighlight({{t.surface, t.triangle}});
     m_selectionCount = 1;
@@ -442,7 +442,7 @@ void ViewWorkflow::nextWorst()
                                locale.toString(t.triangle), locale.toString(t.value, 'f', 3)));
 }
 
-std::optional<TriangleRef> ViewWorkflow::lastWorst() const
+std::optional<MeasuredTriangle> ViewWorkflow::lastWorst() const
 {
     if (m_worstNext <= 0 || m_worstNext > int(m_worst.size()))
         return std::nullopt;

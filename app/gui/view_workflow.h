@@ -71,7 +71,7 @@ public:
     void nextWorst();
     QAction *nextWorstAction() const { return m_nextWorst; }
     // The triangle Next Worst went to last; nullopt before.
-    std::optional<TriangleRef> lastWorst() const;
+    std::optional<MeasuredTriangle> lastWorst() const;
 
 private:
     void applyClip();
@@ -99,7 +99,7 @@ private:
     double m_fraction = 0.5;
     QAction *m_nextWorst;
     QAction *m_separator;
-    std::vector<TriangleRef> m_worst; // by increasing Q, computed at the first Next Worst
+    std::vector<MeasuredTriangle> m_worst; // by increasing Q, computed at the first Next Worst
     int m_worstNext = 0;
     bool m_worstOfOutput = false;
     bool m_worstWithBox = false;

@@ -48,10 +48,10 @@ std::vector<std::vector<double>> triangleMeasures(const Model &model, TriangleMe
     return values;
 }
 
-std::vector<TriangleRef> trianglesInBin(const Model &model, TriangleMeasure measure,
-                                        const Histogram &bins, int bin)
+std::vector<MeasuredTriangle> trianglesInBin(const Model &model, TriangleMeasure measure,
+                                             const Histogram &bins, int bin)
 {
-    std::vector<TriangleRef> selected;
+    std::vector<MeasuredTriangle> selected;
     if (bin < 0 || std::size_t(bin) >= bins.binCount())
         return selected;
     forEachMeasure(model, measure, [&](int s, int t, double value, const Vec3 &centroid) {
@@ -61,15 +61,16 @@ std::vector<TriangleRef> trianglesInBin(const Model &model, TriangleMeasure meas
     return selected;
 }
 
-std::vector<TriangleRef> trianglesByMeasure(const Model &model, TriangleMeasure measure)
+std::vector<MeasuredTriangle> trianglesByMeasure(const Model &model, TriangleMeasure measure)
 {
-    std::vector<TriangleRef> all;
+    std::vector<MeasuredTriangle> all;
     all.reserve(model.triangleCount());
     forEachMeasure(model, measure, [&](int s, int t, double value, const Vec3 &centroid) {
         all.push_back({s, t, value, centroid});
     });
-    std::stable_sort(all.begin(), all.end(),
-                     [](const TriangleRef &a, const TriangleRef &b) { return a.value < b.value; });
+    std::stable_sort(
+        all.begin(), all.end(),
+        [](const MeasuredTriangle &a, const MeasuredTriangle &b) { return a.value < b.value; });
     return all;
 }
 

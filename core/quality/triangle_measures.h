@@ -17,7 +17,7 @@ enum class TriangleMeasure { MinAngle, Quality };
 // Surface::triangles). Throws InputError when a triangle refers to a vertex its surface lacks.
 std::vector<std::vector<double>> triangleMeasures(const Model &model, TriangleMeasure measure);
 
-struct TriangleRef {
+struct MeasuredTriangle {
     int surface = -1;
     int triangle = -1;
     double value = 0.0;
@@ -26,11 +26,11 @@ struct TriangleRef {
 
 // The triangles counted in `bin` of a histogram of `measure` with these edges, in model order:
 // as many as the bar's count, since Histogram::binOf decides both.
-std::vector<TriangleRef> trianglesInBin(const Model &model, TriangleMeasure measure,
-                                        const Histogram &bins, int bin);
+std::vector<MeasuredTriangle> trianglesInBin(const Model &model, TriangleMeasure measure,
+                                             const Histogram &bins, int bin);
 
 // Every triangle by increasing value (worst first for min angle and Q); ties keep model order.
-std::vector<TriangleRef> trianglesByMeasure(const Model &model, TriangleMeasure measure);
+std::vector<MeasuredTriangle> trianglesByMeasure(const Model &model, TriangleMeasure measure);
 
 // Distance from each vertex of `from` to the nearest triangle of `to`, surface by surface
 // (local vertex ids). Throws InputError when `to` has no triangle.
