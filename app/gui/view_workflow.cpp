@@ -114,6 +114,13 @@ ViewWorkflow::ViewWorkflow(Workbench &bench, RemeshWorkflow &remesh, TetmeshWork
     connect(m_nextWorst, &QAction::triggered, this, &ViewWorkflow::nextWorst);
 
     connectCharts();
+    // One plane: a change made in the tet meshes' own controls moves it in every view too.
+    const auto adopt = [this](bool enabled, ClipAxis axis, double fraction) {
+        if (!m_syncing)
+            setClip(enabled, axis, fraction);
+    };
+    connect(m_tetmesh.panel(), &TetmeshPanel::clipChanged, this, adopt);
+    connect(m_hybrid.panel(), &HybridPanel::clipChanged, this, adopt);
     // A new output: the same colouring and clip on it, a new order of worst triangles.
     connect(&m_remesh, &RemeshWorkflow::finished, this, [this](bool ok) {
         if (!ok)
@@ -321,8 +328,10 @@ void ViewWorkflow::applyClip()
             scene->setClipPlane(origin, normal);
     }
     // The tet meshes' own clip controls follow, so they show the plane that is drawn.
+    m_syncing = true;
     m_tetmesh.panel()->setClip(m_clipEnabled, m_axis, m_fraction);
     m_hybrid.panel()->setClip(m_clipEnabled, m_axis, m_fraction);
+    m_syncing = false;
     m_bench.render();
 }
 

@@ -97,6 +97,7 @@ private:
     bool m_clipEnabled = false;
     ClipAxis m_axis = ClipAxis::Y;
     double m_fraction = 0.5;
+    bool m_syncing = false; // while the tet panels are told the plane
     QAction *m_nextWorst;
     QAction *m_separator;
     std::vector<MeasuredTriangle> m_worst; // by increasing Q, computed at the first Next Worst

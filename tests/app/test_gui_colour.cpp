@@ -12,6 +12,7 @@
 #include "remesh/surface_remesher.h"
 #include "remesh_workflow.h"
 #include "tet_mesh_pair.h"
+#include "tet_mesh_scene.h"
 #include "tetmesh_panel.h"
 #include "tetmesh_workflow.h"
 #include "translations.h"
@@ -233,6 +234,40 @@ private slots:
         for (int i = 0; i < 2; ++i)
             QCOMPARE(scenes[i]->shownTriangleCount(), before[i]);
         QVERIFY(!m_window->tetmeshWorkflow()->scenes()->isClipped());
+        // The tet panel's own control moves the plane of the surfaces too.
+        m_window->tetmeshWorkflow()->panel()->setClip(true, ClipAxis::Z, 0.5);
+        QVERIFY(m_view->clipEnabled());
+        QVERIFY(m_view->clipAction()->isChecked());
+        for (int i = 0; i < 2; ++i)
+            QVERIFY(scenes[i]->shownTriangleCount() < before[i]);
+        QVERIFY(m_window->hybridWorkflow()->panel()->clipEnabled());
+        m_view->clipAction()->trigger();
+        QVERIFY(!m_window->tetmeshWorkflow()->panel()->clipEnabled());
+    }
+
+    // Last, as the tets replace the surfaces in the views: the same plane cuts both tet meshes.
+    void clipCutsTheTetMeshesOfBothViews()
+    {
+        TetgenParams params;
+        params.timeLimitSeconds = 60.0;
+        QSignalSpy finished(m_window->tetmeshWorkflow(), &TetmeshWorkflow::finished);
+        QVERIFY(m_window->tetmeshWorkflow()->start(params, true));
+        QVERIFY(finished.wait(kTimeoutMs) && finished.first().first().toBool());
+        TetMeshPair *tets = m_window->tetmeshWorkflow()->scenes();
+        QVERIFY(tets->input().mesh() && tets->output().mesh());
+        QVERIFY(!tets->isClipped());
+        m_view->setClip(true, ClipAxis::Y, 0.5);
+        TetMeshScene *sides[2] = {&tets->input(), &tets->output()};
+        for (TetMeshScene *side : sides) {
+            qInfo("%d of %d tets shown", side->shownTetCount(), side->tetCount());
+            QVERIFY(side->shownTetCount() > 0);
+            QVERIFY(side->shownTetCount() < side->tetCount());
+        }
+        QVERIFY(m_window->tetmeshWorkflow()->panel()->clipEnabled());
+        QVERIFY(saveWindowScreenshot(m_window.get(), kShots + "/colour_clip_tets.png"));
+        m_view->setClip(false, ClipAxis::Y, 0.5);
+        for (TetMeshScene *side : sides)
+            QCOMPARE(side->shownTetCount(), side->tetCount());
     }
 
 private:
