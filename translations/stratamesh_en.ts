@@ -1890,6 +1890,18 @@ angle (°)</source>
         <source>Worst triangle %1 of the input: surface %2, triangle %3, Q = %4</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Clip Both Views</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the Clip Plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the Clip Plane</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::Workbench</name>

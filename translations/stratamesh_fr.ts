@@ -1895,6 +1895,18 @@ min. (°)</translation>
         <source>Worst triangle %1 of the input: surface %2, triangle %3, Q = %4</source>
         <translation>Pire triangle n° %1 de l’entrée : surface %2, triangle %3, Q = %4</translation>
     </message>
+    <message>
+        <source>Clip Both Views</source>
+        <translation>Couper les deux vues</translation>
+    </message>
+    <message>
+        <source>Remove the Clip Plane</source>
+        <translation>Retirer le plan de coupe</translation>
+    </message>
+    <message>
+        <source>Move the Clip Plane</source>
+        <translation>Déplacer le plan de coupe</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::Workbench</name>

@@ -43,13 +43,51 @@ public:
         : QUndoCommand(text), m_workflow(workflow), m_before(before), m_after(after)
     {
     }
-    void undo() override { m_workflow.applyColourChoice(m_before); }
-    void redo() override { m_workflow.applyColourChoice(m_after); }
+    void undo() override { apply(m_before); }
+    void redo() override { apply(m_after); }
 
 private:
+    void apply(const ColourChoice &choice)
+    {
+        m_workflow.applyColourChoice(choice);
+        if (m_before.colouring != m_after.colouring)
+            m_workflow.applyTetColouring(choice);
+    }
+
     ViewWorkflow &m_workflow;
     ColourChoice m_before;
     ColourChoice m_after;
+};
+
+// Undo restores the plane as it was; a drag of the position slider is one command.
+class ClipCommand : public QUndoCommand {
+public:
+    ClipCommand(ViewWorkflow &workflow, const ClipState &before, const ClipState &after,
+                const QString &text)
+        : QUndoCommand(text), m_workflow(workflow), m_before(before), m_after(after)
+    {
+    }
+    void undo() override { m_workflow.setClip(m_before.enabled, m_before.axis, m_before.fraction); }
+    void redo() override { m_workflow.setClip(m_after.enabled, m_after.axis, m_after.fraction); }
+    int id() const override { return isMove() ? 1701 : -1; }
+    bool mergeWith(const QUndoCommand *other) override
+    {
+        const auto *next = static_cast<const ClipCommand *>(other); // same id: a ClipCommand
+        if (!next->isMove() || next->m_before != m_after)
+            return false;
+        m_after = next->m_after;
+        return true;
+    }
+
+private:
+    bool isMove() const
+    {
+        return m_before.enabled == m_after.enabled && m_before.axis == m_after.axis;
+    }
+
+    ViewWorkflow &m_workflow;
+    ClipState m_before;
+    ClipState m_after;
 };
 
 double maxOf(const std::vector<std::vector<double>> &values)
@@ -89,7 +127,7 @@ ViewWorkflow::ViewWorkflow(Workbench &bench, RemeshWorkflow &remesh, TetmeshWork
     m_clip->setCheckable(true);
     m_clip->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
     connect(m_clip, &QAction::triggered, this,
-            [this](bool on) { setClip(on, m_axis, m_fraction); });
+            [this](bool on) { chooseClip(on, m_axis, m_fraction); });
     m_clipMenu->addAction(m_clip);
     m_clipMenu->addSeparator();
     for (int i = 0; i < 3; ++i) {
@@ -98,7 +136,7 @@ ViewWorkflow::ViewWorkflow(Workbench &bench, RemeshWorkflow &remesh, TetmeshWork
         m_axisGroup->addAction(m_axisActions[i]);
         m_clipMenu->addAction(m_axisActions[i]);
         connect(m_axisActions[i], &QAction::triggered, this,
-                [this, i] { setClip(m_clipEnabled, ClipAxis(i), m_fraction); });
+                [this, i] { chooseClip(m_clipEnabled, ClipAxis(i), m_fraction); });
     }
     m_axisActions[int(m_axis)]->setChecked(true);
     m_position->setRange(0, kSliderSteps);
@@ -106,7 +144,7 @@ ViewWorkflow::ViewWorkflow(Workbench &bench, RemeshWorkflow &remesh, TetmeshWork
     m_position->setObjectName(QStringLiteral("ClipPosition"));
     m_position->setMinimumWidth(160);
     connect(m_position, &QSlider::valueChanged, this,
-            [this](int value) { setClip(m_clipEnabled, m_axis, double(value) / kSliderSteps); });
+            [this](int value) { chooseClip(m_clipEnabled, m_axis, double(value) / kSliderSteps); });
     m_positionAction->setDefaultWidget(m_position);
     m_clipMenu->addAction(m_positionAction);
 
@@ -117,7 +155,7 @@ ViewWorkflow::ViewWorkflow(Workbench &bench, RemeshWorkflow &remesh, TetmeshWork
     // One plane: a change made in the tet meshes' own controls moves it in every view too.
     const auto adopt = [this](bool enabled, ClipAxis axis, double fraction) {
         if (!m_syncing)
-            setClip(enabled, axis, fraction);
+            chooseClip(enabled, axis, fraction);
     };
     connect(m_tetmesh.panel(), &TetmeshPanel::clipChanged, this, adopt);
     connect(m_hybrid.panel(), &HybridPanel::clipChanged, this, adopt);
@@ -283,6 +321,30 @@ void ViewWorkflow::applyColourChoice(const ColourChoice &choice)
     }
     m_bench.updateLegend();
     m_bench.render();
+}
+
+void ViewWorkflow::chooseClip(bool enabled, ClipAxis axis, double fraction)
+{
+    const ClipState before{m_clipEnabled, m_axis, m_fraction};
+    const ClipState after{enabled, axis, std::clamp(fraction, 0.0, 1.0)};
+    if (after == before)
+        return;
+    const QString text = before.enabled != after.enabled
+                             ? (enabled ? tr("Clip Both Views") : tr("Remove the Clip Plane"))
+                             : tr("Move the Clip Plane");
+    m_bench.undoStack()->push(new ClipCommand(*this, before, after, text));
+}
+
+void ViewWorkflow::applyTetColouring(const ColourChoice &choice)
+{
+    // Tets drawn in place of the surfaces follow: the quality measures colour them by their
+    // minimum dihedral angle, the entity colouring by region; a distance leaves them be.
+    if (choice.colouring == Colouring::Distance)
+        return;
+    const TetColouring tets =
+        choice.colouring == Colouring::Entity ? TetColouring::Region : TetColouring::MinDihedral;
+    m_tetmesh.panel()->setColouring(tets);
+    m_hybrid.panel()->setColouring(tets);
 }
 
 void ViewWorkflow::setClip(bool enabled, ClipAxis axis, double fraction)

@@ -36,6 +36,17 @@ struct ColourChoice {
     bool operator!=(const ColourChoice &o) const { return !(*this == o); }
 };
 
+struct ClipState {
+    bool enabled = false;
+    ClipAxis axis = ClipAxis::Y;
+    double fraction = 0.5;
+    bool operator==(const ClipState &o) const
+    {
+        return enabled == o.enabled && axis == o.axis && fraction == o.fraction;
+    }
+    bool operator!=(const ClipState &o) const { return !(*this == o); }
+};
+
 class ViewWorkflow : public Workflow {
     Q_OBJECT
 public:
@@ -53,10 +64,15 @@ public:
     void chooseReverse(bool reverse);
     // Draws both views so (the undo command's work; no command).
     void applyColourChoice(const ColourChoice &choice);
+    // The tet meshes' colouring that goes with it (min dihedral for min angle and Q).
+    void applyTetColouring(const ColourChoice &choice);
     QAction *colourAction(Colouring colouring) const;
     QAction *reverseAction() const { return m_reverse; }
 
-    // `fraction` in [0, 1] across the bounds of both models together, as the tet meshes' clip.
+    // As the user does: an undoable command (moves of the position merge into one).
+    void chooseClip(bool enabled, ClipAxis axis, double fraction);
+    // `fraction` in [0, 1] across the bounds of both models together, as the tet meshes' clip
+    // (the command's work; no command).
     void setClip(bool enabled, ClipAxis axis, double fraction);
     bool clipEnabled() const { return m_clipEnabled; }
     QAction *clipAction() const { return m_clip; }

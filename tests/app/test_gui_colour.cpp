@@ -26,6 +26,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QSurfaceFormat>
 #include <QUndoStack>
 #include <QtTest>
@@ -230,6 +231,24 @@ private slots:
         // The colouring goes through the clip: the cut surfaces stay coloured.
         QVERIFY(scenes[1]->hasScalarColouring());
         QVERIFY(saveWindowScreenshot(m_window.get(), kShots + "/colour_clip.png"));
+        // Undo removes the plane, redo puts it back.
+        QUndoStack *undo = m_window->workbench()->undoStack();
+        undo->undo();
+        QVERIFY(!m_view->clipEnabled());
+        QVERIFY(!m_view->clipAction()->isChecked());
+        for (int i = 0; i < 2; ++i)
+            QCOMPARE(scenes[i]->shownTriangleCount(), before[i]);
+        undo->redo();
+        QVERIFY(m_view->clipEnabled());
+        // Moves of the slider are one command.
+        const int count = undo->count();
+        auto *slider = m_window->findChild<QSlider *>(QStringLiteral("ClipPosition"));
+        QVERIFY(slider);
+        slider->setValue(30);
+        slider->setValue(20);
+        QCOMPARE(undo->count(), count + 1);
+        undo->undo();
+        QCOMPARE(slider->value(), 50);
         m_view->clipAction()->trigger();
         for (int i = 0; i < 2; ++i)
             QCOMPARE(scenes[i]->shownTriangleCount(), before[i]);
@@ -254,6 +273,12 @@ private slots:
         QVERIFY(m_window->tetmeshWorkflow()->start(params, true));
         QVERIFY(finished.wait(kTimeoutMs) && finished.first().first().toBool());
         TetMeshPair *tets = m_window->tetmeshWorkflow()->scenes();
+        // Colouring by a quality measure colours the tets by their min dihedral angle.
+        m_view->colourAction(Colouring::Entity)->trigger();
+        QCOMPARE(tets->input().colouring(), TetColouring::Region);
+        m_view->colourAction(Colouring::MinAngle)->trigger();
+        QCOMPARE(tets->input().colouring(), TetColouring::MinDihedral);
+        QCOMPARE(tets->output().colouring(), TetColouring::MinDihedral);
         QVERIFY(tets->input().mesh() && tets->output().mesh());
         QVERIFY(!tets->isClipped());
         m_view->setClip(true, ClipAxis::Y, 0.5);
