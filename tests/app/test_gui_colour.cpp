@@ -25,6 +25,8 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QMenu>
+#include <QMenuBar>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSurfaceFormat>
@@ -107,6 +109,30 @@ private slots:
         vtkLookupTable *table = scenes[1]->lookupTable();
         QVERIFY(red(table, 0.0) > red(table, 1.0) + 0.5);
         QVERIFY(saveWindowScreenshot(m_window.get(), kShots + "/colour_quality.png"));
+    }
+
+    // The View menu offers Colour By (the measures checkable, one checked) and Clip Plane.
+    void viewMenuOffersTheColourings()
+    {
+        QMenu *view = nullptr;
+        for (QAction *action : m_window->menuBar()->actions())
+            if (action->text() == QStringLiteral("&View"))
+                view = action->menu();
+        QVERIFY(view);
+        QMenu *colourBy = nullptr;
+        for (QAction *action : view->actions())
+            if (action->menu() && action->text() == QStringLiteral("&Colour By"))
+                colourBy = action->menu();
+        QVERIFY(colourBy);
+        QCOMPARE(colourBy->actions().size(), 6); // four colourings, a separator, Reverse
+        view->popup(m_window->mapToGlobal(QPoint(40, 30)));
+        QTest::qWait(100);
+        colourBy->popup(view->geometry().topRight());
+        QTest::qWait(100);
+        QVERIFY(view->grab().save(kShots + "/colour_view_menu.png"));
+        QVERIFY(colourBy->grab().save(kShots + "/colour_colour_by_menu.png"));
+        colourBy->hide();
+        view->hide();
     }
 
     void reverseAndDistanceKeepBadWarmOrSwapIt()
