@@ -1902,6 +1902,14 @@ angle (°)</source>
         <source>Move the Clip Plane</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Clear &amp;Highlight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the highlight of a histogram bar&apos;s triangles or of the worst triangle</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::Workbench</name>

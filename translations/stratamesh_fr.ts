@@ -1907,6 +1907,14 @@ min. (°)</translation>
         <source>Move the Clip Plane</source>
         <translation>Déplacer le plan de coupe</translation>
     </message>
+    <message>
+        <source>Clear &amp;Highlight</source>
+        <translation>Effacer la &amp;mise en évidence</translation>
+    </message>
+    <message>
+        <source>Remove the highlight of a histogram bar&apos;s triangles or of the worst triangle</source>
+        <translation>Retirer la mise en évidence des triangles d’une barre d’histogramme ou du pire triangle</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::Workbench</name>

@@ -108,7 +108,7 @@ ViewWorkflow::ViewWorkflow(Workbench &bench, RemeshWorkflow &remesh, TetmeshWork
       m_reverse(new QAction(this)), m_clipMenu(new QMenu(bench.window())),
       m_clip(new QAction(this)), m_axisGroup(new QActionGroup(this)),
       m_positionAction(new QWidgetAction(this)), m_position(new QSlider(Qt::Horizontal)),
-      m_nextWorst(new QAction(this)), m_separator(separator())
+      m_nextWorst(new QAction(this)), m_clearHighlight(new QAction(this)), m_separator(separator())
 {
     for (int i = 0; i < 4; ++i) {
         m_colourActions[i] = new QAction(this);
@@ -125,7 +125,7 @@ ViewWorkflow::ViewWorkflow(Workbench &bench, RemeshWorkflow &remesh, TetmeshWork
     connect(m_reverse, &QAction::triggered, this, &ViewWorkflow::chooseReverse);
 
     m_clip->setCheckable(true);
-    m_clip->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
+    m_clip->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L)); // Ctrl+K is Analyse > Complexity
     connect(m_clip, &QAction::triggered, this,
             [this](bool on) { chooseClip(on, m_axis, m_fraction); });
     m_clipMenu->addAction(m_clip);
@@ -150,6 +150,8 @@ ViewWorkflow::ViewWorkflow(Workbench &bench, RemeshWorkflow &remesh, TetmeshWork
 
     m_nextWorst->setShortcut(QKeySequence(Qt::Key_BracketRight));
     connect(m_nextWorst, &QAction::triggered, this, &ViewWorkflow::nextWorst);
+    m_clearHighlight->setShortcut(QKeySequence(Qt::Key_Escape));
+    connect(m_clearHighlight, &QAction::triggered, this, &ViewWorkflow::clearHighlight);
 
     connectCharts();
     // One plane: a change made in the tet meshes' own controls moves it in every view too.
@@ -176,7 +178,8 @@ QList<QAction *> ViewWorkflow::menuActions(Menu menu) const
 {
     if (menu != Menu::View)
         return {};
-    return {m_colourMenu->menuAction(), m_clipMenu->menuAction(), m_nextWorst, m_separator};
+    return {m_colourMenu->menuAction(), m_clipMenu->menuAction(), m_nextWorst, m_clearHighlight,
+            m_separator};
 }
 
 void ViewWorkflow::retranslate()
@@ -197,6 +200,9 @@ void ViewWorkflow::retranslate()
     m_axisActions[1]->setText(tr("Across &Y (north)"));
     m_axisActions[2]->setText(tr("Across &Z (up)"));
     m_position->setToolTip(tr("Position of the clip plane across the models"));
+    m_clearHighlight->setText(tr("Clear &Highlight"));
+    m_clearHighlight->setStatusTip(
+        tr("Remove the highlight of a histogram bar's triangles or of the worst triangle"));
     m_nextWorst->setText(tr("Next &Worst Triangle"));
     m_nextWorst->setStatusTip(
         tr("Fly to the triangles of the output (or the input) by increasing quality Q"));
@@ -223,6 +229,7 @@ void ViewWorkflow::enableActions(bool busy)
     m_reverse->setEnabled(!busy && model);
     m_clip->setEnabled(model);
     m_nextWorst->setEnabled(!busy && model);
+    m_clearHighlight->setEnabled(model);
 }
 
 std::shared_ptr<const Model> ViewWorkflow::output() const
@@ -458,6 +465,14 @@ int ViewWorkflow::selectBin(bool quality, int bin, bool output)
                           .arg(what, low, high));
     m_bench.render();
     return m_selectionCount;
+}
+
+void ViewWorkflow::clearHighlight()
+{
+    m_bench.inputScene()->clearHighlight();
+    m_bench.outputScene()->clearHighlight();
+    m_selectionCount = 0;
+    m_bench.hidePosition();
 }
 
 void ViewWorkflow::resetReview()

@@ -86,6 +86,9 @@ public:
     // box triangles only while the box is shown, and highlights it.
     void nextWorst();
     QAction *nextWorstAction() const { return m_nextWorst; }
+    // Removes the highlight (and the marker) from both views.
+    void clearHighlight();
+    QAction *clearHighlightAction() const { return m_clearHighlight; }
     // The triangle Next Worst went to last; nullopt before.
     std::optional<MeasuredTriangle> lastWorst() const;
 
@@ -115,6 +118,7 @@ private:
     double m_fraction = 0.5;
     bool m_syncing = false; // while the tet panels are told the plane
     QAction *m_nextWorst;
+    QAction *m_clearHighlight;
     QAction *m_separator;
     std::vector<MeasuredTriangle> m_worst; // by increasing Q, computed at the first Next Worst
     int m_worstNext = 0;

@@ -206,6 +206,24 @@ private slots:
         emit angles->barClicked(abin, true);
         QCOMPARE(std::size_t(m_view->selectionCount()), a->counts()[std::size_t(abin)]);
         QVERIFY(saveWindowScreenshot(m_window.get(), kShots + "/colour_selection.png"));
+        m_view->clearHighlightAction()->trigger();
+        QCOMPARE(m_window->outputScene()->highlightCount(), 0);
+        QCOMPARE(m_window->scene()->highlightCount(), 0);
+    }
+
+    // Two actions on one shortcut make Qt fire neither (the clip once took Ctrl+K).
+    void shortcutsAreUnique()
+    {
+        QHash<QKeySequence, QString> seen;
+        for (QAction *action : m_window->findChildren<QAction *>()) {
+            for (const QKeySequence &key : action->shortcuts()) {
+                QVERIFY2(
+                    !seen.contains(key) || seen.value(key) == action->text(),
+                    qPrintable(key.toString() + ": " + seen.value(key) + " and " + action->text()));
+                seen.insert(key, action->text());
+            }
+        }
+        QVERIFY(seen.contains(QKeySequence(Qt::Key_BracketRight)));
     }
 
     void nextWorstGoesByIncreasingQuality()
