@@ -2228,6 +2228,152 @@ angle (°)</source>
     </message>
 </context>
 <context>
+    <name>stratamesh::ViewWorkflow</name>
+    <message>
+        <source>&amp;Colour By</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Entity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Triangle &amp;Min Angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Triangle &amp;Quality Q</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Distance to the Other Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Colour each vertex by its distance to the other model (needs a remesh)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Reverse Colours</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Swap the ends of the colour map (bad is yellow by default)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C&amp;lip Plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Clip Both Views</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cut the surfaces and the tet meshes of both views with one plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Across &amp;X (east)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Across &amp;Y (north)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Across &amp;Z (up)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position of the clip plane across the models</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next &amp;Worst Triangle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fly to the triangles of the output (or the input) by increasing quality Q</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Colour by %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reverse Colours</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unreverse Colours</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min angle (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Distance
+(model units)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 triangles highlighted for a bar of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>min angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n triangle(s) of the output highlighted: %1 in [%2, %3]</source>
+        <translation>
+            <numerusform>%n triangle of the output highlighted: %1 in [%2, %3]</numerusform>
+            <numerusform>%n triangles of the output highlighted: %1 in [%2, %3]</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n triangle(s) of the input highlighted: %1 in [%2, %3]</source>
+        <translation>
+            <numerusform>%n triangle of the input highlighted: %1 in [%2, %3]</numerusform>
+            <numerusform>%n triangles of the input highlighted: %1 in [%2, %3]</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Worst triangle %1 of the output: surface %2, triangle %3, Q = %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Worst triangle %1 of the input: surface %2, triangle %3, Q = %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clip Both Views</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the Clip Plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the Clip Plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clear &amp;Highlight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the highlight of a histogram bar&apos;s triangles or of the worst triangle</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::Workbench</name>
     <message>
         <source>Unsaved Result</source>

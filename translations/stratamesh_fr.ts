@@ -2232,6 +2232,153 @@ min. (°)</translation>
     </message>
 </context>
 <context>
+    <name>stratamesh::ViewWorkflow</name>
+    <message>
+        <source>&amp;Colour By</source>
+        <translation>&amp;Colorer selon</translation>
+    </message>
+    <message>
+        <source>&amp;Entity</source>
+        <translation>&amp;Entité</translation>
+    </message>
+    <message>
+        <source>Triangle &amp;Min Angle</source>
+        <translation>Angle &amp;minimal des triangles</translation>
+    </message>
+    <message>
+        <source>Triangle &amp;Quality Q</source>
+        <translation>&amp;Qualité Q des triangles</translation>
+    </message>
+    <message>
+        <source>&amp;Distance to the Other Model</source>
+        <translation>&amp;Distance à l’autre modèle</translation>
+    </message>
+    <message>
+        <source>Colour each vertex by its distance to the other model (needs a remesh)</source>
+        <translation>Colorer chaque sommet selon sa distance à l’autre modèle (après un remaillage)</translation>
+    </message>
+    <message>
+        <source>&amp;Reverse Colours</source>
+        <translation>&amp;Inverser les couleurs</translation>
+    </message>
+    <message>
+        <source>Swap the ends of the colour map (bad is yellow by default)</source>
+        <translation>Échanger les extrémités de l’échelle de couleurs (le mauvais est jaune par défaut)</translation>
+    </message>
+    <message>
+        <source>C&amp;lip Plane</source>
+        <translation>P&amp;lan de coupe</translation>
+    </message>
+    <message>
+        <source>&amp;Clip Both Views</source>
+        <translation>&amp;Couper les deux vues</translation>
+    </message>
+    <message>
+        <source>Cut the surfaces and the tet meshes of both views with one plane</source>
+        <translation>Couper les surfaces et les maillages tétraédriques des deux vues par un même plan</translation>
+    </message>
+    <message>
+        <source>Across &amp;X (east)</source>
+        <translation>Selon &amp;X (est)</translation>
+    </message>
+    <message>
+        <source>Across &amp;Y (north)</source>
+        <translation>Selon &amp;Y (nord)</translation>
+    </message>
+    <message>
+        <source>Across &amp;Z (up)</source>
+        <translation>Selon &amp;Z (haut)</translation>
+    </message>
+    <message>
+        <source>Position of the clip plane across the models</source>
+        <translation>Position du plan de coupe à travers les modèles</translation>
+    </message>
+    <message>
+        <source>Next &amp;Worst Triangle</source>
+        <translation>&amp;Pire triangle suivant</translation>
+    </message>
+    <message>
+        <source>Fly to the triangles of the output (or the input) by increasing quality Q</source>
+        <translation>Aller aux triangles de la sortie (ou de l’entrée) par qualité Q croissante</translation>
+    </message>
+    <message>
+        <source>Colour by %1</source>
+        <translation>Colorer selon %1</translation>
+    </message>
+    <message>
+        <source>Reverse Colours</source>
+        <translation>Inverser les couleurs</translation>
+    </message>
+    <message>
+        <source>Unreverse Colours</source>
+        <translation>Rétablir le sens des couleurs</translation>
+    </message>
+    <message>
+        <source>Min angle (°)</source>
+        <translation>Angle min. (°)</translation>
+    </message>
+    <message>
+        <source>Q</source>
+        <translation>Q</translation>
+    </message>
+    <message>
+        <source>Distance
+(model units)</source>
+        <translation>Distance
+(unités du modèle)</translation>
+    </message>
+    <message>
+        <source>%1 triangles highlighted for a bar of %2</source>
+        <translation>%1 triangles mis en évidence pour une barre de %2</translation>
+    </message>
+    <message>
+        <source>min angle</source>
+        <translation>angle min.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n triangle(s) of the output highlighted: %1 in [%2, %3]</source>
+        <translation>
+            <numerusform>%n triangle de la sortie mis en évidence : %1 dans [%2, %3]</numerusform>
+            <numerusform>%n triangles de la sortie mis en évidence : %1 dans [%2, %3]</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n triangle(s) of the input highlighted: %1 in [%2, %3]</source>
+        <translation>
+            <numerusform>%n triangle de l’entrée mis en évidence : %1 dans [%2, %3]</numerusform>
+            <numerusform>%n triangles de l’entrée mis en évidence : %1 dans [%2, %3]</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Worst triangle %1 of the output: surface %2, triangle %3, Q = %4</source>
+        <translation>Pire triangle n° %1 de la sortie : surface %2, triangle %3, Q = %4</translation>
+    </message>
+    <message>
+        <source>Worst triangle %1 of the input: surface %2, triangle %3, Q = %4</source>
+        <translation>Pire triangle n° %1 de l’entrée : surface %2, triangle %3, Q = %4</translation>
+    </message>
+    <message>
+        <source>Clip Both Views</source>
+        <translation>Couper les deux vues</translation>
+    </message>
+    <message>
+        <source>Remove the Clip Plane</source>
+        <translation>Retirer le plan de coupe</translation>
+    </message>
+    <message>
+        <source>Move the Clip Plane</source>
+        <translation>Déplacer le plan de coupe</translation>
+    </message>
+    <message>
+        <source>Clear &amp;Highlight</source>
+        <translation>Effacer la &amp;mise en évidence</translation>
+    </message>
+    <message>
+        <source>Remove the highlight of a histogram bar&apos;s triangles or of the worst triangle</source>
+        <translation>Retirer la mise en évidence des triangles d’une barre d’histogramme ou du pire triangle</translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::Workbench</name>
     <message>
         <source>Unsaved Result</source>

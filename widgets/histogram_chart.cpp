@@ -75,6 +75,9 @@ void HistogramChart::setHistograms(const QString &title, const std::optional<His
         else
             QToolTip::hideText();
     });
+    connect(m_input, &QBarSet::clicked, this, [this](int bin) { emit barClicked(bin, false); });
+    if (m_output)
+        connect(m_output, &QBarSet::clicked, this, [this](int bin) { emit barClicked(bin, true); });
     c->addSeries(series);
     auto *x = new QBarCategoryAxis;
     x->append(labels);

@@ -33,6 +33,13 @@ public:
     // What hovering a bar shows: the bin's range and both counts, so that the worst bins,
     // too thin to see as bars, can still be read.
     QString barToolTip(int bin) const;
+    // The histograms drawn (for the bins of a bar clicked).
+    const std::optional<Histogram> &inputHistogram() const { return m_inputHistogram; }
+    const std::optional<Histogram> &outputHistogram() const { return m_outputHistogram; }
+
+signals:
+    // A bar was clicked: `output` for the output's bar set. Selects the bin's elements.
+    void barClicked(int bin, bool output);
 
 private:
     QBarSet *m_input = nullptr;

@@ -82,6 +82,7 @@ ModelScene::ModelScene(vtkRenderer *renderer) : m_renderer(renderer)
 ModelScene::~ModelScene()
 {
     clear();
+    clearExtras();
 }
 
 void ModelScene::setModel(std::shared_ptr<const Model> model)
@@ -94,6 +95,7 @@ void ModelScene::setModel(std::shared_ptr<const Model> model)
     buildLinesAndCorners();
     buildLegend();
     applyVisibility();
+    applyClip();
 }
 
 void ModelScene::clear()
@@ -112,6 +114,7 @@ void ModelScene::clear()
     m_lineCount = 0;
     m_cornerCount = 0;
     m_model.reset();
+    clearExtras();
 }
 
 void ModelScene::buildSurfaces()
@@ -261,6 +264,7 @@ void ModelScene::applyVisibility()
         m_boxLines->SetVisibility(m_visible && m_boxVisible);
     if (m_boxCorners)
         m_boxCorners->SetVisibility(m_visible && m_boxVisible);
+    applyExtrasVisibility();
 }
 
 void ModelScene::setVisible(bool visible)
@@ -290,9 +294,8 @@ double ModelScene::diagonal() const
 bool ModelScene::bounds(double bounds[6]) const
 {
     vtkBoundingBox box;
-    for (const auto &actor : m_surfaceActors)
-        if (auto *data = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
-            data && data->GetNumberOfPoints() > 0)
+    for (std::size_t i = 0; i < m_surfaceActors.size(); ++i)
+        if (vtkPolyData *data = surfaceData(i); data && data->GetNumberOfPoints() > 0)
             box.AddBounds(data->GetBounds());
     if (!box.IsValid())
         return false;

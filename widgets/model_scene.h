@@ -9,11 +9,20 @@
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 class vtkActor;
+class vtkClipPolyData;
+class vtkDataArray;
+class vtkLookupTable;
+class vtkPlane;
+class vtkPolyData;
 class vtkRenderer;
+class vtkScalarBarActor;
 
 namespace stratamesh {
 
@@ -62,6 +71,33 @@ public:
     int lineCount() const { return m_lineCount; }
     int cornerCount() const { return m_cornerCount; }
 
+    // --- Colouring by a measure, clip plane and highlighted triangles (View menu) ---
+    // `values`: per surface (indexed like Model::surfaces), one per triangle, or per vertex when
+    // `perVertex`, all computed by the core. A surface whose count differs from what is drawn
+    // keeps its entity colour. The table and its range are the caller's, so that two scenes
+    // compare; the scalar bar shows `title`.
+    void setScalarColouring(const std::vector<std::vector<double>> &values, bool perVertex,
+                            vtkLookupTable *table, const std::string &title);
+    // Back to the entity colours.
+    void clearScalarColouring();
+    bool hasScalarColouring() const;
+    vtkScalarBarActor *scalarBar() const;
+    vtkLookupTable *lookupTable() const;
+    // The scalars handed to a surface's mapper; nullptr when it is not coloured by a measure.
+    vtkDataArray *surfaceScalars(int surface) const;
+    // Keeps what lies on the side of the plane its normal points away from (as TetMeshScene), in
+    // surfaces, lines, corners and highlight; kept across setModel().
+    void setClipPlane(const double origin[3], const double normal[3]);
+    void clearClipPlane();
+    bool isClipped() const { return m_clipped; }
+    // Triangles drawn in the visible surfaces once clipped (cut triangles count as pieces).
+    int shownTriangleCount() const;
+    // Draws these triangles (surface, triangle) over the surfaces in a highlight colour; those of
+    // the box only while the box is shown.
+    void setHighlight(const std::vector<std::pair<int, int>> &triangles);
+    void clearHighlight() { setHighlight({}); }
+    int highlightCount() const { return m_highlightCount; }
+
 private:
     void clear();
     void buildSurfaces();
@@ -85,6 +121,22 @@ private:
     std::vector<LegendEntry> m_legend;
     int m_lineCount = 0;
     int m_cornerCount = 0;
+
+    // Colouring by a measure, clip plane and highlight (model_scene_extras.cpp).
+    vtkPolyData *surfaceData(std::size_t surface) const;
+    void clearExtras();
+    void applyClip();
+    void applyExtrasVisibility();
+    vtkSmartPointer<vtkLookupTable> m_scalarTable;
+    vtkSmartPointer<vtkScalarBarActor> m_scalarBar;
+    std::vector<vtkSmartPointer<vtkClipPolyData>> m_clips; // one per surface while clipped
+    // Lines, box lines, corners, box corners, highlight, box highlight while clipped.
+    std::array<vtkSmartPointer<vtkClipPolyData>, 6> m_otherClips;
+    vtkSmartPointer<vtkPlane> m_plane;
+    vtkSmartPointer<vtkActor> m_highlight;
+    vtkSmartPointer<vtkActor> m_boxHighlight; // shown with the box only
+    int m_highlightCount = 0;
+    bool m_clipped = false;
 };
 
 } // namespace stratamesh

@@ -14,6 +14,7 @@
 #include "study_workflow.h"
 #include "tetmesh_workflow.h"
 #include "view_pair.h"
+#include "view_workflow.h"
 #include "workbench.h"
 
 #include <QAction>
@@ -59,8 +60,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_tetmesh = add(new TetmeshWorkflow(*m_bench, *m_remesh, this));
     m_hybrid = add(new HybridWorkflow(*m_bench, *m_remesh, *m_tetmesh, this));
     add(new ExportWorkflow(*m_bench, *m_remesh, *m_tetmesh, *m_hybrid, this));
-
     m_project = add(new ProjectWorkflow(*m_bench, *m_open, *m_remesh, this));
+    m_view = add(new ViewWorkflow(*m_bench, *m_remesh, *m_tetmesh, *m_hybrid, this));
     connect(m_open, &OpenWorkflow::opened, this, &MainWindow::showModel);
     // The input view halves beside the output: the heat map's colour bar would be cut there,
     // and the cells were measured on the input only. The Complexity dock shows them again.

@@ -28,6 +28,7 @@ class ProjectWorkflow;
 class RemeshWorkflow;
 class StudyWorkflow;
 class TetmeshWorkflow;
+class ViewWorkflow;
 class ViewPair;
 class VtkViewWidget;
 class Workbench;
@@ -61,6 +62,7 @@ public:
     TetmeshWorkflow *tetmeshWorkflow() const { return m_tetmesh; }
     HybridWorkflow *hybridWorkflow() const { return m_hybrid; }
     ProjectWorkflow *projectWorkflow() const { return m_project; }
+    ViewWorkflow *viewWorkflow() const { return m_view; }
 
 public slots:
     // A model, or a project (.smproj).
@@ -101,6 +103,7 @@ private:
     TetmeshWorkflow *m_tetmesh = nullptr;
     HybridWorkflow *m_hybrid = nullptr;
     ProjectWorkflow *m_project = nullptr;
+    ViewWorkflow *m_view = nullptr;
 
     QAction *m_quit = nullptr;
     QAction *m_showBox = nullptr;

@@ -139,8 +139,9 @@ void Workbench::render()
 
 void Workbench::updateLegend()
 {
-    m_legend->setEntries(m_inputScene->isVisible() ? m_inputScene->legend()
-                                                   : std::vector<LegendEntry>{},
+    // A colouring by a measure has its scalar bar instead.
+    const bool entities = m_inputScene->isVisible() && !m_inputScene->hasScalarColouring();
+    m_legend->setEntries(entities ? m_inputScene->legend() : std::vector<LegendEntry>{},
                          m_inputScene->boxVisible());
 }
 

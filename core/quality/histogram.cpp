@@ -35,20 +35,27 @@ Histogram Histogram::uniform(double low, double high, int binCount)
 void Histogram::add(double value)
 {
     ++m_total;
-    if (!(value >= m_edges.front())) {
+    const int bin = binOf(value);
+    if (bin == -1)
         ++m_below;
-        return;
-    }
-    if (value > m_edges.back()) {
+    else if (bin == -2)
         ++m_above;
-        return;
-    }
+    else
+        ++m_counts[static_cast<std::size_t>(bin)];
+}
+
+int Histogram::binOf(double value) const
+{
+    if (!(value >= m_edges.front()))
+        return -1;
+    if (value > m_edges.back())
+        return -2;
     // First edge strictly greater than value: its predecessor starts the bin.
     auto it = std::upper_bound(m_edges.begin(), m_edges.end(), value);
     std::size_t bin = static_cast<std::size_t>(it - m_edges.begin());
     bin = bin == 0 ? 0 : bin - 1;
     bin = std::min(bin, m_counts.size() - 1); // value == last edge
-    ++m_counts[bin];
+    return static_cast<int>(bin);
 }
 
 double Histogram::fraction(std::size_t bin) const

@@ -16,6 +16,9 @@ public:
     static Histogram uniform(double low, double high, int binCount);
 
     void add(double value);
+    // The bin add() counts `value` in; -1 below the first edge (or NaN), -2 above the last. For
+    // selecting the elements of one bar with exactly the bar's bins.
+    int binOf(double value) const;
 
     const std::vector<double> &edges() const { return m_edges; }
     const std::vector<std::size_t> &counts() const { return m_counts; }
