@@ -18,7 +18,7 @@ namespace stratamesh {
 namespace {
 
 // Bright yellow: no feature colour of the palette is near it.
-constexpr double kHighlight[3] = {1.0, 0.86, 0.1};
+constexpr double kHighlight[3] = {1.0, 0.78, 0.0};
 
 vtkSmartPointer<vtkActor> overlayActor()
 {
@@ -44,22 +44,28 @@ vtkPolyData *overlayData(vtkActor *actor)
 } // namespace
 
 EntityHighlight::EntityHighlight(vtkRenderer *renderer)
-    : m_renderer(renderer), m_surfaces(overlayActor()), m_line(overlayActor()),
-      m_corner(std::make_unique<PositionMarker>(renderer))
+    : m_renderer(renderer), m_surfaces(overlayActor()), m_halo(overlayActor()),
+      m_line(overlayActor()), m_corner(std::make_unique<PositionMarker>(renderer))
 {
     vtkProperty *s = m_surfaces->GetProperty();
     s->EdgeVisibilityOn(); // the triangles stay readable under the flat colour
     s->SetEdgeColor(0.55, 0.4, 0.0);
+    // As PositionMarker's halo: an offset so large that depth no longer hides it.
+    m_halo->GetMapper()->SetRelativeCoincidentTopologyPolygonOffsetParameters(0, -66000);
+    m_halo->GetProperty()->SetOpacity(0.45);
+    m_halo->GetProperty()->LightingOff();
     vtkProperty *l = m_line->GetProperty();
     l->SetLineWidth(8.0f);
     l->RenderLinesAsTubesOn();
     m_renderer->AddActor(m_surfaces);
+    m_renderer->AddActor(m_halo);
     m_renderer->AddActor(m_line);
 }
 
 EntityHighlight::~EntityHighlight()
 {
     m_renderer->RemoveActor(m_surfaces);
+    m_renderer->RemoveActor(m_halo);
     m_renderer->RemoveActor(m_line);
 }
 
@@ -80,7 +86,9 @@ void EntityHighlight::showSurfaces(const ModelScene &scene, const std::vector<in
     auto data = vtkSmartPointer<vtkPolyData>::New();
     data->ShallowCopy(append->GetOutput());
     vtkPolyDataMapper::SafeDownCast(m_surfaces->GetMapper())->SetInputData(data);
+    vtkPolyDataMapper::SafeDownCast(m_halo->GetMapper())->SetInputData(data);
     m_surfaces->SetVisibility(true);
+    m_halo->SetVisibility(true);
 }
 
 void EntityHighlight::showLine(const Model &model, int line)
@@ -123,6 +131,7 @@ void EntityHighlight::showCorner(const Model &model, int corner, double radius)
 void EntityHighlight::hide()
 {
     m_surfaces->SetVisibility(false);
+    m_halo->SetVisibility(false);
     m_line->SetVisibility(false);
     m_corner->hide();
 }

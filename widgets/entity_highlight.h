@@ -1,6 +1,7 @@
 // One entity of a model drawn brighter than the rest in a view, for the Model dock's selection:
 // surfaces as an opaque overlay of their own triangles pulled in front of them, a line as a thick
-// polyline, a corner as a small sphere (PositionMarker). It draws what the scene and the core's
+// polyline, a corner as a small sphere (PositionMarker). A surface behind another shows through
+// it as a translucent halo. It draws what the scene and the core's
 // topology hold; nothing is computed here.
 #pragma once
 
@@ -44,6 +45,7 @@ public:
 private:
     vtkSmartPointer<vtkRenderer> m_renderer;
     vtkSmartPointer<vtkActor> m_surfaces;
+    vtkSmartPointer<vtkActor> m_halo; // the same triangles, translucent, through what hides them
     vtkSmartPointer<vtkActor> m_line;
     std::unique_ptr<PositionMarker> m_corner;
 };

@@ -22,6 +22,7 @@ class HybridWorkflow;
 class FeatureLegend;
 class MessagePanel;
 class ModelScene;
+class ModelTreeWorkflow;
 class OpenWorkflow;
 class ProgressStrip;
 class RemeshWorkflow;
@@ -59,6 +60,7 @@ public:
     ComplexityWorkflow *complexityWorkflow() const { return m_complexity; }
     TetmeshWorkflow *tetmeshWorkflow() const { return m_tetmesh; }
     HybridWorkflow *hybridWorkflow() const { return m_hybrid; }
+    ModelTreeWorkflow *modelTreeWorkflow() const { return m_tree; }
 
 public slots:
     void openFile(const QString &path);
@@ -96,6 +98,7 @@ private:
     ComplexityWorkflow *m_complexity = nullptr;
     TetmeshWorkflow *m_tetmesh = nullptr;
     HybridWorkflow *m_hybrid = nullptr;
+    ModelTreeWorkflow *m_tree = nullptr;
 
     QAction *m_quit = nullptr;
     QAction *m_showBox = nullptr;

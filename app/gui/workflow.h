@@ -21,8 +21,8 @@ class Workflow : public QObject {
 public:
     enum class Menu { File, Edit, View, Mesh, Analyse };
     // Below the views tabbed with Messages; on the right tabbed with the other reviews of a
-    // result; on the right on its own.
-    enum class DockPlace { WithMessages, Review, Side };
+    // result; on the right on its own; on the left (the model's tree).
+    enum class DockPlace { WithMessages, Review, Side, Left };
     struct Dock {
         QDockWidget *dock;
         DockPlace place;
