@@ -52,7 +52,7 @@ EntityHighlight::EntityHighlight(vtkRenderer *renderer)
     s->SetEdgeColor(0.55, 0.4, 0.0);
     // As PositionMarker's halo: an offset so large that depth no longer hides it.
     m_halo->GetMapper()->SetRelativeCoincidentTopologyPolygonOffsetParameters(0, -66000);
-    m_halo->GetProperty()->SetOpacity(0.45);
+    m_halo->GetProperty()->SetOpacity(0.35);
     m_halo->GetProperty()->LightingOff();
     vtkProperty *l = m_line->GetProperty();
     l->SetLineWidth(8.0f);

@@ -13,6 +13,7 @@
 #include "open_workflow.h"
 #include "position_marker.h"
 #include "progress_strip.h"
+#include "remesh_workflow.h"
 #include "translations.h"
 #include "vtk_view_widget.h"
 #include "window_screenshot.h"
@@ -23,6 +24,7 @@
 #include <QCheckBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QSortFilterProxyModel>
@@ -233,6 +235,73 @@ private slots:
         QTest::mouseClick(view, Qt::LeftButton, {}, QPoint(3, 3));
         QCOMPARE(m_window->progressStrip()->text(), status);
         m_tree->applySurfacesVisible(others, true);
+    }
+
+    // After a remesh the output, matched by surface name, follows the tree's choices.
+    void outputFollowsTheTree()
+    {
+        const int s = surfaceNamed(*m_model, "h2_model1");
+        const QModelIndex row =
+            m_panel->proxy()->mapFromSource(m_panel->treeModel()->indexOf(Kind::Surface, s));
+        QVERIFY(m_panel->proxy()->setData(row, Qt::Unchecked, Qt::CheckStateRole));
+        m_panel->selectEntity(Kind::Surface, surfaceNamed(*m_model, "h1_model1"));
+        RemeshParams params;
+        params.sites = 300;
+        params.iterations = 20;
+        QSignalSpy finished(m_window->remeshWorkflow(), &RemeshWorkflow::finished);
+        QElapsedTimer timer;
+        timer.start();
+        QVERIFY(m_window->remeshWorkflow()->start(params));
+        QVERIFY(finished.wait(kLoadTimeoutMs));
+        QVERIFY(finished.first().first().toBool());
+        qInfo("remesh: %lld ms", timer.elapsed());
+        const auto &output = m_window->outputScene()->model();
+        QVERIFY(output);
+        const int hidden = surfaceNamed(*output, "h2_model1");
+        const int selected = surfaceNamed(*output, "h1_model1");
+        QVERIFY(hidden >= 0 && selected >= 0);
+        QVERIFY(!m_window->outputScene()->surfaceActor(hidden)->GetVisibility());
+        QVERIFY(m_window->outputScene()->surfaceActor(selected)->GetVisibility());
+        // The selection made before the remesh is drawn on the new output.
+        QCOMPARE(m_tree->outputHighlight()->triangleCount(),
+                 int(output->surfaces[std::size_t(selected)].triangles.size()));
+        m_window->workbench()->undoStack()->undo();
+        QVERIFY(m_window->outputScene()->surfaceActor(hidden)->GetVisibility());
+        m_panel->selectEntity(Kind::Surface, s);
+        QCOMPARE(m_tree->outputHighlight()->triangleCount(),
+                 int(output->surfaces[std::size_t(hidden)].triangles.size()));
+        QVERIFY(m_tree->outputHighlight()->triangleCount()
+                != int(m_model->surfaces[std::size_t(s)].triangles.size()));
+
+        // A click in the output view names the output triangle and selects its input surface.
+        m_panel->selectEntity(Kind::Line, 0);
+        QVERIFY(m_tree->inspect(true, 0, 0) == false);
+        const Surface &surface = output->surfaces[std::size_t(hidden)];
+        for (int i = 0; i < int(output->surfaces.size()); ++i)
+            if (i != hidden)
+                m_window->outputScene()->setSurfaceVisible(i, false);
+        const Triangle &t = surface.triangles[surface.triangles.size() / 2];
+        const Vec3 centroid =
+            (surface.vertices[std::size_t(t[0])] + surface.vertices[std::size_t(t[1])]
+             + surface.vertices[std::size_t(t[2])])
+            / 3.0;
+        VtkViewWidget *view = m_window->outputView();
+        view->grabFramebuffer();
+        vtkRenderer *renderer = view->renderer();
+        renderer->SetWorldPoint(centroid.x(), centroid.y(), centroid.z(), 1.0);
+        renderer->WorldToDisplay();
+        double d[3];
+        renderer->GetDisplayPoint(d);
+        QVERIFY(m_tree->inspect(true, d[0], d[1]));
+        const QString status = m_window->progressStrip()->text();
+        qInfo("%s", qPrintable(status));
+        QVERIFY2(status.startsWith(QStringLiteral("Output surface h2_model1, triangle ")),
+                 qPrintable(status));
+        QCOMPARE(m_panel->selectedIndex(), m_panel->treeModel()->indexOf(Kind::Surface, s));
+        m_tree->applySurfacesVisible({}, true); // the output follows the tree again
+        for (int i = 0; i < int(output->surfaces.size()); ++i)
+            QVERIFY(m_window->outputScene()->surfaceActor(i)->GetVisibility()
+                    || output->surfaces[std::size_t(i)].type == FeatureType::Boundary);
     }
 
     void screenshotShowsTreeAndHighlight()
