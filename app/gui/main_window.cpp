@@ -239,7 +239,9 @@ void MainWindow::placeDocks()
             if (dock.place != Workflow::DockPlace::WithMessages
                 && dock.place != Workflow::DockPlace::Left)
                 makeScrollable(dock.dock);
-            dock.dock->hide();
+            // The model's tree is there from the start: the views keep their size when it fills.
+            if (dock.place != Workflow::DockPlace::Left)
+                dock.dock->hide();
             m_viewMenu->addAction(dock.dock->toggleViewAction());
         }
     }

@@ -34,7 +34,7 @@ public:
     // In menu order; a separator is an action with isSeparator().
     virtual QList<QAction *> menuActions(Menu menu) const;
     virtual QList<QAction *> toolBarActions() const;
-    // Placed hidden: a workflow shows its docks once it has something in them.
+    // Placed hidden (but on the left): a workflow shows its docks once it has something in them.
     virtual QList<Dock> docks() const;
     // nullptr for a step without a background run.
     virtual WorkflowJob *job() const;
