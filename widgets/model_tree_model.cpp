@@ -29,6 +29,14 @@ QString typeWord(FeatureType type)
     return ModelTreeModel::tr("other");
 }
 
+// Regions list their sides' surfaces for the highlight, but carry no check box: a surface is
+// shared by two regions, so hiding a region is not hiding its surfaces.
+bool checkable(ModelTreeModel::Kind kind, bool hasSurfaces)
+{
+    return hasSurfaces
+           && (kind == ModelTreeModel::Kind::Surface || kind == ModelTreeModel::Kind::Group);
+}
+
 QString number(double value)
 {
     return QLocale().toString(value, 'g', 6);
@@ -304,14 +312,6 @@ bool ModelTreeModel::isBoxRow(const Node &n) const
         return m_model->surfaces[std::size_t(n.entity)].type == FeatureType::Boundary;
     return n.group == Group::Feature && n.parent > 0
            && m_nodes[std::size_t(n.parent)].group == Group::Box;
-}
-
-// Regions list their sides' surfaces for the highlight, but carry no check box: a surface is
-// shared by two regions, so hiding a region is not hiding its surfaces.
-static bool checkable(ModelTreeModel::Kind kind, bool hasSurfaces)
-{
-    return hasSurfaces
-           && (kind == ModelTreeModel::Kind::Surface || kind == ModelTreeModel::Kind::Group);
 }
 
 QVariant ModelTreeModel::data(const QModelIndex &index, int role) const
