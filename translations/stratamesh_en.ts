@@ -1165,6 +1165,150 @@ Click to show it in the views</source>
     </message>
 </context>
 <context>
+    <name>stratamesh::ModelTreeModel</name>
+    <message>
+        <source>horizon</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unconformity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>box</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>other</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Regions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surfaces (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Horizons (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Faults (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unconformities (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Other Surfaces (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Box (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Surface %1 — %2 %3, %n triangle(s)</source>
+        <translation>
+            <numerusform>Surface %1 — %2 %3, %n triangle</numerusform>
+            <numerusform>Surface %1 — %2 %3, %n triangles</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Line %1 — length %2, %n surface(s)</source>
+        <translation>
+            <numerusform>Line %1 — length %2, %n surface</numerusform>
+            <numerusform>Line %1 — length %2, %n surfaces</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Corner %1 at (%2, %3, %4) — %n line(s)</source>
+        <translation>
+            <numerusform>Corner %1 at (%2, %3, %4) — %n line</numerusform>
+            <numerusform>Corner %1 at (%2, %3, %4) — %n lines</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Region %1 — %n boundary surface(s)</source>
+        <translation>
+            <numerusform>Region %1 — %n boundary surface</numerusform>
+            <numerusform>Region %1 — %n boundary surfaces</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ModelTreePanel</name>
+    <message>
+        <source>Lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Filter by name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show box</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the surfaces of the model&apos;s bounding box</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ModelTreeWorkflow</name>
+    <message>
+        <source>Model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model &amp;Tree</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n surface(s)</source>
+        <translation>
+            <numerusform>%n surface</numerusform>
+            <numerusform>%n surfaces</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Show %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hide %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output surface %1, triangle %2: min angle %3°, Q = %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surface %1, triangle %2: min angle %3°, Q = %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::OpenModelController</name>
     <message>
         <source>Building the sample model</source>

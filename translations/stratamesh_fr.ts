@@ -1168,6 +1168,150 @@ Cliquer pour le montrer dans les vues</translation>
     </message>
 </context>
 <context>
+    <name>stratamesh::ModelTreeModel</name>
+    <message>
+        <source>horizon</source>
+        <translation>horizon</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation>faille</translation>
+    </message>
+    <message>
+        <source>unconformity</source>
+        <translation>discordance</translation>
+    </message>
+    <message>
+        <source>box</source>
+        <translation>boîte</translation>
+    </message>
+    <message>
+        <source>other</source>
+        <translation>autre</translation>
+    </message>
+    <message>
+        <source>Regions</source>
+        <translation>Régions</translation>
+    </message>
+    <message>
+        <source>Surfaces (%1)</source>
+        <translation>Surfaces (%1)</translation>
+    </message>
+    <message>
+        <source>Horizons (%1)</source>
+        <translation>Horizons (%1)</translation>
+    </message>
+    <message>
+        <source>Faults (%1)</source>
+        <translation>Failles (%1)</translation>
+    </message>
+    <message>
+        <source>Unconformities (%1)</source>
+        <translation>Discordances (%1)</translation>
+    </message>
+    <message>
+        <source>Other Surfaces (%1)</source>
+        <translation>Autres surfaces (%1)</translation>
+    </message>
+    <message>
+        <source>Box (%1)</source>
+        <translation>Boîte (%1)</translation>
+    </message>
+    <message>
+        <source>Lines</source>
+        <translation>Lignes</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Coins</translation>
+    </message>
+    <message numerus="yes">
+        <source>Surface %1 — %2 %3, %n triangle(s)</source>
+        <translation>
+            <numerusform>Surface %1 — %2 %3, %n triangle</numerusform>
+            <numerusform>Surface %1 — %2 %3, %n triangles</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Line %1 — length %2, %n surface(s)</source>
+        <translation>
+            <numerusform>Ligne %1 — longueur %2, %n surface</numerusform>
+            <numerusform>Ligne %1 — longueur %2, %n surfaces</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Corner %1 at (%2, %3, %4) — %n line(s)</source>
+        <translation>
+            <numerusform>Coin %1 en (%2, %3, %4) — %n ligne</numerusform>
+            <numerusform>Coin %1 en (%2, %3, %4) — %n lignes</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Region %1 — %n boundary surface(s)</source>
+        <translation>
+            <numerusform>Région %1 — %n surface limite</numerusform>
+            <numerusform>Région %1 — %n surfaces limites</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ModelTreePanel</name>
+    <message>
+        <source>Lines</source>
+        <translation>Lignes</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Coins</translation>
+    </message>
+    <message>
+        <source>Filter by name</source>
+        <translation>Filtrer par nom</translation>
+    </message>
+    <message>
+        <source>Show box</source>
+        <translation>Afficher la boîte</translation>
+    </message>
+    <message>
+        <source>Show the surfaces of the model&apos;s bounding box</source>
+        <translation>Afficher les surfaces de la boîte englobante du modèle</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ModelTreeWorkflow</name>
+    <message>
+        <source>Model</source>
+        <translation>Modèle</translation>
+    </message>
+    <message>
+        <source>Model &amp;Tree</source>
+        <translation>&amp;Arbre du modèle</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n surface(s)</source>
+        <translation>
+            <numerusform>%n surface</numerusform>
+            <numerusform>%n surfaces</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Show %1</source>
+        <translation>Afficher %1</translation>
+    </message>
+    <message>
+        <source>Hide %1</source>
+        <translation>Masquer %1</translation>
+    </message>
+    <message>
+        <source>Output surface %1, triangle %2: min angle %3°, Q = %4</source>
+        <translation>Surface de sortie %1, triangle %2 : angle min. %3°, Q = %4</translation>
+    </message>
+    <message>
+        <source>Surface %1, triangle %2: min angle %3°, Q = %4</source>
+        <translation>Surface %1, triangle %2 : angle min. %3°, Q = %4</translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::OpenModelController</name>
     <message>
         <source>Building the sample model</source>

@@ -109,6 +109,7 @@ void ModelScene::clear()
     }
     m_surfaceActors.clear();
     m_isBoxSurface.clear();
+    m_surfaceShown.clear();
     m_surfaceColors.clear();
     m_legend.clear();
     m_lineCount = 0;
@@ -146,6 +147,7 @@ void ModelScene::buildSurfaces()
         m_renderer->AddActor(actor);
         m_surfaceActors.push_back(actor);
         m_isBoxSurface.push_back(isBox);
+        m_surfaceShown.push_back(true);
         m_surfaceColors.push_back(color);
     }
 }
@@ -254,7 +256,8 @@ void ModelScene::buildLegend()
 void ModelScene::applyVisibility()
 {
     for (std::size_t i = 0; i < m_surfaceActors.size(); ++i) {
-        m_surfaceActors[i]->SetVisibility(m_visible && (!m_isBoxSurface[i] || m_boxVisible));
+        m_surfaceActors[i]->SetVisibility(m_visible && (!m_isBoxSurface[i] || m_boxVisible)
+                                          && m_surfaceShown[i]);
         m_surfaceActors[i]->GetProperty()->SetEdgeVisibility(m_edgesVisible);
     }
     for (auto *actor : {&m_lines, &m_corners})
@@ -301,6 +304,35 @@ bool ModelScene::bounds(double bounds[6]) const
         return false;
     box.GetBounds(bounds);
     return true;
+}
+
+void ModelScene::setSurfaceVisible(int surface, bool visible)
+{
+    if (surface < 0 || std::size_t(surface) >= m_surfaceShown.size())
+        return;
+    m_surfaceShown[std::size_t(surface)] = visible;
+    applyVisibility();
+}
+
+bool ModelScene::surfaceVisible(int surface) const
+{
+    return surface >= 0 && std::size_t(surface) < m_surfaceShown.size()
+           && m_surfaceShown[std::size_t(surface)];
+}
+
+vtkActor *ModelScene::surfaceActor(int surface) const
+{
+    if (surface < 0 || std::size_t(surface) >= m_surfaceActors.size())
+        return nullptr;
+    return m_surfaceActors[std::size_t(surface)];
+}
+
+int ModelScene::surfaceOfActor(const vtkActor *actor) const
+{
+    for (std::size_t i = 0; i < m_surfaceActors.size(); ++i)
+        if (m_surfaceActors[i] == actor)
+            return int(i);
+    return -1;
 }
 
 int ModelScene::visibleSurfaceActorCount() const

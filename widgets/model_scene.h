@@ -66,6 +66,15 @@ public:
     // Diagonal of those bounds; 1 when there is nothing to show (a scale for markers, spin boxes).
     double diagonal() const;
 
+    // One surface shown or hidden by the user (the model tree); the box toggle and setVisible
+    // still apply on top. Indexed like Model::surfaces; out of range is ignored.
+    void setSurfaceVisible(int surface, bool visible);
+    bool surfaceVisible(int surface) const;
+    // The actor drawing one surface (nullptr out of range): overlays and pickers use it.
+    vtkActor *surfaceActor(int surface) const;
+    // The surface drawn by `actor`, or -1.
+    int surfaceOfActor(const vtkActor *actor) const;
+
     int surfaceActorCount() const { return int(m_surfaceActors.size()); }
     int visibleSurfaceActorCount() const;
     int lineCount() const { return m_lineCount; }
@@ -113,6 +122,7 @@ private:
 
     std::vector<vtkSmartPointer<vtkActor>> m_surfaceActors; // one per surface
     std::vector<bool> m_isBoxSurface;
+    std::vector<bool> m_surfaceShown; // the user's per-surface choice
     vtkSmartPointer<vtkActor> m_lines;
     vtkSmartPointer<vtkActor> m_boxLines;
     vtkSmartPointer<vtkActor> m_corners;

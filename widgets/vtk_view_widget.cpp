@@ -378,6 +378,8 @@ void VtkViewWidget::setPointerInfo(const QPointF &pos, Qt::KeyboardModifiers mod
 
 void VtkViewWidget::mousePressEvent(QMouseEvent *event)
 {
+    if (event->button() == Qt::LeftButton)
+        m_leftPress = event->position();
     setPointerInfo(event->position(), event->modifiers());
     if (const int id = vtkButtonEvent(event->button(), true); id != vtkCommand::NoEvent)
         m_interactor->InvokeEvent(id, nullptr);
@@ -390,6 +392,14 @@ void VtkViewWidget::mouseReleaseEvent(QMouseEvent *event)
     if (const int id = vtkButtonEvent(event->button(), false); id != vtkCommand::NoEvent)
         m_interactor->InvokeEvent(id, nullptr);
     event->accept();
+    // A few pixels of jitter are still a click; more is a rotation of the camera.
+    if (event->button() == Qt::LeftButton && m_leftPress.x() >= 0.0
+        && (event->position() - m_leftPress).manhattanLength() <= 4.0) {
+        const qreal ratio = devicePixelRatioF();
+        emit clicked(event->position().x() * ratio,
+                     height() * ratio - event->position().y() * ratio - 1.0);
+    }
+    m_leftPress = QPointF(-1.0, -1.0);
 }
 
 void VtkViewWidget::mouseDoubleClickEvent(QMouseEvent *event)

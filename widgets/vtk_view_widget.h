@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QOpenGLWidget>
+#include <QPointF>
 #include <QSurfaceFormat>
 
 #include <vtkNew.h>
@@ -51,6 +52,9 @@ public:
 signals:
     // The user moved the camera (mouse, wheel, keys): views sharing the camera repaint on it.
     void cameraMovedByUser();
+    // A left click without drag, at VTK display coordinates (device pixels, origin bottom left):
+    // what lies there can be picked.
+    void clicked(double x, double y);
 
 protected:
     void initializeGL() override;
@@ -81,6 +85,7 @@ private:
     vtkNew<vtkCallbackCommand> m_callback;
     vtkSmartPointer<vtkOrientationMarkerWidget> m_axes;
     bool m_initialized = false;
+    QPointF m_leftPress{-1.0, -1.0}; // where the left button went down, to tell a click from a drag
 };
 
 } // namespace stratamesh

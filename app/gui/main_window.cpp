@@ -6,6 +6,7 @@
 #include "hybrid_workflow.h"
 #include "message_panel.h"
 #include "model_scene.h"
+#include "model_tree_workflow.h"
 #include "open_workflow.h"
 #include "progress_strip.h"
 #include "project_file.h"
@@ -62,6 +63,7 @@ MainWindow::MainWindow(QWidget *parent)
     add(new ExportWorkflow(*m_bench, *m_remesh, *m_tetmesh, *m_hybrid, this));
     m_project = add(new ProjectWorkflow(*m_bench, *m_open, *m_remesh, this));
     m_view = add(new ViewWorkflow(*m_bench, *m_remesh, *m_tetmesh, *m_hybrid, this));
+    m_tree = add(new ModelTreeWorkflow(*m_bench, *m_open, *m_remesh, this));
     connect(m_open, &OpenWorkflow::opened, this, &MainWindow::showModel);
     // The input view halves beside the output: the heat map's colour bar would be cut there,
     // and the cells were measured on the input only. The Complexity dock shows them again.
@@ -127,7 +129,7 @@ void MainWindow::createActions()
     m_quit->setMenuRole(QAction::QuitRole);
     connect(m_quit, &QAction::triggered, this, &QWidget::close);
 
-    m_showBox = new QAction(this);
+    m_showBox = m_bench->showBoxAction();
     m_showBox->setCheckable(true);
     m_showBox->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
     connect(m_showBox, &QAction::toggled, this, &MainWindow::setBoxVisible);
@@ -237,10 +239,17 @@ void MainWindow::placeDocks()
             case Workflow::DockPlace::Side:
                 addDockWidget(Qt::RightDockWidgetArea, dock.dock);
                 break;
+            case Workflow::DockPlace::Left:
+                addDockWidget(Qt::LeftDockWidgetArea, dock.dock);
+                break;
             }
-            if (dock.place != Workflow::DockPlace::WithMessages)
+            // A tree scrolls by itself and needs the dock's whole height.
+            if (dock.place != Workflow::DockPlace::WithMessages
+                && dock.place != Workflow::DockPlace::Left)
                 makeScrollable(dock.dock);
-            dock.dock->hide();
+            // The model's tree is there from the start: the views keep their size when it fills.
+            if (dock.place != Workflow::DockPlace::Left)
+                dock.dock->hide();
             m_viewMenu->addAction(dock.dock->toggleViewAction());
         }
     }

@@ -22,6 +22,7 @@ class HybridWorkflow;
 class FeatureLegend;
 class MessagePanel;
 class ModelScene;
+class ModelTreeWorkflow;
 class OpenWorkflow;
 class ProgressStrip;
 class ProjectWorkflow;
@@ -63,6 +64,7 @@ public:
     HybridWorkflow *hybridWorkflow() const { return m_hybrid; }
     ProjectWorkflow *projectWorkflow() const { return m_project; }
     ViewWorkflow *viewWorkflow() const { return m_view; }
+    ModelTreeWorkflow *modelTreeWorkflow() const { return m_tree; }
 
 public slots:
     // A model, or a project (.smproj).
@@ -104,6 +106,7 @@ private:
     HybridWorkflow *m_hybrid = nullptr;
     ProjectWorkflow *m_project = nullptr;
     ViewWorkflow *m_view = nullptr;
+    ModelTreeWorkflow *m_tree = nullptr;
 
     QAction *m_quit = nullptr;
     QAction *m_showBox = nullptr;

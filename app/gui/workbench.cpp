@@ -10,6 +10,7 @@
 #include "workflow.h"
 #include "workflow_job.h"
 
+#include <QAction>
 #include <QCoreApplication>
 #include <QDockWidget>
 #include <QMainWindow>
@@ -24,7 +25,7 @@ namespace stratamesh {
 Workbench::Workbench(QMainWindow *window, ViewPair *views, MessagePanel *messages,
                      QDockWidget *messageDock, ProgressStrip *strip)
     : m_window(window), m_views(views), m_messages(messages), m_messageDock(messageDock),
-      m_strip(strip), m_undo(new QUndoStack(window)),
+      m_strip(strip), m_undo(new QUndoStack(window)), m_showBox(new QAction(window)),
       m_legend(new FeatureLegend(views->inputView())),
       m_inputScene(std::make_unique<ModelScene>(views->inputView()->renderer())),
       m_outputScene(std::make_unique<ModelScene>(views->outputView()->renderer())),

@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 
+class QAction;
 class QDockWidget;
 class QMainWindow;
 class QUndoStack;
@@ -48,6 +49,8 @@ public:
     // Edit > Undo/Redo: what the user chose to look at and decided (run shown, visibility,
     // colouring, review decisions), never the engine's results. Cleared with a new model.
     QUndoStack *undoStack() const { return m_undo; }
+    // View > Show Box (checkable): the window's menu and tool bar and the Model dock share it.
+    QAction *showBoxAction() const { return m_showBox; }
 
     // The open model (nullptr before the first); its file is never overwritten by a save.
     const std::shared_ptr<const Model> &model() const;
@@ -97,6 +100,7 @@ private:
     QDockWidget *m_messageDock;
     ProgressStrip *m_strip;
     QUndoStack *m_undo;
+    QAction *m_showBox;
     FeatureLegend *m_legend;
     std::unique_ptr<ModelScene> m_inputScene;
     std::unique_ptr<ModelScene> m_outputScene;

@@ -21,8 +21,8 @@ class Workflow : public QObject {
 public:
     enum class Menu { File, Edit, View, Mesh, Analyse };
     // Below the views tabbed with Messages; on the right tabbed with the other reviews of a
-    // result; on the right on its own.
-    enum class DockPlace { WithMessages, Review, Side };
+    // result; on the right on its own; on the left (the model's tree).
+    enum class DockPlace { WithMessages, Review, Side, Left };
     struct Dock {
         QDockWidget *dock;
         DockPlace place;
@@ -34,7 +34,7 @@ public:
     // In menu order; a separator is an action with isSeparator().
     virtual QList<QAction *> menuActions(Menu menu) const;
     virtual QList<QAction *> toolBarActions() const;
-    // Placed hidden: a workflow shows its docks once it has something in them.
+    // Placed hidden (but on the left): a workflow shows its docks once it has something in them.
     virtual QList<Dock> docks() const;
     // nullptr for a step without a background run.
     virtual WorkflowJob *job() const;
