@@ -583,6 +583,231 @@ per cell</source>
     </message>
 </context>
 <context>
+    <name>stratamesh::ExportController</name>
+    <message>
+        <source>Exporting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The export stopped without a result</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ExportDialog</name>
+    <message>
+        <source>Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (*%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>4.1 (Gmsh 4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>2.2 (older readers)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep elements without a group (Gmsh Mesh.SaveAll)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gmsh keeps only elements of a physical group; this writes the others too, in an entity without one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Export:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Format:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MSH &amp;version:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Surface:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>F&amp;ile:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E&amp;xport</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This format holds tetrahedra; a surface model has none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This format holds no volume cells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This format holds tetrahedra only; this mesh has pyramids and prisms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>every surface but the chosen one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>surface names</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>feature types (horizon, fault…)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>regions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>contact lines and corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>volume cells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pyramids and prisms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>double precision (coordinates stored as 32-bit floats)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 does not keep: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All surfaces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surface %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export To</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing can be exported yet: open a model first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ExportWorkflow</name>
+    <message>
+        <source>&amp;Export…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the model, its remesh or a volume mesh to another file format</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No model is open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remeshed model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No remeshed model: run Mesh &gt; Remesh… first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No TetGen mesh: run Mesh &gt; Tetrahedralise… first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The last tetrahedralisation did not mesh the remeshed model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen mesh of the input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen failed on the input model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen mesh of the remesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen failed on the remeshed model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hybrid mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No hybrid mesh: run Mesh &gt; Hybrid Mesh… first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot tell the format from the extension (use %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another run is under way</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exporting %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported as %1 in %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 elements without a region, surface or line were left out, as Gmsh does; “Keep elements without a group” keeps them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not export</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::FeatureLegend</name>
     <message>
         <source>Horizons</source>

@@ -584,6 +584,231 @@ par cellule</translation>
     </message>
 </context>
 <context>
+    <name>stratamesh::ExportController</name>
+    <message>
+        <source>Exporting</source>
+        <translation>Export en cours</translation>
+    </message>
+    <message>
+        <source>The export stopped without a result</source>
+        <translation>L&apos;export s&apos;est arrêté sans résultat</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ExportDialog</name>
+    <message>
+        <source>Export</source>
+        <translation>Exporter</translation>
+    </message>
+    <message>
+        <source>%1 (*%2)</source>
+        <translation>%1 (*%2)</translation>
+    </message>
+    <message>
+        <source>4.1 (Gmsh 4)</source>
+        <translation>4.1 (Gmsh 4)</translation>
+    </message>
+    <message>
+        <source>2.2 (older readers)</source>
+        <translation>2.2 (lecteurs plus anciens)</translation>
+    </message>
+    <message>
+        <source>Keep elements without a group (Gmsh Mesh.SaveAll)</source>
+        <translation>Garder les éléments sans groupe (Gmsh Mesh.SaveAll)</translation>
+    </message>
+    <message>
+        <source>Gmsh keeps only elements of a physical group; this writes the others too, in an entity without one</source>
+        <translation>Gmsh ne garde que les éléments d&apos;un groupe physique ; ceci écrit aussi les autres, dans une entité sans groupe</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Parcourir…</translation>
+    </message>
+    <message>
+        <source>&amp;Export:</source>
+        <translation>&amp;Exporter :</translation>
+    </message>
+    <message>
+        <source>&amp;Format:</source>
+        <translation>&amp;Format :</translation>
+    </message>
+    <message>
+        <source>MSH &amp;version:</source>
+        <translation>&amp;Version MSH :</translation>
+    </message>
+    <message>
+        <source>&amp;Surface:</source>
+        <translation>&amp;Surface :</translation>
+    </message>
+    <message>
+        <source>F&amp;ile:</source>
+        <translation>F&amp;ichier :</translation>
+    </message>
+    <message>
+        <source>E&amp;xport</source>
+        <translation>E&amp;xporter</translation>
+    </message>
+    <message>
+        <source>This format holds tetrahedra; a surface model has none</source>
+        <translation>Ce format contient des tétraèdres ; un modèle surfacique n&apos;en a pas</translation>
+    </message>
+    <message>
+        <source>This format holds no volume cells</source>
+        <translation>Ce format ne contient pas de cellules volumiques</translation>
+    </message>
+    <message>
+        <source>This format holds tetrahedra only; this mesh has pyramids and prisms</source>
+        <translation>Ce format ne contient que des tétraèdres ; ce maillage a des pyramides et des prismes</translation>
+    </message>
+    <message>
+        <source>every surface but the chosen one</source>
+        <translation>toutes les surfaces sauf celle choisie</translation>
+    </message>
+    <message>
+        <source>surface names</source>
+        <translation>les noms des surfaces</translation>
+    </message>
+    <message>
+        <source>feature types (horizon, fault…)</source>
+        <translation>les types d&apos;objets géologiques (horizon, faille…)</translation>
+    </message>
+    <message>
+        <source>regions</source>
+        <translation>les régions</translation>
+    </message>
+    <message>
+        <source>contact lines and corners</source>
+        <translation>les lignes de contact et les coins</translation>
+    </message>
+    <message>
+        <source>volume cells</source>
+        <translation>les cellules volumiques</translation>
+    </message>
+    <message>
+        <source>pyramids and prisms</source>
+        <translation>les pyramides et les prismes</translation>
+    </message>
+    <message>
+        <source>double precision (coordinates stored as 32-bit floats)</source>
+        <translation>la double précision (coordonnées stockées en flottants 32 bits)</translation>
+    </message>
+    <message>
+        <source>%1 does not keep: %2.</source>
+        <translation>%1 ne conserve pas : %2.</translation>
+    </message>
+    <message>
+        <source>All surfaces</source>
+        <translation>Toutes les surfaces</translation>
+    </message>
+    <message>
+        <source>Surface %1</source>
+        <translation>Surface %1</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Export To</source>
+        <translation>Exporter vers</translation>
+    </message>
+    <message>
+        <source>Nothing can be exported yet: open a model first.</source>
+        <translation>Rien ne peut encore être exporté : ouvrez d&apos;abord un modèle.</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ExportWorkflow</name>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>&amp;Exporter…</translation>
+    </message>
+    <message>
+        <source>Write the model, its remesh or a volume mesh to another file format</source>
+        <translation>Écrire le modèle, son remaillage ou un maillage volumique dans un autre format de fichier</translation>
+    </message>
+    <message>
+        <source>Input model</source>
+        <translation>Modèle d&apos;entrée</translation>
+    </message>
+    <message>
+        <source>No model is open</source>
+        <translation>Aucun modèle n&apos;est ouvert</translation>
+    </message>
+    <message>
+        <source>Remeshed model</source>
+        <translation>Modèle remaillé</translation>
+    </message>
+    <message>
+        <source>No remeshed model: run Mesh &gt; Remesh… first</source>
+        <translation>Pas de modèle remaillé : lancez d&apos;abord Maillage &gt; Remailler…</translation>
+    </message>
+    <message>
+        <source>No TetGen mesh: run Mesh &gt; Tetrahedralise… first</source>
+        <translation>Pas de maillage TetGen : lancez d&apos;abord Maillage &gt; Tétraédriser…</translation>
+    </message>
+    <message>
+        <source>The last tetrahedralisation did not mesh the remeshed model</source>
+        <translation>La dernière tétraédrisation n&apos;a pas maillé le modèle remaillé</translation>
+    </message>
+    <message>
+        <source>TetGen mesh of the input</source>
+        <translation>Maillage TetGen de l&apos;entrée</translation>
+    </message>
+    <message>
+        <source>TetGen failed on the input model</source>
+        <translation>TetGen a échoué sur le modèle d&apos;entrée</translation>
+    </message>
+    <message>
+        <source>TetGen mesh of the remesh</source>
+        <translation>Maillage TetGen du remaillage</translation>
+    </message>
+    <message>
+        <source>TetGen failed on the remeshed model</source>
+        <translation>TetGen a échoué sur le modèle remaillé</translation>
+    </message>
+    <message>
+        <source>Hybrid mesh</source>
+        <translation>Maillage hybride</translation>
+    </message>
+    <message>
+        <source>No hybrid mesh: run Mesh &gt; Hybrid Mesh… first</source>
+        <translation>Pas de maillage hybride : lancez d&apos;abord Maillage &gt; Maillage hybride…</translation>
+    </message>
+    <message>
+        <source>cannot tell the format from the extension (use %1)</source>
+        <translation>impossible de déduire le format de l&apos;extension (utilisez %1)</translation>
+    </message>
+    <message>
+        <source>another run is under way</source>
+        <translation>un autre calcul est en cours</translation>
+    </message>
+    <message>
+        <source>Exporting %1…</source>
+        <translation>Export de %1…</translation>
+    </message>
+    <message>
+        <source>Exported as %1 in %2 s</source>
+        <translation>Exporté au format %1 en %2 s</translation>
+    </message>
+    <message>
+        <source>%1 elements without a region, surface or line were left out, as Gmsh does; “Keep elements without a group” keeps them</source>
+        <translation>%1 éléments sans région, surface ni ligne ont été omis, comme le fait Gmsh ; « Garder les éléments sans groupe » les conserve</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exporté</translation>
+    </message>
+    <message>
+        <source>Export failed: %1</source>
+        <translation>Échec de l&apos;export : %1</translation>
+    </message>
+    <message>
+        <source>Could not export</source>
+        <translation>Impossible d&apos;exporter</translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::FeatureLegend</name>
     <message>
         <source>Horizons</source>

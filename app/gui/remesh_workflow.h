@@ -41,8 +41,6 @@ public:
     // Shows a run made earlier (a project's, or another of this session's) in place of the shown
     // one, with its review: no engine run, no message.
     void show(const RemeshOutcome &outcome, const ReviewDecisions &decisions);
-    // The shown result is kept in a file (a saved project holds it): no prompt before closing.
-    void markSaved() { m_saved = true; }
     QAction *remeshAction() const { return m_remesh; }
     QAction *saveAction() const { return m_save; }
     QAction *exportReviewAction() const { return m_exportReview; }
@@ -57,8 +55,9 @@ public:
     void enableActions(bool busy) override;
     QString unsavedWork() const override;
     bool saveUnsavedWork() override;
-    // The shown outcome was written whole by another step (File > Export… to a format that keeps
-    // all of a model): opening another model no longer asks to save it.
+    // The shown outcome was written whole by another step (a saved project, or File > Export… to a
+    // format that keeps all of a model): opening another model or closing no longer asks to save
+    // it.
     void markSaved() { m_saved = m_outcome.has_value(); }
 
 public slots:

@@ -141,7 +141,7 @@ private slots:
 
         ValidityReport report;
         report.valid = false;
-        report.problems.push_back({"intersection", {"h1", "h2"}, Vec3(1, 2, 3), "crossing"});
+        report.problems.push_back({"intersection", {"h1", "h2"}, Vec3(1, 2, 3), "crossing", {}});
         report.counts["intersection"] = 5;
         const ValidityReport v = validityFromJson(toJson(report), QStringLiteral("r.json"));
         QVERIFY(!v.valid);
