@@ -27,6 +27,7 @@ class OpenWorkflow;
 class ProgressStrip;
 class ProjectWorkflow;
 class RemeshWorkflow;
+class StepsWorkflow;
 class StudyWorkflow;
 class TetmeshWorkflow;
 class ViewWorkflow;
@@ -65,6 +66,7 @@ public:
     ProjectWorkflow *projectWorkflow() const { return m_project; }
     ViewWorkflow *viewWorkflow() const { return m_view; }
     ModelTreeWorkflow *modelTreeWorkflow() const { return m_tree; }
+    StepsWorkflow *stepsWorkflow() const { return m_steps; }
 
 public slots:
     // A model, or a project (.smproj).
@@ -107,6 +109,7 @@ private:
     ProjectWorkflow *m_project = nullptr;
     ViewWorkflow *m_view = nullptr;
     ModelTreeWorkflow *m_tree = nullptr;
+    StepsWorkflow *m_steps = nullptr;
 
     QAction *m_quit = nullptr;
     QAction *m_showBox = nullptr;
