@@ -186,7 +186,7 @@ bool parseGuiOptions(const QStringList &arguments, GuiOptions &options, int &exi
             "GuiOptions",
             "Load the model, do the steps, save the window as a PNG image in <png> and exit "
             "(status 0 when saved, 1 when the image could not be written, 2 when the "
-            "model could not be opened)."),
+            "model could not be opened, 3 when a step failed)."),
         QStringLiteral("png"));
     const QCommandLineOption lang(
         QStringLiteral("lang"),

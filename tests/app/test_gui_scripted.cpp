@@ -10,6 +10,8 @@
 #include "gui_options.h"
 #include "hybrid_workflow.h"
 #include "main_window.h"
+#include "model_tree_model.h"
+#include "model_tree_panel.h"
 #include "model_tree_workflow.h"
 #include "open_workflow.h"
 #include "remesh_workflow.h"
@@ -258,6 +260,8 @@ private slots:
             return;
         window.modelTreeWorkflow()->dock()->show();
         window.modelTreeWorkflow()->dock()->raise();
+        // A surface chosen in the tree is highlighted in both views.
+        window.modelTreeWorkflow()->panel()->selectEntity(ModelTreeModel::Kind::Surface, 0);
         shoot("model_tree");
     }
 };
