@@ -31,10 +31,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Load the model, save the window as a PNG image in &lt;png&gt; and exit (status 0 when saved, 1 when the image could not be written, 2 when the model could not be opened).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>User interface language: fr or en.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -55,23 +51,67 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Remesh the model with &lt;n&gt; sites once it is open (with --screenshot, the picture shows the result with its first simplification selected).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Measure the complexity of the model with &lt;n&gt; cells once it is open (with --screenshot, the picture shows the heat map and the Complexity dock).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>--remesh-sites needs a number of sites in [%1, %2], not &apos;%3&apos;.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>--complexity-cells needs a number of cells in [%1, %2], not &apos;%3&apos;.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Open the model or the project (.smproj) in &lt;file&gt;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 needs a number in [%2, %3], not &apos;%4&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unknown step &apos;%1&apos; for --run: use complexity, remesh, tetmesh or hybrid.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--sites must follow --run remesh or --run hybrid.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--cells must follow --run complexity.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unknown colouring &apos;%1&apos; for --colour-by: use entity, min-angle, quality or distance.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--save-project needs a file name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load the model, do the steps, save the window as a PNG image in &lt;png&gt; and exit (status 0 when saved, 1 when the image could not be written, 2 when the model could not be opened, 3 when a step failed).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Same as --run remesh --sites &lt;n&gt;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Same as --run complexity --cells &lt;n&gt;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Once the model is open, run &lt;step&gt;: complexity, remesh, tetmesh (the input and the remesh) or hybrid; may be repeated. The steps, --colour-by and --save-project are done in the order given, each once the one before has finished; a failed step stops the others, prints its name and exits with status 3 (after the screenshot, if asked).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Number of sites of the --run remesh or --run hybrid just before.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Number of cells of the --run complexity just before.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Colour both views by &lt;colouring&gt;: entity, min-angle, quality or distance (needs a remesh before).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the runs made so far as the project &lt;project&gt;.smproj.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the model could not be opened: no step was done.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2299,6 +2339,25 @@ Click to show it in the views</source>
     </message>
     <message>
         <source>%1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ScriptRunner</name>
+    <message>
+        <source>it could not start (no model shown, or another run is going on)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this colouring is not available now (the distance needs a remesh before)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it was cancelled or failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>step %1 (%2) failed: %3</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

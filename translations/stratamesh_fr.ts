@@ -31,10 +31,6 @@
         <translation>StrataMesh : remaillage et maillage de modèles structuraux 3D.</translation>
     </message>
     <message>
-        <source>Load the model, save the window as a PNG image in &lt;png&gt; and exit (status 0 when saved, 1 when the image could not be written, 2 when the model could not be opened).</source>
-        <translation>Charger le modèle, enregistrer la fenêtre en image PNG dans &lt;png&gt; et quitter (code 0 si l&apos;image est enregistrée, 1 si elle n&apos;a pas pu être écrite, 2 si le modèle n&apos;a pas pu être ouvert).</translation>
-    </message>
-    <message>
         <source>User interface language: fr or en.</source>
         <translation>Langue de l&apos;interface : fr ou en.</translation>
     </message>
@@ -55,24 +51,68 @@
         <translation>Langue « %1 » inconnue : utilisez fr ou en.</translation>
     </message>
     <message>
-        <source>Remesh the model with &lt;n&gt; sites once it is open (with --screenshot, the picture shows the result with its first simplification selected).</source>
-        <translation>Remailler le modèle avec &lt;n&gt; sites une fois ouvert (avec --screenshot, l&apos;image montre le résultat, sa première simplification sélectionnée).</translation>
-    </message>
-    <message>
-        <source>Measure the complexity of the model with &lt;n&gt; cells once it is open (with --screenshot, the picture shows the heat map and the Complexity dock).</source>
-        <translation>Mesurer la complexité du modèle avec &lt;n&gt; cellules une fois ouvert (avec --screenshot, l&apos;image montre la carte de chaleur et le panneau Complexité).</translation>
-    </message>
-    <message>
-        <source>--remesh-sites needs a number of sites in [%1, %2], not &apos;%3&apos;.</source>
-        <translation>--remesh-sites demande un nombre de sites dans [%1, %2], pas « %3 ».</translation>
-    </message>
-    <message>
-        <source>--complexity-cells needs a number of cells in [%1, %2], not &apos;%3&apos;.</source>
-        <translation>--complexity-cells demande un nombre de cellules dans [%1, %2], pas « %3 ».</translation>
-    </message>
-    <message>
         <source>Open the model or the project (.smproj) in &lt;file&gt;.</source>
         <translation>Ouvrir le modèle ou le projet (.smproj) dans &lt;file&gt;.</translation>
+    </message>
+    <message>
+        <source>%1 needs a number in [%2, %3], not &apos;%4&apos;.</source>
+        <translation>%1 demande un nombre dans [%2, %3], pas « %4 ».</translation>
+    </message>
+    <message>
+        <source>Unknown step &apos;%1&apos; for --run: use complexity, remesh, tetmesh or hybrid.</source>
+        <translation>Étape « %1 » inconnue pour --run : utilisez complexity, remesh, tetmesh ou hybrid.</translation>
+    </message>
+    <message>
+        <source>--sites must follow --run remesh or --run hybrid.</source>
+        <translation>--sites doit suivre --run remesh ou --run hybrid.</translation>
+    </message>
+    <message>
+        <source>--cells must follow --run complexity.</source>
+        <translation>--cells doit suivre --run complexity.</translation>
+    </message>
+    <message>
+        <source>Unknown colouring &apos;%1&apos; for --colour-by: use entity, min-angle, quality or distance.</source>
+        <translation>Coloration « %1 » inconnue pour --colour-by : utilisez entity, min-angle, quality ou distance.</translation>
+    </message>
+    <message>
+        <source>--save-project needs a file name.</source>
+        <translation>--save-project demande un nom de fichier.</translation>
+    </message>
+    <message>
+        <source>Load the model, do the steps, save the window as a PNG image in &lt;png&gt; and exit (status 0 when saved, 1 when the image could not be written, 2 when the model could not be opened, 3 when a step failed).</source>
+        <translation>Charger le modèle, faire les étapes, enregistrer la fenêtre en image PNG dans &lt;png&gt; et quitter (code 0 si elle est enregistrée, 1 si l’image n’a pas pu être écrite, 2 si le modèle n’a pas pu être ouvert, 3 si une étape a échoué).</translation>
+    </message>
+    <message>
+        <source>Same as --run remesh --sites &lt;n&gt;.</source>
+        <translation>Identique à --run remesh --sites &lt;n&gt;.</translation>
+    </message>
+    <message>
+        <source>Same as --run complexity --cells &lt;n&gt;.</source>
+        <translation>Identique à --run complexity --cells &lt;n&gt;.</translation>
+    </message>
+    <message>
+        <source>Once the model is open, run &lt;step&gt;: complexity, remesh, tetmesh (the input and the remesh) or hybrid; may be repeated. The steps, --colour-by and --save-project are done in the order given, each once the one before has finished; a failed step stops the others, prints its name and exits with status 3 (after the screenshot, if asked).</source>
+        <translation>Une fois le modèle ouvert, lancer &lt;step&gt; : complexity, remesh, tetmesh (l’entrée et le remaillage) ou hybrid ; peut être répété. Les étapes, --colour-by et --save-project sont faites dans l’ordre donné, chacune une fois la précédente terminée ; une étape en échec arrête les suivantes, affiche son nom et quitte avec le code 3 (après la capture d’écran, si elle est demandée).</translation>
+    </message>
+    <message>
+        <source>Number of sites of the --run remesh or --run hybrid just before.</source>
+        <translation>Nombre de sites du --run remesh ou --run hybrid qui précède.</translation>
+    </message>
+    <message>
+        <source>Number of cells of the --run complexity just before.</source>
+        <translation>Nombre de cellules du --run complexity qui précède.</translation>
+    </message>
+    <message>
+        <source>Colour both views by &lt;colouring&gt;: entity, min-angle, quality or distance (needs a remesh before).</source>
+        <translation>Colorer les deux vues selon &lt;colouring&gt; : entity, min-angle, quality ou distance (demande un remaillage avant).</translation>
+    </message>
+    <message>
+        <source>Save the runs made so far as the project &lt;project&gt;.smproj.</source>
+        <translation>Enregistrer les calculs faits jusque-là dans le projet &lt;project&gt;.smproj.</translation>
+    </message>
+    <message>
+        <source>the model could not be opened: no step was done.</source>
+        <translation>le modèle n’a pas pu être ouvert : aucune étape n’a été faite.</translation>
     </message>
 </context>
 <context>
@@ -2303,6 +2343,25 @@ Cliquer pour le montrer dans les vues</translation>
     <message>
         <source>%1 of %2</source>
         <translation>%1 sur %2</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::ScriptRunner</name>
+    <message>
+        <source>it could not start (no model shown, or another run is going on)</source>
+        <translation>elle n’a pas pu démarrer (aucun modèle affiché, ou un autre calcul est en cours)</translation>
+    </message>
+    <message>
+        <source>this colouring is not available now (the distance needs a remesh before)</source>
+        <translation>cette coloration n’est pas disponible pour l’instant (la distance demande un remaillage avant)</translation>
+    </message>
+    <message>
+        <source>it was cancelled or failed</source>
+        <translation>elle a été annulée ou a échoué</translation>
+    </message>
+    <message>
+        <source>step %1 (%2) failed: %3</source>
+        <translation>l’étape %1 (%2) a échoué : %3</translation>
     </message>
 </context>
 <context>

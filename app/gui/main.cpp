@@ -1,11 +1,11 @@
 // stratamesh: the desktop application.
 #include "common/version.h"
-#include "complexity_workflow.h"
 #include "gui_options.h"
-#include "ledger_panel.h"
 #include "main_window.h"
 #include "open_workflow.h"
-#include "remesh_workflow.h"
+#include "project_file.h"
+#include "project_workflow.h"
+#include "script_runner.h"
 #include "translations.h"
 #include "vtk_view_widget.h"
 #include "window_screenshot.h"
@@ -35,61 +35,59 @@ int main(int argc, char **argv)
     stratamesh::MainWindow window;
     window.setBoxVisible(options.showBox);
     window.setEdgesVisible(options.showEdges);
-    const auto screenshot = [&](bool ok) {
+    // Exit status: 0, 1 when the image could not be written, 2 when the model could not be opened,
+    // 3 when a step failed.
+    const auto screenshot = [&](int status) {
         // Let the window lay itself out and the view render once before grabbing.
-        QTimer::singleShot(300, &window, [&, ok] {
+        QTimer::singleShot(300, &window, [&, status] {
             const bool saved = stratamesh::saveWindowScreenshot(&window, options.screenshotPath);
             if (!saved)
                 std::fprintf(stderr, "stratamesh: cannot write %s\n",
                              qPrintable(options.screenshotPath));
-            QApplication::exit(!saved ? 1 : ok ? 0 : 2);
+            QApplication::exit(!saved ? 1 : status);
         });
     };
-    if (options.remeshSites > 0) {
-        QObject::connect(
-            window.openWorkflow(), &stratamesh::OpenWorkflow::finished, &window,
-            [&](bool ok) {
-                stratamesh::RemeshParams params;
-                params.sites = options.remeshSites;
-                if (!ok || !window.remeshWorkflow()->start(params)) {
-                    if (!options.screenshotPath.isEmpty())
-                        screenshot(false);
-                }
-            },
-            Qt::SingleShotConnection);
+    const bool scripted = !options.screenshotPath.isEmpty() || !options.steps.empty();
+    stratamesh::ScriptRunner runner(window, options.steps);
+    const auto opened = [&](bool ok) {
+        if (ok) {
+            runner.start();
+        } else if (!options.screenshotPath.isEmpty()) {
+            screenshot(2);
+        } else if (!options.steps.empty()) {
+            std::fprintf(stderr, "stratamesh: %s\n",
+                         qPrintable(QCoreApplication::translate(
+                             "GuiOptions", "the model could not be opened: no step was done.")));
+            QApplication::exit(2);
+        }
+    };
+    QObject::connect(&runner, &stratamesh::ScriptRunner::finished, &window, [&](bool ok) {
+        if (!ok)
+            std::fprintf(stderr, "stratamesh: %s\n", qPrintable(runner.failure()));
         if (!options.screenshotPath.isEmpty())
-            QObject::connect(
-                window.remeshWorkflow(), &stratamesh::RemeshWorkflow::finished, &window,
-                [&](bool ok) {
-                    if (ok) {
-                        window.remeshWorkflow()->ledgerPanel()->selectRow(0);
-                        window.resetCamera(); // the whole model, the marked record somewhere in it
-                    }
-                    screenshot(ok);
-                });
-    } else if (options.complexityCells > 0) {
-        QObject::connect(
-            window.openWorkflow(), &stratamesh::OpenWorkflow::finished, &window,
-            [&](bool ok) {
-                stratamesh::ComplexityParams params;
-                params.cells = {options.complexityCells};
-                if (!ok || !window.complexityWorkflow()->start(params)) {
-                    if (!options.screenshotPath.isEmpty())
-                        screenshot(false);
-                }
-            },
-            Qt::SingleShotConnection);
-        if (!options.screenshotPath.isEmpty())
-            QObject::connect(window.complexityWorkflow(), &stratamesh::ComplexityWorkflow::finished,
-                             &window, screenshot);
-    } else if (!options.screenshotPath.isEmpty()) {
-        QObject::connect(window.openWorkflow(), &stratamesh::OpenWorkflow::finished, &window,
-                         screenshot);
+            screenshot(ok ? 0 : 3);
+        else if (!ok)
+            QApplication::exit(3);
+        // Steps without a screenshot leave the window open on their results.
+    });
+    const bool project = stratamesh::isProjectFile(options.openPath);
+    if (scripted) {
+        if (project)
+            QObject::connect(window.projectWorkflow(), &stratamesh::ProjectWorkflow::projectOpened,
+                             &window, opened, Qt::SingleShotConnection);
+        else
+            QObject::connect(window.openWorkflow(), &stratamesh::OpenWorkflow::finished, &window,
+                             opened, Qt::SingleShotConnection);
     }
     window.show();
     if (options.openPath.isEmpty())
         window.openSample();
-    else
+    else if (project) {
+        // False when the project cannot be read (no projectOpened() follows).
+        if (!window.projectWorkflow()->openProject(options.openPath) && scripted)
+            QTimer::singleShot(0, &window, [&] { opened(false); });
+    } else {
         window.openFile(options.openPath);
+    }
     return app.exec();
 }

@@ -131,7 +131,9 @@ private slots:
         QVERIFY(parseGuiOptions({QStringLiteral("stratamesh"), QStringLiteral("--complexity-cells"),
                                  QStringLiteral("500"), QStringLiteral("m.ml")},
                                 options, exitCode));
-        QCOMPARE(options.complexityCells, 500);
+        QCOMPARE(int(options.steps.size()), 1);
+        QCOMPARE(options.steps[0].kind, ScriptStep::Kind::Complexity);
+        QCOMPARE(options.steps[0].count, 500);
         QCOMPARE(options.openPath, QStringLiteral("m.ml"));
         GuiOptions bad;
         QVERIFY(!parseGuiOptions({QStringLiteral("stratamesh"),
