@@ -26,6 +26,7 @@ class ModelTreeWorkflow;
 class OpenWorkflow;
 class ProgressStrip;
 class ProjectWorkflow;
+class RecentFiles;
 class RemeshWorkflow;
 class StudyWorkflow;
 class TetmeshWorkflow;
@@ -65,6 +66,14 @@ public:
     ProjectWorkflow *projectWorkflow() const { return m_project; }
     ViewWorkflow *viewWorkflow() const { return m_view; }
     ModelTreeWorkflow *modelTreeWorkflow() const { return m_tree; }
+    RecentFiles *recentFiles() const { return m_recent; }
+
+    // Bumped when the docks change so that an older saved layout is not applied.
+    static constexpr int kStateVersion = 1;
+    // The window's size and docks as the settings keep them (app_settings.h); the constructor
+    // restores them, closing the window saves them.
+    void saveLayout() const;
+    bool restoreLayout();
 
 public slots:
     // A model, or a project (.smproj).
@@ -107,6 +116,7 @@ private:
     ProjectWorkflow *m_project = nullptr;
     ViewWorkflow *m_view = nullptr;
     ModelTreeWorkflow *m_tree = nullptr;
+    RecentFiles *m_recent = nullptr;
 
     QAction *m_quit = nullptr;
     QAction *m_showBox = nullptr;
