@@ -1999,6 +1999,45 @@ Click to show it in the views</source>
         <source>Saved %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Compare Runs %1 and %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show Input vs Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comparing run %1 with run %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run %1: %2 sites, %3 triangles</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::RecentFiles</name>
+    <message>
+        <source>&amp;%1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>File not found: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forget the files opened before</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RemeshController</name>
@@ -2299,6 +2338,38 @@ Click to show it in the views</source>
     </message>
     <message>
         <source>%1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show one run in the input view and another in the output view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input vs Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the input model again beside the run shown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare Runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input view:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output view:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
