@@ -25,6 +25,13 @@
     </message>
 </context>
 <context>
+    <name>DisabledReason</name>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>GuiOptions</name>
     <message>
         <source>StrataMesh: remeshing and meshing of 3D structural models.</source>
@@ -2015,6 +2022,14 @@ Click to show it in the views</source>
         <source>Run %1: %2 sites, %3 triangles</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>no model open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RecentFiles</name>
@@ -2213,6 +2228,18 @@ Click to show it in the views</source>
     </message>
     <message>
         <source>Could not export the review</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no model open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no remeshed model yet</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

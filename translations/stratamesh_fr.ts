@@ -25,6 +25,13 @@
     </message>
 </context>
 <context>
+    <name>DisabledReason</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+</context>
+<context>
     <name>GuiOptions</name>
     <message>
         <source>StrataMesh: remeshing and meshing of 3D structural models.</source>
@@ -2018,6 +2025,14 @@ Cliquer pour le montrer dans les vues</translation>
         <source>Run %1: %2 sites, %3 triangles</source>
         <translation>Remaillage %1 : %2 sites, %3 triangles</translation>
     </message>
+    <message>
+        <source>no model open</source>
+        <translation>aucun modèle ouvert</translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation>une autre étape est en cours</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RecentFiles</name>
@@ -2217,6 +2232,18 @@ Cliquer pour le montrer dans les vues</translation>
     <message>
         <source>Could not export the review</source>
         <translation>Impossible d’exporter le contrôle</translation>
+    </message>
+    <message>
+        <source>no model open</source>
+        <translation>aucun modèle ouvert</translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation>une autre étape est en cours</translation>
+    </message>
+    <message>
+        <source>no remeshed model yet</source>
+        <translation>pas encore de modèle remaillé</translation>
     </message>
 </context>
 <context>

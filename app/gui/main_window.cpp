@@ -209,6 +209,9 @@ void MainWindow::createMenus()
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_about);
     m_helpMenu->addAction(m_aboutQt);
+    // A disabled entry's tooltip says why (disabled_reason.h).
+    for (QMenu *menu : {m_fileMenu, m_editMenu, m_viewMenu, m_meshMenu, m_analyseMenu})
+        menu->setToolTipsVisible(true);
 
     m_toolBar = addToolBar(QString());
     m_toolBar->setObjectName(QStringLiteral("MainToolBar"));

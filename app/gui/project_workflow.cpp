@@ -1,5 +1,6 @@
 #include "project_workflow.h"
 
+#include "disabled_reason.h"
 #include "error_message.h"
 #include "model_scene.h"
 #include "open_model_controller.h"
@@ -143,6 +144,11 @@ ProjectWorkflow::ProjectWorkflow(Workbench &bench, OpenWorkflow &open, RemeshWor
     connect(m_open, &QAction::triggered, this, &ProjectWorkflow::chooseProject);
     connect(m_save, &QAction::triggered, this, &ProjectWorkflow::save);
     connect(m_saveAs, &QAction::triggered, this, &ProjectWorkflow::saveAs);
+    for (QAction *action : {m_save, m_saveAs})
+        setDisabledReason(action, [this] {
+            return !m_bench.model() ? tr("no model open") : tr("another step is running");
+        });
+    setDisabledReason(m_open, [] { return tr("another step is running"); });
     connect(m_panel, &RunsPanel::runChosen, this, &ProjectWorkflow::chooseRun);
     connect(m_panel, &RunsPanel::compareChosen, this, &ProjectWorkflow::compareRuns);
     connect(m_panel, &RunsPanel::inputChosen, this, &ProjectWorkflow::chooseInput);

@@ -1,10 +1,13 @@
 // File > Open Recent and the window's layout kept in the settings (issue 17): two models opened
 // are listed most recent first, a removed one shows disabled with "File not found", the list and
 // the dock layout survive a new window reading the same settings, Clear Menu empties the list.
-// The settings live in a temporary folder (STRATAMESH_SETTINGS_DIR): never the developer's.
+// Disabled actions say why in their tooltip. The settings live in a temporary folder
+// (STRATAMESH_SETTINGS_DIR): never the developer's.
 #include "main_window.h"
 #include "open_workflow.h"
+#include "project_workflow.h"
 #include "recent_files.h"
+#include "remesh_workflow.h"
 #include "support/test_data.h"
 #include "translations.h"
 #include "vtk_view_widget.h"
@@ -159,6 +162,29 @@ private slots:
         settings.sync();
         MainWindow window;
         QVERIFY(!window.restoreLayout());
+    }
+
+    // Before a model, Remesh… and the saves are disabled and say why; after, Remesh… is enabled
+    // and its tooltip is Qt's again (the action's text), while the save still waits for a result.
+    void disabledActionsSayWhy()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        RemeshWorkflow *remesh = window.remeshWorkflow();
+        QVERIFY(!remesh->remeshAction()->isEnabled());
+        QCOMPARE(remesh->remeshAction()->toolTip(), QStringLiteral("Remesh…: no model open"));
+        QCOMPARE(remesh->saveAction()->toolTip(),
+                 QStringLiteral("Save Remeshed Model As…: no remeshed model yet"));
+        QCOMPARE(window.projectWorkflow()->saveAction()->toolTip(),
+                 QStringLiteral("Save Project: no model open"));
+        QVERIFY(openAndWait(window, m_second));
+        QVERIFY(remesh->remeshAction()->isEnabled());
+        QCOMPARE(remesh->remeshAction()->toolTip(), QStringLiteral("Remesh…"));
+        QVERIFY(!remesh->saveAction()->isEnabled());
+        QCOMPARE(remesh->saveAction()->toolTip(),
+                 QStringLiteral("Save Remeshed Model As…: no remeshed model yet"));
+        QCOMPARE(window.projectWorkflow()->saveAction()->toolTip(), QStringLiteral("Save Project"));
     }
 
     void atMostEightFiles()
