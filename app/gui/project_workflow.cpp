@@ -1,5 +1,6 @@
 #include "project_workflow.h"
 
+#include "app_settings.h"
 #include "disabled_reason.h"
 #include "error_message.h"
 #include "model_scene.h"
@@ -381,13 +382,13 @@ void ProjectWorkflow::fail(const Message &message, const QString &status)
 
 void ProjectWorkflow::chooseProject()
 {
-    QSettings settings;
-    const QString dir = settings.value(QStringLiteral("lastDirectory")).toString();
+    const std::unique_ptr<QSettings> settings = openSettings();
+    const QString dir = settings->value(QStringLiteral("lastDirectory")).toString();
     const QString path = QFileDialog::getOpenFileName(m_bench.window(), tr("Open Project"), dir,
                                                       tr("StrataMesh projects (*.smproj)"));
     if (path.isEmpty())
         return;
-    settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
+    settings->setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
     openProject(path);
 }
 
@@ -537,9 +538,9 @@ bool ProjectWorkflow::saveAs()
 {
     if (!m_bench.model())
         return false;
-    QSettings settings;
+    const std::unique_ptr<QSettings> settings = openSettings();
     const QString dir = m_path.isEmpty()
-                            ? settings.value(QStringLiteral("lastDirectory")).toString()
+                            ? settings->value(QStringLiteral("lastDirectory")).toString()
                             : QFileInfo(m_path).absolutePath();
     QString path = QFileDialog::getSaveFileName(m_bench.window(), tr("Save Project"), dir,
                                                 tr("StrataMesh projects (*.smproj)"));
@@ -547,7 +548,7 @@ bool ProjectWorkflow::saveAs()
         return false;
     if (!isProjectFile(path))
         path += QStringLiteral(".smproj");
-    settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
+    settings->setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
     return saveProject(path);
 }
 
