@@ -2401,6 +2401,100 @@ Click to show it in the views</source>
     </message>
 </context>
 <context>
+    <name>stratamesh::StepsWorkflow</name>
+    <message>
+        <source>Steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;teps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show Problems</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the Messages, where each validity problem of the model is listed; a click on one flies the views to it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Complexity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Volume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a model (File &gt; Open Model…).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: no validity problem found.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n validity problem(s) — see Messages.</source>
+        <translation>
+            <numerusform>%1: %n validity problem — see Messages.</numerusform>
+            <numerusform>%1: %n validity problems — see Messages.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Measured with %1 Voronoi cells.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Elements per Voronoi cell as a heat map (ch. 3).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 sites: %2 vertices, %3 triangles, %4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>valid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not valid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All surfaces at once at a chosen resolution (ch. 4).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen meshes made.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hybrid mesh of %1 cells.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen meshes of input and remesh, or a hybrid mesh (ch. 5).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The input, the remesh or a volume mesh in another format.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::StudyWindow</name>
     <message>
         <source>Task</source>

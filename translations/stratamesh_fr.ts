@@ -2404,6 +2404,100 @@ Cliquer pour le montrer dans les vues</translation>
     </message>
 </context>
 <context>
+    <name>stratamesh::StepsWorkflow</name>
+    <message>
+        <source>Steps</source>
+        <translation>Étapes</translation>
+    </message>
+    <message>
+        <source>S&amp;teps</source>
+        <translation>É&amp;tapes</translation>
+    </message>
+    <message>
+        <source>Show Problems</source>
+        <translation>Voir les problèmes</translation>
+    </message>
+    <message>
+        <source>Show the Messages, where each validity problem of the model is listed; a click on one flies the views to it</source>
+        <translation>Afficher les messages, où chaque problème de validité du modèle est listé ; un clic sur l&apos;un d&apos;eux y amène les vues</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>Vérification</translation>
+    </message>
+    <message>
+        <source>Complexity</source>
+        <translation>Complexité</translation>
+    </message>
+    <message>
+        <source>Remesh</source>
+        <translation>Remaillage</translation>
+    </message>
+    <message>
+        <source>Volume</source>
+        <translation>Volume</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Export</translation>
+    </message>
+    <message>
+        <source>Open a model (File &gt; Open Model…).</source>
+        <translation>Ouvrir un modèle (Fichier &gt; Ouvrir un modèle…).</translation>
+    </message>
+    <message>
+        <source>%1: no validity problem found.</source>
+        <translation>%1 : aucun problème de validité.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n validity problem(s) — see Messages.</source>
+        <translation>
+            <numerusform>%1 : %n problème de validité — voir Messages.</numerusform>
+            <numerusform>%1 : %n problèmes de validité — voir Messages.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Measured with %1 Voronoi cells.</source>
+        <translation>Mesurée avec %1 cellules de Voronoï.</translation>
+    </message>
+    <message>
+        <source>Elements per Voronoi cell as a heat map (ch. 3).</source>
+        <translation>Éléments par cellule de Voronoï en carte de chaleur (chap. 3).</translation>
+    </message>
+    <message>
+        <source>%1 sites: %2 vertices, %3 triangles, %4.</source>
+        <translation>%1 sites : %2 sommets, %3 triangles, %4.</translation>
+    </message>
+    <message>
+        <source>valid</source>
+        <translation>valide</translation>
+    </message>
+    <message>
+        <source>not valid</source>
+        <translation>non valide</translation>
+    </message>
+    <message>
+        <source>All surfaces at once at a chosen resolution (ch. 4).</source>
+        <translation>Toutes les surfaces à la fois, à la résolution choisie (chap. 4).</translation>
+    </message>
+    <message>
+        <source>TetGen meshes made.</source>
+        <translation>Maillages TetGen faits.</translation>
+    </message>
+    <message>
+        <source>Hybrid mesh of %1 cells.</source>
+        <translation>Maillage hybride de %1 cellules.</translation>
+    </message>
+    <message>
+        <source>TetGen meshes of input and remesh, or a hybrid mesh (ch. 5).</source>
+        <translation>Maillages TetGen de l&apos;entrée et du remaillage, ou un maillage hybride (chap. 5).</translation>
+    </message>
+    <message>
+        <source>The input, the remesh or a volume mesh in another format.</source>
+        <translation>L&apos;entrée, le remaillage ou un maillage volumique dans un autre format.</translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::StudyWindow</name>
     <message>
         <source>Task</source>

@@ -1,5 +1,5 @@
 // stratamesh-cli hybrid MODEL [PARAMETERS: hybridParamTable()] -o OUT.(vtu|msh) [--report R.json]
-//     [--json] [--cavity-poly PLC.poly] [--overwrite]
+//     [--json] [--cavity-poly PLC.poly] [--surface-remesh S.ml] [--overwrite]
 // A hybrid tet/prism/pyramid mesh (thesis ch. 5, core/hybrid/hybrid_mesher.h): prisms where
 // Voronoi edges cross thin layers, tets from TetGen elsewhere, checked by the mixed-mesh checker.
 // Nothing is written and the exit status is 1 when no valid mesh could be made; every output is
@@ -52,6 +52,8 @@ int runHybrid(CommandArgs &args)
     args.params(hybridParamTable(), params);
     // The TetGen input of the last fill, for `tetgen -d`.
     const std::optional<QString> cavityPoly = args.option(QStringLiteral("--cavity-poly"));
+    // The surface remesh the cells stand on, for `tetmesh` to mesh the same surfaces (§5.5).
+    const std::optional<QString> surfaceRemesh = args.option(QStringLiteral("--surface-remesh"));
     const bool json = args.flag(QStringLiteral("--json"));
     const std::optional<QString> output = args.option(QStringLiteral("-o"));
     const std::optional<QString> reportPath = args.option(QStringLiteral("--report"));
@@ -65,11 +67,17 @@ int runHybrid(CommandArgs &args)
                 QStringLiteral("the output must be a .vtu or .msh file, not '%1'").arg(*output));
     }
 
+    if (surfaceRemesh && !isExportFile(surfaceRemesh->toStdString()))
+        throw UsageError(QStringLiteral("--surface-remesh: no model format has the extension of "
+                                        "'%1' (.ml, .ts, .vtp, .msh, .gm…)")
+                             .arg(*surfaceRemesh));
     OutputPlan plan({path.toStdString()}, overwrite);
     if (output)
         plan.add(output->toStdString(), "mesh");
     if (reportPath)
         plan.add(reportPath->toStdString(), "report");
+    if (surfaceRemesh)
+        plan.add(surfaceRemesh->toStdString(), "surface remesh");
     // The engine writes the PLC while it runs: into a scratch folder, moved into place by the plan.
     QTemporaryDir scratch;
     if (cavityPoly) {
@@ -95,6 +103,11 @@ int runHybrid(CommandArgs &args)
         });
     else if (cavityPoly)
         plan.discard(cavityPoly->toStdString());
+    if (surfaceRemesh && r.surfaceRemesh)
+        plan.write(surfaceRemesh->toStdString(),
+                   [&](const std::string &temporary) { exportModel(*r.surfaceRemesh, temporary); });
+    else if (surfaceRemesh)
+        plan.discard(surfaceRemesh->toStdString());
 
     const HybridTimings &t = r.timings;
     const QJsonObject report{

@@ -14,6 +14,7 @@
 #include "project_workflow.h"
 #include "recent_files.h"
 #include "remesh_workflow.h"
+#include "steps_workflow.h"
 #include "study_workflow.h"
 #include "tetmesh_workflow.h"
 #include "view_pair.h"
@@ -63,10 +64,12 @@ MainWindow::MainWindow(QWidget *parent)
     m_complexity = add(new ComplexityWorkflow(*m_bench, this));
     m_tetmesh = add(new TetmeshWorkflow(*m_bench, *m_remesh, this));
     m_hybrid = add(new HybridWorkflow(*m_bench, *m_remesh, *m_tetmesh, this));
-    add(new ExportWorkflow(*m_bench, *m_remesh, *m_tetmesh, *m_hybrid, this));
+    auto *exporter = add(new ExportWorkflow(*m_bench, *m_remesh, *m_tetmesh, *m_hybrid, this));
     m_project = add(new ProjectWorkflow(*m_bench, *m_open, *m_remesh, this));
     m_view = add(new ViewWorkflow(*m_bench, *m_remesh, *m_tetmesh, *m_hybrid, this));
     m_tree = add(new ModelTreeWorkflow(*m_bench, *m_open, *m_remesh, this));
+    m_steps = add(new StepsWorkflow(*m_bench, *m_open, *m_complexity, *m_remesh, *m_tetmesh,
+                                    *m_hybrid, *exporter, this));
     connect(m_open, &OpenWorkflow::opened, this, &MainWindow::showModel);
     m_recent = new RecentFiles(this);
     connect(m_recent, &RecentFiles::openRequested, this, &MainWindow::openFile);
@@ -244,6 +247,7 @@ void makeScrollable(QDockWidget *dock)
 void MainWindow::placeDocks()
 {
     QDockWidget *review = nullptr;
+    QDockWidget *left = nullptr;
     for (const Workflow *workflow : std::as_const(m_workflows)) {
         for (const Workflow::Dock &dock : workflow->docks()) {
             switch (dock.place) {
@@ -263,6 +267,13 @@ void MainWindow::placeDocks()
                 break;
             case Workflow::DockPlace::Left:
                 addDockWidget(Qt::LeftDockWidgetArea, dock.dock);
+                // The model's tree stays in front; the other left docks are its tabs.
+                if (left) {
+                    tabifyDockWidget(left, dock.dock);
+                    left->raise();
+                } else {
+                    left = dock.dock;
+                }
                 break;
             }
             // A tree scrolls by itself and needs the dock's whole height.

@@ -28,6 +28,7 @@ class ProgressStrip;
 class ProjectWorkflow;
 class RecentFiles;
 class RemeshWorkflow;
+class StepsWorkflow;
 class StudyWorkflow;
 class TetmeshWorkflow;
 class ViewWorkflow;
@@ -66,6 +67,7 @@ public:
     ProjectWorkflow *projectWorkflow() const { return m_project; }
     ViewWorkflow *viewWorkflow() const { return m_view; }
     ModelTreeWorkflow *modelTreeWorkflow() const { return m_tree; }
+    StepsWorkflow *stepsWorkflow() const { return m_steps; }
     RecentFiles *recentFiles() const { return m_recent; }
 
     // Bumped when the docks change so that an older saved layout is not applied.
@@ -116,6 +118,7 @@ private:
     ProjectWorkflow *m_project = nullptr;
     ViewWorkflow *m_view = nullptr;
     ModelTreeWorkflow *m_tree = nullptr;
+    StepsWorkflow *m_steps = nullptr;
     RecentFiles *m_recent = nullptr;
 
     QAction *m_quit = nullptr;

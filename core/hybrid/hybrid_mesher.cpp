@@ -330,8 +330,9 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     remeshParams.smoothingPasses = 0;
     remeshParams.refinementRounds = 0;
     Progress remeshPart = steps.step(2, "Surface remesh");
-    const RemeshResult remeshed = remeshWithSites(model, sites, remeshParams, remeshPart);
-    const Model &remesh = remeshed.model;
+    RemeshResult remeshed = remeshWithSites(model, sites, remeshParams, remeshPart);
+    result.surfaceRemesh = std::make_shared<const Model>(std::move(remeshed.model));
+    const Model &remesh = *result.surfaceRemesh;
     result.remeshSites = remeshed.siteCount;
     result.remeshValid = remeshed.validity.valid;
     result.remeshProblems = remeshed.validity.counts;

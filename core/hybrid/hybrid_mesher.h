@@ -22,6 +22,7 @@
 
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,9 @@ struct HybridResult {
     bool fellBackToTetgen = false;      // the last resort: no hybrid cell at all
     int remeshSites = 0;
     bool remeshValid = false;
+    // The surfaces the cells stand on (§5.2: one point per restricted-cell component), so that a
+    // TetGen mesh of the very same surfaces can be compared with the hybrid one.
+    std::shared_ptr<const Model> surfaceRemesh;
     std::map<std::string, std::size_t> remeshProblems; // check -> count, when not valid
     TetgenOutcome tetgenOutcome = TetgenOutcome::Aborted;
     std::string message;                // why the mesh is empty or not valid

@@ -4,6 +4,7 @@
 // of intersecting facets; a bad output extension is a usage error that writes nothing.
 #include "cli_runner.h"
 #include "io/mesh_reader.h"
+#include "io/model_reader.h"
 #include "support/test_data.h"
 
 #include <QFile>
@@ -85,6 +86,31 @@ private slots:
             for (const Cell &c : m.cells)
                 QVERIFY(signedVolume(m, c) > 0.0);
         }
+    }
+
+    // The surfaces the cells stand on, written for a TetGen mesh of the very same surfaces.
+    void surfaceRemeshIsWhatTheCellsStandOn()
+    {
+        STRATAMESH_REQUIRE_DATA(path, "modelA1.ml");
+        QTemporaryDir dir;
+        const QString out = dir.filePath("a1.vtu"), surfaces = dir.filePath("a1_surfaces.ml");
+        const CliRun run = runCli(
+            {"hybrid", path, "--sites", "300", "-o", out, "--surface-remesh", surfaces}, 600000);
+        QVERIFY2(run.finished && run.exitCode == 0, qPrintable(run.err));
+        const VolumeMesh mesh = readVolumeMesh(out.toStdString());
+        const Model remesh = readModel(surfaces.toStdString());
+        std::size_t triangles = 0;
+        for (const Surface &s : remesh.surfaces)
+            triangles += s.triangles.size();
+        QVERIFY(triangles > 100);
+        QCOMPARE(triangles, mesh.triangles.size());
+        // A bad extension is refused before the run and leaves nothing.
+        const QString bad = dir.filePath("s.txt"), out2 = dir.filePath("b.vtu");
+        const CliRun refused =
+            runCli({"hybrid", path, "--sites", "300", "-o", out2, "--surface-remesh", bad});
+        QVERIFY(refused.finished && refused.exitCode != 0);
+        QVERIFY2(refused.err.contains("--surface-remesh"), qPrintable(refused.err));
+        QVERIFY(!QFile::exists(out2) && !QFile::exists(bad));
     }
 
     void badOutputIsAUsageError()
