@@ -20,6 +20,7 @@
 #include "workbench.h"
 
 #include <QApplication>
+#include <QDialog>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
@@ -29,6 +30,7 @@
 #include <QSurfaceFormat>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -331,11 +333,29 @@ private slots:
         QVERIFY(!panel->inputButton()->isEnabled());
         QCOMPARE(project->comparedRun(), -1);
 
+        // Compare… through its dialog: the run before the one shown goes to the input view.
+        QString dialogShot;
+        QTimer::singleShot(300, window.get(), [&dialogShot] {
+            auto *dialog = qobject_cast<QDialog *>(QApplication::activeModalWidget());
+            if (!dialog)
+                return;
+            dialogShot = QStringLiteral(STRATAMESH_SCREENSHOT_DIR) + "/project_compare_dialog.png";
+            QDir().mkpath(QStringLiteral(STRATAMESH_SCREENSHOT_DIR));
+            dialog->grab().save(dialogShot);
+            dialog->accept();
+        });
+        panel->compareButton()->click();
+        QVERIFY(!dialogShot.isEmpty());
+        QCOMPARE(project->comparedRun(), 0);
+        QCOMPARE(project->shownRun(), 1);
+        undo->undo();
+        QCOMPARE(project->comparedRun(), -1);
+
         QVERIFY(!project->compareRuns(1, 1));
         QVERIFY(!project->compareRuns(0, 2));
-        const int before = undo->count();
+        const int before = undo->index();
         QVERIFY(project->compareRuns(0, 1));
-        QCOMPARE(undo->count(), before + 1);
+        QCOMPARE(undo->index(), before + 1);
         QCOMPARE(project->comparedRun(), 0);
         QCOMPARE(project->shownRun(), 1);
         QCOMPARE(window->scene()->model(), runA);
