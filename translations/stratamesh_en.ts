@@ -25,6 +25,13 @@
     </message>
 </context>
 <context>
+    <name>DisabledReason</name>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>GuiOptions</name>
     <message>
         <source>StrataMesh: remeshing and meshing of 3D structural models.</source>
@@ -2039,6 +2046,53 @@ Click to show it in the views</source>
         <source>Saved %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Compare Runs %1 and %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show Input vs Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comparing run %1 with run %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run %1: %2 sites, %3 triangles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no model open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::RecentFiles</name>
+    <message>
+        <source>&amp;%1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>File not found: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forget the files opened before</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RemeshController</name>
@@ -2216,6 +2270,18 @@ Click to show it in the views</source>
         <source>Could not export the review</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>no model open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no remeshed model yet</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ReviewPanel</name>
@@ -2339,6 +2405,38 @@ Click to show it in the views</source>
     </message>
     <message>
         <source>%1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show one run in the input view and another in the output view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input vs Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the input model again beside the run shown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare Runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input view:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output view:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -25,6 +25,13 @@
     </message>
 </context>
 <context>
+    <name>DisabledReason</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+</context>
+<context>
     <name>GuiOptions</name>
     <message>
         <source>StrataMesh: remeshing and meshing of 3D structural models.</source>
@@ -2042,6 +2049,53 @@ Cliquer pour le montrer dans les vues</translation>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
+    <message>
+        <source>Compare Runs %1 and %2</source>
+        <translation>Comparer les remaillages %1 et %2</translation>
+    </message>
+    <message>
+        <source>Show Input vs Output</source>
+        <translation>Afficher l&apos;entrée et la sortie</translation>
+    </message>
+    <message>
+        <source>Comparing run %1 with run %2</source>
+        <translation>Comparaison du remaillage %1 avec le remaillage %2</translation>
+    </message>
+    <message>
+        <source>Run %1: %2 sites, %3 triangles</source>
+        <translation>Remaillage %1 : %2 sites, %3 triangles</translation>
+    </message>
+    <message>
+        <source>no model open</source>
+        <translation>aucun modèle ouvert</translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation>une autre étape est en cours</translation>
+    </message>
+</context>
+<context>
+    <name>stratamesh::RecentFiles</name>
+    <message>
+        <source>&amp;%1 %2</source>
+        <translation>&amp;%1 %2</translation>
+    </message>
+    <message>
+        <source>File not found: %1</source>
+        <translation>Fichier introuvable : %1</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Ouvrir un fichier &amp;récent</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation>&amp;Effacer le menu</translation>
+    </message>
+    <message>
+        <source>Forget the files opened before</source>
+        <translation>Oublier les fichiers ouverts auparavant</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RemeshController</name>
@@ -2219,6 +2273,18 @@ Cliquer pour le montrer dans les vues</translation>
         <source>Could not export the review</source>
         <translation>Impossible d’exporter le contrôle</translation>
     </message>
+    <message>
+        <source>no model open</source>
+        <translation>aucun modèle ouvert</translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation>une autre étape est en cours</translation>
+    </message>
+    <message>
+        <source>no remeshed model yet</source>
+        <translation>pas encore de modèle remaillé</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ReviewPanel</name>
@@ -2343,6 +2409,38 @@ Cliquer pour le montrer dans les vues</translation>
     <message>
         <source>%1 of %2</source>
         <translation>%1 sur %2</translation>
+    </message>
+    <message>
+        <source>Compare…</source>
+        <translation>Comparer…</translation>
+    </message>
+    <message>
+        <source>Show one run in the input view and another in the output view</source>
+        <translation>Afficher un remaillage dans la vue d&apos;entrée et un autre dans la vue de sortie</translation>
+    </message>
+    <message>
+        <source>Input vs Output</source>
+        <translation>Entrée et sortie</translation>
+    </message>
+    <message>
+        <source>Show the input model again beside the run shown</source>
+        <translation>Afficher de nouveau le modèle d&apos;entrée à côté du remaillage affiché</translation>
+    </message>
+    <message>
+        <source>Compare Runs</source>
+        <translation>Comparer des remaillages</translation>
+    </message>
+    <message>
+        <source>Input view:</source>
+        <translation>Vue d&apos;entrée :</translation>
+    </message>
+    <message>
+        <source>Output view:</source>
+        <translation>Vue de sortie :</translation>
+    </message>
+    <message>
+        <source>Run %1: %2</source>
+        <translation>Remaillage %1 : %2</translation>
     </message>
 </context>
 <context>

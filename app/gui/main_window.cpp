@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "about_dialog.h"
+#include "app_settings.h"
 #include "complexity_workflow.h"
 #include "export_workflow.h"
 #include "hybrid_workflow.h"
@@ -11,6 +12,7 @@
 #include "progress_strip.h"
 #include "project_file.h"
 #include "project_workflow.h"
+#include "recent_files.h"
 #include "remesh_workflow.h"
 #include "steps_workflow.h"
 #include "study_workflow.h"
@@ -30,6 +32,7 @@
 #include <QMenuBar>
 #include <QMimeData>
 #include <QScrollArea>
+#include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
@@ -68,6 +71,15 @@ MainWindow::MainWindow(QWidget *parent)
     m_steps = add(new StepsWorkflow(*m_bench, *m_open, *m_complexity, *m_remesh, *m_tetmesh,
                                     *m_hybrid, *exporter, this));
     connect(m_open, &OpenWorkflow::opened, this, &MainWindow::showModel);
+    m_recent = new RecentFiles(this);
+    connect(m_recent, &RecentFiles::openRequested, this, &MainWindow::openFile);
+    // A project opens its input model first: the project then comes above it.
+    connect(m_open, &OpenWorkflow::opened, m_recent,
+            [this](const LoadedModel &loaded) { m_recent->add(loaded.path); });
+    connect(m_project, &ProjectWorkflow::projectOpened, m_recent, [this](bool ok) {
+        if (ok)
+            m_recent->add(m_project->projectPath());
+    });
     // The input view halves beside the output: the heat map's colour bar would be cut there,
     // and the cells were measured on the input only. The Complexity dock shows them again.
     connect(m_remesh, &RemeshWorkflow::outputReplaced, m_complexity,
@@ -78,6 +90,8 @@ MainWindow::MainWindow(QWidget *parent)
     placeDocks();
     retranslate();
     resize(1280, 800);
+    m_recent->refresh();
+    restoreLayout();
 }
 
 // Running jobs stop, and the workflows' drawings and then the scenes leave the renderers, before
@@ -168,6 +182,11 @@ void MainWindow::createMenus()
     };
     m_fileMenu = menuBar()->addMenu(QString());
     fill(m_fileMenu, Workflow::Menu::File);
+    // Open Recent below the Open actions.
+    const QList<QAction *> fileActions = m_fileMenu->actions();
+    const qsizetype sample = fileActions.indexOf(m_open->openSampleAction());
+    m_fileMenu->insertMenu(sample + 1 < fileActions.size() ? fileActions[sample + 1] : nullptr,
+                           m_recent->menu());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quit);
 
@@ -193,6 +212,9 @@ void MainWindow::createMenus()
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_about);
     m_helpMenu->addAction(m_aboutQt);
+    // A disabled entry's tooltip says why (disabled_reason.h).
+    for (QMenu *menu : {m_fileMenu, m_editMenu, m_viewMenu, m_meshMenu, m_analyseMenu})
+        menu->setToolTipsVisible(true);
 
     m_toolBar = addToolBar(QString());
     m_toolBar->setObjectName(QStringLiteral("MainToolBar"));
@@ -283,6 +305,7 @@ void MainWindow::retranslate()
     m_resetCamera->setStatusTip(tr("Look at the whole model from the south-west"));
     m_about->setText(tr("&About StrataMesh"));
     m_aboutQt->setText(tr("About &Qt"));
+    m_recent->retranslate();
     for (Workflow *workflow : std::as_const(m_workflows))
         workflow->retranslate();
     m_toolBar->setWindowTitle(tr("Main Toolbar"));
@@ -312,9 +335,10 @@ void MainWindow::openFile(const QString &path)
 // Unsaved results (a project's runs and reviews, a remeshed model) are offered for saving.
 void MainWindow::closeEvent(QCloseEvent *event)
 {
-    if (m_bench->mayDiscardWork())
+    if (m_bench->mayDiscardWork()) {
+        saveLayout();
         event->accept();
-    else
+    } else
         event->ignore();
 }
 
@@ -383,6 +407,32 @@ void MainWindow::updateBusy()
     else
         m_strip->release();
     setAcceptDrops(!running);
+    m_recent->setEnabled(!running);
+}
+
+void MainWindow::saveLayout() const
+{
+    const std::unique_ptr<QSettings> settings = openSettings();
+    settings->setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings->setValue(QStringLiteral("window/state"), saveState(kStateVersion));
+}
+
+// The docks come back where the user left them, but hidden until a workflow has something to show
+// in them (as at any start): a Review dock open on nothing would only take room.
+bool MainWindow::restoreLayout()
+{
+    const std::unique_ptr<QSettings> settings = openSettings();
+    const QByteArray geometry = settings->value(QStringLiteral("window/geometry")).toByteArray();
+    const QByteArray state = settings->value(QStringLiteral("window/state")).toByteArray();
+    if (!geometry.isEmpty())
+        restoreGeometry(geometry);
+    if (state.isEmpty() || !restoreState(state, kStateVersion))
+        return false;
+    for (const Workflow *workflow : std::as_const(m_workflows))
+        for (const Workflow::Dock &dock : workflow->docks())
+            if (dock.place != Workflow::DockPlace::Left)
+                dock.dock->hide();
+    return true;
 }
 
 QStringList MainWindow::offeredActions() const

@@ -26,6 +26,7 @@ class ModelTreeWorkflow;
 class OpenWorkflow;
 class ProgressStrip;
 class ProjectWorkflow;
+class RecentFiles;
 class RemeshWorkflow;
 class StepsWorkflow;
 class StudyWorkflow;
@@ -67,6 +68,14 @@ public:
     ViewWorkflow *viewWorkflow() const { return m_view; }
     ModelTreeWorkflow *modelTreeWorkflow() const { return m_tree; }
     StepsWorkflow *stepsWorkflow() const { return m_steps; }
+    RecentFiles *recentFiles() const { return m_recent; }
+
+    // Bumped when the docks change so that an older saved layout is not applied.
+    static constexpr int kStateVersion = 1;
+    // The window's size and docks as the settings keep them (app_settings.h); the constructor
+    // restores them, closing the window saves them.
+    void saveLayout() const;
+    bool restoreLayout();
 
 public slots:
     // A model, or a project (.smproj).
@@ -110,6 +119,7 @@ private:
     ViewWorkflow *m_view = nullptr;
     ModelTreeWorkflow *m_tree = nullptr;
     StepsWorkflow *m_steps = nullptr;
+    RecentFiles *m_recent = nullptr;
 
     QAction *m_quit = nullptr;
     QAction *m_showBox = nullptr;

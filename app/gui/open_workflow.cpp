@@ -1,5 +1,6 @@
 #include "open_workflow.h"
 
+#include "app_settings.h"
 #include "error_message.h"
 #include "message_panel.h"
 #include "open_model_controller.h"
@@ -78,13 +79,13 @@ void OpenWorkflow::openSample()
 
 void OpenWorkflow::chooseFile()
 {
-    QSettings settings;
-    const QString dir = settings.value(QStringLiteral("lastDirectory")).toString();
+    const std::unique_ptr<QSettings> settings = openSettings();
+    const QString dir = settings->value(QStringLiteral("lastDirectory")).toString();
     const QString path = QFileDialog::getOpenFileName(m_bench.window(), tr("Open Model"), dir,
                                                       OpenModelController::fileFilter());
     if (path.isEmpty())
         return;
-    settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
+    settings->setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
     openFile(path);
 }
 

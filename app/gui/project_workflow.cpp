@@ -1,6 +1,9 @@
 #include "project_workflow.h"
 
+#include "app_settings.h"
+#include "disabled_reason.h"
 #include "error_message.h"
+#include "model_scene.h"
 #include "open_model_controller.h"
 #include "open_workflow.h"
 #include "project_file.h"
@@ -9,6 +12,7 @@
 #include "remesh_workflow.h"
 #include "restored_outcome.h"
 #include "runs_panel.h"
+#include "view_pair.h"
 #include "vtk_view_widget.h"
 #include "workbench.h"
 
@@ -33,20 +37,26 @@ namespace stratamesh {
 
 namespace {
 
-// Edit > Undo after choosing a run shows the run shown before.
+// What the two views show: a run, or the input model (-1), in the input view; a run in the output.
+struct ViewRuns {
+    int input;
+    int output;
+};
+
+// Edit > Undo after choosing a run, or two runs to compare, shows what was shown before.
 class ShowRunCommand : public QUndoCommand {
 public:
-    ShowRunCommand(ProjectWorkflow &workflow, int from, int to, const QString &text)
+    ShowRunCommand(ProjectWorkflow &workflow, ViewRuns from, ViewRuns to, const QString &text)
         : QUndoCommand(text), m_workflow(workflow), m_from(from), m_to(to)
     {
     }
-    void redo() override { m_workflow.showRun(m_to); }
-    void undo() override { m_workflow.showRun(m_from); }
+    void redo() override { m_workflow.showRuns(m_to.input, m_to.output); }
+    void undo() override { m_workflow.showRuns(m_from.input, m_from.output); }
 
 private:
     ProjectWorkflow &m_workflow;
-    int m_from;
-    int m_to;
+    ViewRuns m_from;
+    ViewRuns m_to;
 };
 
 QString describeParams(const RemeshParams &p)
@@ -135,7 +145,14 @@ ProjectWorkflow::ProjectWorkflow(Workbench &bench, OpenWorkflow &open, RemeshWor
     connect(m_open, &QAction::triggered, this, &ProjectWorkflow::chooseProject);
     connect(m_save, &QAction::triggered, this, &ProjectWorkflow::save);
     connect(m_saveAs, &QAction::triggered, this, &ProjectWorkflow::saveAs);
+    for (QAction *action : {m_save, m_saveAs})
+        setDisabledReason(action, [this] {
+            return !m_bench.model() ? tr("no model open") : tr("another step is running");
+        });
+    setDisabledReason(m_open, [] { return tr("another step is running"); });
     connect(m_panel, &RunsPanel::runChosen, this, &ProjectWorkflow::chooseRun);
+    connect(m_panel, &RunsPanel::compareChosen, this, &ProjectWorkflow::compareRuns);
+    connect(m_panel, &RunsPanel::inputChosen, this, &ProjectWorkflow::chooseInput);
     connect(&remesh, &RemeshWorkflow::runAdded, this, &ProjectWorkflow::onRunAdded);
     connect(&remesh, &RemeshWorkflow::decisionsChanged, this, &ProjectWorkflow::onDecisionsChanged);
     // Workflow::finished comes once the window shows the model (MainWindow::showModel has run).
@@ -173,12 +190,14 @@ void ProjectWorkflow::retranslate()
     m_dock->toggleViewAction()->setText(tr("R&uns"));
     m_panel->retranslate();
     updatePanel();
+    updateViewTitles(); // after RemeshWorkflow's, which name the input model
 }
 
 void ProjectWorkflow::clear()
 {
     m_runs.clear();
     m_shown = -1;
+    m_compared = -1; // the Workbench puts the next model in the input view
     m_path.clear();
     setModified(false);
     updatePanel();
@@ -217,6 +236,7 @@ void ProjectWorkflow::onRunAdded(const RemeshOutcome &outcome)
         id = std::max(id, run.id + 1);
     m_runs.push_back({outcome, {}, {}, {}, id, runFolderName(id)});
     m_shown = int(m_runs.size()) - 1;
+    setInputRun(-1); // a new run is seen against the input it was made from
     setModified(true);
     updatePanel();
     m_dock->show();
@@ -234,14 +254,88 @@ void ProjectWorkflow::onDecisionsChanged()
     updatePanel();
 }
 
+// A row chosen in the table goes to the output view, beside the input model.
 void ProjectWorkflow::chooseRun(int index)
 {
-    if (index < 0 || index >= int(m_runs.size()) || index == m_shown || m_bench.isBusy()) {
+    if (index < 0 || index >= int(m_runs.size()) || (index == m_shown && m_compared < 0)
+        || m_bench.isBusy()) {
         updatePanel(); // the selection goes back to the run shown
         return;
     }
-    m_bench.undoStack()->push(new ShowRunCommand(
-        *this, m_shown, index, tr("Show Run %1").arg(m_runs[std::size_t(index)].id)));
+    m_bench.undoStack()->push(
+        new ShowRunCommand(*this, {m_compared, m_shown}, {-1, index},
+                           tr("Show Run %1").arg(m_runs[std::size_t(index)].id)));
+}
+
+bool ProjectWorkflow::compareRuns(int first, int second)
+{
+    const int count = int(m_runs.size());
+    if (first < 0 || first >= count || second < 0 || second >= count || first == second
+        || m_bench.isBusy())
+        return false;
+    if (first == m_compared && second == m_shown)
+        return true;
+    m_bench.undoStack()->push(new ShowRunCommand(*this, {m_compared, m_shown}, {first, second},
+                                                 tr("Compare Runs %1 and %2")
+                                                     .arg(m_runs[std::size_t(first)].id)
+                                                     .arg(m_runs[std::size_t(second)].id)));
+    return true;
+}
+
+void ProjectWorkflow::chooseInput()
+{
+    if (m_compared < 0 || m_bench.isBusy())
+        return;
+    m_bench.undoStack()->push(new ShowRunCommand(*this, {m_compared, m_shown}, {-1, m_shown},
+                                                 tr("Show Input vs Output")));
+}
+
+void ProjectWorkflow::showRuns(int input, int output)
+{
+    if (output != m_shown)
+        showRun(output);
+    setInputRun(input);
+    updateViewTitles(); // showRun named the input model
+    updatePanel();
+    if (input >= 0)
+        m_bench.setStatus(tr("Comparing run %1 with run %2")
+                              .arg(m_runs[std::size_t(input)].id)
+                              .arg(m_runs[std::size_t(output)].id));
+}
+
+// The Workbench's model stays the input: remeshing, the model's tree and saving still work on it;
+// only what the input view draws changes.
+void ProjectWorkflow::setInputRun(int index)
+{
+    if (index >= int(m_runs.size()))
+        index = -1;
+    if (index == m_compared)
+        return;
+    m_compared = index;
+    ModelScene *scene = m_bench.inputScene();
+    scene->setModel(index < 0 ? m_bench.model() : m_runs[std::size_t(index)].outcome.output);
+    m_bench.hidePosition();
+    m_bench.updateLegend();
+    updateViewTitles();
+    m_bench.render();
+}
+
+// While comparing, each view names its run; else RemeshWorkflow's titles (Input: …, Output: …).
+void ProjectWorkflow::updateViewTitles()
+{
+    if (m_compared < 0 || m_shown < 0) {
+        m_remesh.updateViewTitles();
+        return;
+    }
+    const QLocale locale;
+    const auto title = [&](int index) {
+        const Run &run = m_runs[std::size_t(index)];
+        return tr("Run %1: %2 sites, %3 triangles")
+            .arg(run.id)
+            .arg(locale.toString(run.outcome.siteCount),
+                 locale.toString(qulonglong(run.outcome.output->triangleCount())));
+    };
+    m_bench.views()->setTitles(title(m_compared), title(m_shown));
 }
 
 void ProjectWorkflow::showRun(int index)
@@ -276,7 +370,7 @@ void ProjectWorkflow::updatePanel()
         row.records = o.ledger ? int(o.ledger->size()) : 0;
         rows.push_back(row);
     }
-    m_panel->setRuns(rows, m_shown);
+    m_panel->setRuns(rows, m_shown, m_compared);
 }
 
 void ProjectWorkflow::fail(const Message &message, const QString &status)
@@ -288,13 +382,13 @@ void ProjectWorkflow::fail(const Message &message, const QString &status)
 
 void ProjectWorkflow::chooseProject()
 {
-    QSettings settings;
-    const QString dir = settings.value(QStringLiteral("lastDirectory")).toString();
+    const std::unique_ptr<QSettings> settings = openSettings();
+    const QString dir = settings->value(QStringLiteral("lastDirectory")).toString();
     const QString path = QFileDialog::getOpenFileName(m_bench.window(), tr("Open Project"), dir,
                                                       tr("StrataMesh projects (*.smproj)"));
     if (path.isEmpty())
         return;
-    settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
+    settings->setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
     openProject(path);
 }
 
@@ -444,9 +538,9 @@ bool ProjectWorkflow::saveAs()
 {
     if (!m_bench.model())
         return false;
-    QSettings settings;
+    const std::unique_ptr<QSettings> settings = openSettings();
     const QString dir = m_path.isEmpty()
-                            ? settings.value(QStringLiteral("lastDirectory")).toString()
+                            ? settings->value(QStringLiteral("lastDirectory")).toString()
                             : QFileInfo(m_path).absolutePath();
     QString path = QFileDialog::getSaveFileName(m_bench.window(), tr("Save Project"), dir,
                                                 tr("StrataMesh projects (*.smproj)"));
@@ -454,7 +548,7 @@ bool ProjectWorkflow::saveAs()
         return false;
     if (!isProjectFile(path))
         path += QStringLiteral(".smproj");
-    settings.setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
+    settings->setValue(QStringLiteral("lastDirectory"), QFileInfo(path).absolutePath());
     return saveProject(path);
 }
 

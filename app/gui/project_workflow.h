@@ -1,7 +1,8 @@
 // File > Open Project…, Save Project, Save Project As…, and the Runs dock: every remesh run of the
 // session is kept with its review; choosing a run shows it in the output view (an undoable
-// command); a project file (.smproj, app/project) keeps the runs, their results and reviews, and
-// the run shown. Reopening reads the results back from the run folders: no remeshing.
+// command), and Compare… shows two runs side by side, the first in the input view; a project file
+// (.smproj, app/project) keeps the runs, their results and reviews, and the run shown. Reopening
+// reads the results back from the run folders: no remeshing.
 #pragma once
 
 #include "remesh_outcome.h"
@@ -37,6 +38,8 @@ public:
     };
     const std::vector<Run> &runs() const { return m_runs; }
     int shownRun() const { return m_shown; }
+    // The run in the input view while two runs are compared; -1 when it shows the input model.
+    int comparedRun() const { return m_compared; }
     // Empty until the runs were saved as or opened from a project.
     const QString &projectPath() const { return m_path; }
     bool isModified() const { return m_modified; }
@@ -74,6 +77,13 @@ public slots:
     void chooseRun(int index);
     // Shows run `index` in the output view with its review (the command's redo and undo).
     void showRun(int index);
+    // Run `first` in the input view and `second` in the output view, through an undoable command;
+    // false when they are the same run or not both there.
+    bool compareRuns(int first, int second);
+    // The input model back in the input view (undoable), the run shown kept in the output.
+    void chooseInput();
+    // `input` -1: the input model; the commands' redo and undo.
+    void showRuns(int input, int output);
 
 signals:
     void projectOpened(bool ok);
@@ -86,12 +96,15 @@ private:
     void install(Pending &pending);
     void setModified(bool modified);
     void updatePanel();
+    void setInputRun(int index);
+    void updateViewTitles();
     void fail(const Message &message, const QString &status);
 
     OpenWorkflow &m_openWorkflow;
     RemeshWorkflow &m_remesh;
     std::vector<Run> m_runs;
     int m_shown = -1;
+    int m_compared = -1;
     QString m_path;
     bool m_modified = false;
     bool m_applying = false; // showing a run: its decisions are not a change

@@ -1,6 +1,7 @@
 #include "remesh_workflow.h"
 
 #include "comparison_table.h"
+#include "disabled_reason.h"
 #include "error_message.h"
 #include "ledger_panel.h"
 #include "model_scene.h"
@@ -60,6 +61,13 @@ RemeshWorkflow::RemeshWorkflow(Workbench &bench, QObject *parent)
     m_exportReview->setIcon(style->standardIcon(QStyle::SP_DialogSaveButton));
     m_exportReview->setEnabled(false);
     connect(m_exportReview, &QAction::triggered, this, &RemeshWorkflow::chooseReviewFile);
+    setDisabledReason(m_remesh, [this] {
+        return !m_bench.model() ? tr("no model open") : tr("another step is running");
+    });
+    setDisabledReason(m_save, [this] {
+        return !m_outcome ? tr("no remeshed model yet") : tr("another step is running");
+    });
+    setDisabledReason(m_exportReview, [] { return tr("no remeshed model yet"); });
 
     m_ledgerDock->setObjectName(QStringLiteral("ReviewDock"));
     m_ledgerDock->setWidget(m_review);

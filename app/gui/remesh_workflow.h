@@ -41,6 +41,8 @@ public:
     // Shows a run made earlier (a project's, or another of this session's) in place of the shown
     // one, with its review: no engine run, no message.
     void show(const RemeshOutcome &outcome, const ReviewDecisions &decisions);
+    // "Input: <model>" and "Output: <sites>, <triangles>" over the views.
+    void updateViewTitles();
     QAction *remeshAction() const { return m_remesh; }
     QAction *saveAction() const { return m_save; }
     QAction *exportReviewAction() const { return m_exportReview; }
@@ -91,7 +93,6 @@ private:
     void onRemeshed(const RemeshOutcome &outcome);
     void onFailed(const Message &error);
     void onCancelled();
-    void updateViewTitles();
 
     RemeshController *m_controller;
     std::optional<RemeshOutcome> m_outcome;

@@ -266,7 +266,8 @@ void ViewWorkflow::chooseReverse(bool reverse)
 void ViewWorkflow::applyColourChoice(const ColourChoice &choice)
 {
     m_choice = choice;
-    const std::shared_ptr<const Model> input = m_bench.model();
+    // What the input view shows: a run when two runs are compared.
+    const std::shared_ptr<const Model> input = m_bench.inputScene()->model();
     const std::shared_ptr<const Model> out = output();
     if (m_choice.colouring == Colouring::Distance && !out)
         m_choice.colouring = Colouring::Entity; // nothing to measure against

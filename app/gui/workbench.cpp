@@ -59,7 +59,7 @@ VtkViewWidget *Workbench::outputView() const
 
 const std::shared_ptr<const Model> &Workbench::model() const
 {
-    return m_inputScene->model();
+    return m_model;
 }
 
 void Workbench::setModel(const LoadedModel &loaded)
@@ -71,6 +71,7 @@ void Workbench::setModel(const LoadedModel &loaded)
     m_undo->clear();
     m_inputMarker->hide();
     m_outputMarker->hide();
+    m_model = loaded.model;
     m_inputScene->setModel(loaded.model);
     updateLegend();
     resetCamera();

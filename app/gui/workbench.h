@@ -52,7 +52,8 @@ public:
     // View > Show Box (checkable): the window's menu and tool bar and the Model dock share it.
     QAction *showBoxAction() const { return m_showBox; }
 
-    // The open model (nullptr before the first); its file is never overwritten by a save.
+    // The open model (nullptr before the first); its file is never overwritten by a save. The input
+    // scene shows it, but while two runs are compared (ProjectWorkflow) it shows the first run.
     const std::shared_ptr<const Model> &model() const;
     const QString &displayName() const { return m_displayName; }
     const QString &modelPath() const { return m_modelPath; }
@@ -102,6 +103,7 @@ private:
     QUndoStack *m_undo;
     QAction *m_showBox;
     FeatureLegend *m_legend;
+    std::shared_ptr<const Model> m_model;
     std::unique_ptr<ModelScene> m_inputScene;
     std::unique_ptr<ModelScene> m_outputScene;
     std::unique_ptr<PositionMarker> m_inputMarker;

@@ -20,13 +20,17 @@
 #include "workbench.h"
 
 #include <QApplication>
+#include <QDialog>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
+#include <QLabel>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -299,6 +303,120 @@ private slots:
         QVERIFY(reopened->isWindowModified());
         reopened->workbench()->undoStack()->undo();
         QCOMPARE(again->shownRun(), 1);
+        QCOMPARE(asked, 0);
+    }
+
+    // Compare…: run 1 (150 sites) in the input view, run 2 (300 sites) in the output view, each
+    // view titled with its run; the input model stays the one remeshed; undo, Input vs Output.
+    void twoRunsSideBySide()
+    {
+        int asked = 0;
+        auto window = newWindow(&asked);
+        QVERIFY(QTest::qWaitForWindowExposed(window.get()));
+        QSignalSpy opened(window->openWorkflow(), &OpenWorkflow::finished);
+        window->openFile(m_input);
+        QVERIFY(opened.wait(kTimeoutMs));
+        QVERIFY(waitForRemesh(*window, 150));
+        QVERIFY(waitForRemesh(*window, 300));
+        ProjectWorkflow *project = window->projectWorkflow();
+        QUndoStack *undo = window->workbench()->undoStack();
+        const auto input = window->workbench()->model();
+        const auto runA = project->runs()[0].outcome.output;
+        const auto runB = project->runs()[1].outcome.output;
+        QVERIFY(runA->triangleCount() != runB->triangleCount());
+        QVERIFY(runA->triangleCount() != input->triangleCount());
+        auto *inputTitle = window->findChild<QLabel *>(QStringLiteral("InputViewTitle"));
+        auto *outputTitle = window->findChild<QLabel *>(QStringLiteral("OutputViewTitle"));
+        QVERIFY(inputTitle && outputTitle);
+        RunsPanel *panel = project->runsPanel();
+        QVERIFY(panel->compareButton()->isEnabled());
+        QVERIFY(!panel->inputButton()->isEnabled());
+        QCOMPARE(project->comparedRun(), -1);
+
+        // Compare… through its dialog: the run before the one shown goes to the input view.
+        QString dialogShot;
+        QTimer::singleShot(300, window.get(), [&dialogShot] {
+            auto *dialog = qobject_cast<QDialog *>(QApplication::activeModalWidget());
+            if (!dialog)
+                return;
+            dialogShot = QStringLiteral(STRATAMESH_SCREENSHOT_DIR) + "/project_compare_dialog.png";
+            QDir().mkpath(QStringLiteral(STRATAMESH_SCREENSHOT_DIR));
+            dialog->grab().save(dialogShot);
+            dialog->accept();
+        });
+        panel->compareButton()->click();
+        QVERIFY(!dialogShot.isEmpty());
+        QCOMPARE(project->comparedRun(), 0);
+        QCOMPARE(project->shownRun(), 1);
+        undo->undo();
+        QCOMPARE(project->comparedRun(), -1);
+
+        QVERIFY(!project->compareRuns(1, 1));
+        QVERIFY(!project->compareRuns(0, 2));
+        const int before = undo->index();
+        QVERIFY(project->compareRuns(0, 1));
+        QCOMPARE(undo->index(), before + 1);
+        QCOMPARE(project->comparedRun(), 0);
+        QCOMPARE(project->shownRun(), 1);
+        QCOMPARE(window->scene()->model(), runA);
+        QCOMPARE(window->scene()->model()->triangleCount(), runA->triangleCount());
+        QCOMPARE(window->outputScene()->model(), runB);
+        QCOMPARE(window->workbench()->model(), input); // what Remesh… works on
+        const QString trianglesA = QString::number(runA->triangleCount());
+        const QString trianglesB = QString::number(runB->triangleCount());
+        QVERIFY2(inputTitle->text().startsWith(QStringLiteral("Run 1: "))
+                     && inputTitle->text().contains(trianglesA),
+                 qPrintable(inputTitle->text()));
+        QVERIFY2(outputTitle->text().startsWith(QStringLiteral("Run 2: "))
+                     && outputTitle->text().contains(trianglesB),
+                 qPrintable(outputTitle->text()));
+        QVERIFY(panel->inputButton()->isEnabled());
+        QVERIFY(panel->table()->item(0, 0)->text().startsWith(QStringLiteral("◀")));
+        QVERIFY(panel->table()->item(1, 0)->text().startsWith(QStringLiteral("▶")));
+        const QString shots = QStringLiteral(STRATAMESH_SCREENSHOT_DIR);
+        QDir().mkpath(shots);
+        project->runsDock()->raise();
+        QTest::qWait(200);
+        QVERIFY(saveWindowScreenshot(window.get(), shots + "/project_compare.png"));
+
+        // Undo: Input vs Output again, the run shown kept.
+        undo->undo();
+        QCOMPARE(project->comparedRun(), -1);
+        QCOMPARE(project->shownRun(), 1);
+        QCOMPARE(window->scene()->model(), input);
+        QCOMPARE(window->scene()->model()->triangleCount(), input->triangleCount());
+        QCOMPARE(window->outputScene()->model(), runB);
+        QVERIFY2(inputTitle->text().startsWith(QStringLiteral("Input: ")),
+                 qPrintable(inputTitle->text()));
+        QVERIFY(!panel->inputButton()->isEnabled());
+        undo->redo();
+        QCOMPARE(window->scene()->model(), runA);
+        QVERIFY(inputTitle->text().startsWith(QStringLiteral("Run 1: ")));
+
+        // Reversed: run 2 on the left, run 1 on the right; then the button back to the input.
+        QVERIFY(project->compareRuns(1, 0));
+        QCOMPARE(window->scene()->model(), runB);
+        QCOMPARE(window->outputScene()->model(), runA);
+        QVERIFY(outputTitle->text().startsWith(QStringLiteral("Run 1: ")));
+        panel->inputButton()->click();
+        QCOMPARE(project->comparedRun(), -1);
+        QCOMPARE(window->scene()->model(), input);
+        QCOMPARE(window->outputScene()->model(), runA);
+        undo->undo();
+        QCOMPARE(window->scene()->model(), runB);
+
+        // A row chosen in the table: that run beside the input model.
+        project->chooseRun(1);
+        QCOMPARE(project->comparedRun(), -1);
+        QCOMPARE(project->shownRun(), 1);
+        QCOMPARE(window->scene()->model(), input);
+
+        // A new run is seen against the input, even when made while comparing.
+        QVERIFY(project->compareRuns(0, 1));
+        QVERIFY(waitForRemesh(*window, 200));
+        QCOMPARE(project->comparedRun(), -1);
+        QCOMPARE(project->shownRun(), 2);
+        QCOMPARE(window->scene()->model(), input);
         QCOMPARE(asked, 0);
     }
 
