@@ -12,7 +12,6 @@
 #if defined(__GNUC__) && !defined(__clang__) // clang has no such warning group
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
-#include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include <algorithm>
@@ -20,6 +19,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -32,12 +32,23 @@ struct DoubleTraits : public OpenMesh::DefaultTraits {
 };
 using ReaderMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 
-// What the file itself says, read alongside OpenMesh: its OBJ/OFF readers parse coordinates as
-// float (1 600 649.31 comes back as 1 600 649.25) and skip unparsable vertex lines, shifting
-// every later index. The scan keeps the exact doubles and the counts to check OpenMesh against.
+// The file as read here, not by OpenMesh's OBJ/OFF readers: they parse coordinates as float
+// (1 600 649.31 comes back as 1 600 649.25), skip unparsable vertex lines, shifting every later
+// index, and read OFF as a stream of words, so a vertex line with extra words turns a coordinate
+// into a face size and a huge one into gigabytes of handles. OpenMesh only builds the surface
+// from these faces, to refuse the non-manifold ones.
 struct FileScan {
     std::vector<Vec3> points;
-    std::size_t triangles = 0; // a polygon of k corners gives k - 2 triangles
+    std::vector<int> corners;           // every face's vertex indices, from 0, one after another
+    std::vector<std::size_t> faceStart; // where each face's corners begin, then corners.size()
+    std::vector<int> faceLine;          // each face's line in the file
+    std::size_t triangles = 0;          // a polygon of k corners gives k - 2 triangles
+
+    void beginFace(int line)
+    {
+        faceStart.push_back(corners.size());
+        faceLine.push_back(line);
+    }
 };
 
 std::vector<std::string_view> splitWords(std::string_view line)
@@ -113,10 +124,15 @@ FileScan scanObj(std::istream &in, const std::string &path)
         } else if (w[0] == "f") {
             if (w.size() < 4)
                 throw FileError(path, line, "a face needs at least three vertices");
+            scan.beginFace(line);
             for (std::size_t k = 1; k < w.size(); ++k) {
                 const long long v = checkObjIndex(w[k], scan.points.size(), path, line);
                 if (v > largest.first)
                     largest = {v, line};
+                // An index past the vertices fails once they are all known, naming both.
+                scan.corners.push_back(v > std::numeric_limits<int>::max() ? -1
+                                       : v > 0                             ? int(v - 1)
+                                               : int(scan.points.size() + v));
             }
             scan.triangles += w.size() - 3;
         }
@@ -125,6 +141,7 @@ FileScan scanObj(std::istream &in, const std::string &path)
         throw FileError(path, largest.second,
                         "face uses vertex " + std::to_string(largest.first) + ", the file defines "
                             + std::to_string(scan.points.size()));
+    scan.faceStart.push_back(scan.corners.size());
     return scan;
 }
 
@@ -184,15 +201,18 @@ FileScan scanOff(std::istream &in, const std::string &path)
             throw FileError(path, line,
                             "a face of " + std::to_string(k) + " vertices lists "
                                 + std::to_string(w.size() - 1));
+        scan.beginFace(line);
         for (long long j = 1; j <= k; ++j) {
             long long v = 0;
             if (!parseInt(w[std::size_t(j)], v) || v < 0 || v >= nv)
                 throw FileError(path, line,
                                 "face vertex '" + std::string(w[std::size_t(j)])
                                     + "' is not an index from 0 to " + std::to_string(nv - 1));
+            scan.corners.push_back(int(v)); // v < nv, and nv vertices were read
         }
         scan.triangles += std::size_t(k - 2);
     }
+    scan.faceStart.push_back(scan.corners.size());
     return scan;
 }
 
@@ -214,55 +234,57 @@ Model readSurfaceMesh(const std::string &path)
     if (scan.triangles == 0)
         throw FileError(path, 0, "no triangle in the file");
 
+    // OpenMesh refuses a triangle that would make an edge carry three faces, or two faces run
+    // the same way along it; its file readers would cut the surface there instead.
     ReaderMesh mesh;
-    OpenMesh::IO::Options options;
-    if (!OpenMesh::IO::read_mesh(mesh, path, options))
-        throw FileError(path, 0, "OpenMesh could not read this file as a surface mesh");
-    // OpenMesh drops degenerate faces and duplicates vertices around non-manifold ones: either
-    // would change the surface silently.
-    if (mesh.n_vertices() != scan.points.size())
-        throw FileError(path, 0,
-                        "non-manifold faces: " + std::to_string(scan.points.size())
-                            + " vertices in the file, " + std::to_string(mesh.n_vertices())
-                            + " after reading");
-    if (mesh.n_faces() != scan.triangles)
-        throw FileError(
-            path, 0,
-            std::to_string(scan.triangles - std::min<std::size_t>(scan.triangles, mesh.n_faces()))
-                + " triangle(s) could not be added (degenerate or non-manifold faces)");
-
+    mesh.reserve(scan.points.size(), 3 * scan.triangles, scan.triangles);
+    for (const Vec3 &p : scan.points)
+        mesh.add_vertex(ReaderMesh::Point(p.x(), p.y(), p.z()));
+    std::vector<int> index(scan.points.size(), -1); // file vertex -> surface vertex
     Surface s;
     s.name = gocadFileStem(path);
     s.featureName = s.name;
     s.sourceObject = s.name;
-    // Only the vertices used by faces, in file order, so isolated points do not become surface
-    // vertices. OpenMesh numbers vertices in file order; the float values it read must agree.
-    std::vector<int> index(mesh.n_vertices(), -1);
-    for (const auto f : mesh.faces())
-        for (const auto v : mesh.fv_range(f))
-            index[v.idx()] = 0;
-    for (const auto v : mesh.vertices()) {
-        if (index[v.idx()] < 0)
+    s.triangles.reserve(scan.triangles);
+    const std::size_t faces = scan.faceLine.size();
+    std::vector<int> sorted;
+    for (std::size_t f = 0; f < faces; ++f) {
+        const int *c = scan.corners.data() + scan.faceStart[f];
+        const std::size_t k = scan.faceStart[f + 1] - scan.faceStart[f];
+        const int line = scan.faceLine[f];
+        sorted.assign(c, c + k); // sorted, as a face may list thousands of corners
+        std::sort(sorted.begin(), sorted.end());
+        if (const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+            twice != sorted.end())
+            throw FileError(path, line,
+                            "the face uses vertex " + std::to_string(*twice + 1)
+                                + " twice (a degenerate face)");
+        for (std::size_t i = 1; i + 1 < k; ++i) { // a fan, as OpenMesh's readers split polygons
+            const int t[3] = {c[0], c[i], c[i + 1]};
+            if (!mesh.add_face(OpenMesh::VertexHandle(t[0]), OpenMesh::VertexHandle(t[1]),
+                               OpenMesh::VertexHandle(t[2]))
+                     .is_valid())
+                throw FileError(path, line,
+                                "non-manifold faces: this face shares an edge with two other "
+                                "faces, or runs along it the same way as its neighbour");
+            s.triangles.push_back(Triangle{t[0], t[1], t[2]});
+        }
+    }
+    // Only the vertices faces use, in file order, so isolated points do not become surface
+    // vertices.
+    for (const Triangle &t : s.triangles)
+        for (const int v : t)
+            index[std::size_t(v)] = 0;
+    for (std::size_t v = 0; v < index.size(); ++v) {
+        if (index[v] < 0)
             continue;
-        const Vec3 &p = scan.points[v.idx()];
-        const auto &q = mesh.point(v);
-        const double tolerance = 1e-6 * (1.0 + p.cwiseAbs().maxCoeff());
-        if (std::abs(q[0] - p.x()) > tolerance || std::abs(q[1] - p.y()) > tolerance
-            || std::abs(q[2] - p.z()) > tolerance)
-            throw FileError(path, 0,
-                            "vertex " + std::to_string(v.idx() + 1)
-                                + " was read differently by OpenMesh");
-        index[v.idx()] = int(s.vertices.size());
+        index[v] = int(s.vertices.size());
+        const Vec3 &p = scan.points[v];
         s.vertices.emplace_back(p.x() + 0.0, p.y() + 0.0, p.z() + 0.0);
     }
-    s.triangles.reserve(mesh.n_faces());
-    for (const auto f : mesh.faces()) {
-        Triangle t{};
-        int k = 0;
-        for (const auto v : mesh.fv_range(f))
-            t[k++] = index[v.idx()];
-        s.triangles.push_back(t);
-    }
+    for (Triangle &t : s.triangles)
+        for (int &v : t)
+            v = index[std::size_t(v)];
 
     Model model;
     model.name = s.name;

@@ -119,14 +119,35 @@ private slots:
     void facesOpenMeshWouldDrop()
     {
         QTemporaryDir dir;
-        expectFileError(
-            writeFile(dir, "degenerate.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 2\n"),
-            "could not be added");
+        const std::string degenerate =
+            writeFile(dir, "degenerate.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 2\n");
+        expectFileError(degenerate, "uses vertex 2 twice");
+        try {
+            readModel(degenerate);
+        } catch (const FileError &e) {
+            QCOMPARE(e.line(), 5);
+        }
         // Three triangles on one edge: OpenMesh would duplicate vertices (a silent cut).
         expectFileError(writeFile(dir, "fin.obj",
                                   "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n"
                                   "f 1 2 3\nf 2 1 4\nf 1 2 5\n"),
                         "non-manifold");
+    }
+
+    void offVertexLineWithExtraWords()
+    {
+        QTemporaryDir dir;
+        // A colour after the coordinates: read word by word, as OpenMesh does, the 999999999
+        // became the next vertex's x and a later word a face of that many corners.
+        const Model m =
+            readModel(writeFile(dir, "extra.off",
+                                "OFF\n4 2 0\n0 0 0 999999999\n1 0 0 7\n1 1 0\n0 1 0 5 5\n"
+                                "3 0 1 2\n3 0 2 3 1 1 1\n"));
+        QCOMPARE(m.surfaces.size(), std::size_t(1));
+        QCOMPARE(m.surfaces[0].vertices.size(), std::size_t(4));
+        QCOMPARE(m.surfaces[0].triangles.size(), std::size_t(2));
+        QCOMPARE(m.surfaces[0].vertices[3], Vec3(0, 1, 0));
+        QCOMPARE(m.surfaces[0].triangles[1], (Triangle{0, 2, 3}));
     }
 
     void unreadableContent()
