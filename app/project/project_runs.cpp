@@ -109,19 +109,7 @@ RunRead readRunFolder(const QString &projectPath, const ProjectRun &run)
 ModelComparison restoredComparison(const Model &input, const Model &output,
                                    const QJsonObject &report, const QString &file)
 {
-    ModelComparison c;
-    c.input.label = c.output.label = input.name;
-    c.input.resolution = "Input";
-    c.input.mesh = computeMeshStatistics(input);
-    c.output.mesh = computeMeshStatistics(output);
-    c.input.counts = countEntities(input).withoutBox;
-    c.output.counts = countEntities(output).withoutBox;
-    c.inputMinAngle = minAngleHistogram(input);
-    c.outputMinAngle = minAngleHistogram(output);
-    c.inputQuality = qualityHistogram(input);
-    c.outputQuality = qualityHistogram(output);
-    c.hausdorff = hausdorffFromReport(report, file);
-    c.output.hausdorffPctBbox = c.hausdorff.symmetricPctBbox;
+    ModelComparison c = compareModels(input, output, hausdorffFromReport(report, file));
     const QJsonObject timings = report.value(QLatin1String("timings")).toObject();
     c.output.samplingSeconds = timings.value(QLatin1String("sampling_s")).toDouble();
     c.output.meshSeconds = timings.value(QLatin1String("mesh_s")).toDouble();

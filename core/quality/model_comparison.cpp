@@ -18,6 +18,12 @@ std::string fixed(double value, int decimals)
 ModelComparison compareModels(const Model &input, const Model &output,
                               const HausdorffParams &params, Progress &progress)
 {
+    return compareModels(input, output, hausdorffDistance(input, output, params, progress));
+}
+
+ModelComparison compareModels(const Model &input, const Model &output,
+                              const HausdorffResult &measured)
+{
     ModelComparison c;
     c.input.label = c.output.label = input.name;
     c.input.resolution = "Input";
@@ -29,7 +35,7 @@ ModelComparison compareModels(const Model &input, const Model &output,
     c.outputMinAngle = minAngleHistogram(output);
     c.inputQuality = qualityHistogram(input);
     c.outputQuality = qualityHistogram(output);
-    c.hausdorff = hausdorffDistance(input, output, params, progress);
+    c.hausdorff = measured;
     c.output.hausdorffPctBbox = c.hausdorff.symmetricPctBbox;
     return c;
 }

@@ -41,6 +41,11 @@ ModelComparison compareModels(const Model &input, const Model &output,
                               const HausdorffParams &hausdorff = {},
                               Progress &progress = Progress::none());
 
+// The same with a Hausdorff distance already measured (a saved run's report), so reopening a
+// project does not sample both models again.
+ModelComparison compareModels(const Model &input, const Model &output,
+                              const HausdorffResult &measured);
+
 // A plain-text table in the layout of Table 4.2, one line per row (Markdown pipes).
 std::string formatTable42(const std::vector<ComparisonRow> &rows);
 

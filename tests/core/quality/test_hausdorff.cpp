@@ -97,6 +97,14 @@ private slots:
         const std::string table = formatTable42({c.input, c.output});
         QCOMPARE(std::count(table.begin(), table.end(), '\n'), 4L); // header, rule, two rows
         QVERIFY(table.find("| Input |") != std::string::npos);
+
+        // A distance measured before (a saved run's report) is used as given, not sampled again.
+        HausdorffResult saved = c.hausdorff;
+        saved.symmetricPctBbox = 1.25;
+        const ModelComparison restored = compareModels(a, b, saved);
+        QCOMPARE(restored.output.hausdorffPctBbox, 1.25);
+        QCOMPARE(restored.output.mesh.triangles, std::size_t(4));
+        QCOMPARE(restored.outputQuality.total(), std::size_t(4));
     }
 
     void emptyModelRefused()
