@@ -630,6 +630,49 @@ per cell</source>
     </message>
 </context>
 <context>
+    <name>stratamesh::ExaggerationWorkflow</name>
+    <message>
+        <source>Vertical E&amp;xaggeration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stretch the vertical axis of both views, to see thin layers and low dips</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (true scale)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Vertical exaggeration %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Vertical exaggeration off: true scale</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Vertical exaggeration %1: the views are not to scale</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Vertical Exaggeration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Vertical axis stretched by (%1 to %2):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Other…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Other (%1)…</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::ExportController</name>
     <message>
         <source>Exporting</source>

@@ -631,6 +631,49 @@ par cellule</translation>
     </message>
 </context>
 <context>
+    <name>stratamesh::ExaggerationWorkflow</name>
+    <message>
+        <source>Vertical E&amp;xaggeration</source>
+        <translation>E&amp;xagération verticale</translation>
+    </message>
+    <message>
+        <source>Stretch the vertical axis of both views, to see thin layers and low dips</source>
+        <translation>Étirer l’axe vertical des deux vues, pour voir les couches minces et les faibles pendages</translation>
+    </message>
+    <message>
+        <source>%1 (true scale)</source>
+        <translation>%1 (échelle réelle)</translation>
+    </message>
+    <message>
+        <source>Vertical exaggeration %1</source>
+        <translation>Exagération verticale %1</translation>
+    </message>
+    <message>
+        <source>Vertical exaggeration off: true scale</source>
+        <translation>Exagération verticale désactivée : échelle réelle</translation>
+    </message>
+    <message>
+        <source>Vertical exaggeration %1: the views are not to scale</source>
+        <translation>Exagération verticale %1 : les vues ne sont pas à l’échelle</translation>
+    </message>
+    <message>
+        <source>Vertical Exaggeration</source>
+        <translation>Exagération verticale</translation>
+    </message>
+    <message>
+        <source>Vertical axis stretched by (%1 to %2):</source>
+        <translation>Axe vertical étiré de (%1 à %2) :</translation>
+    </message>
+    <message>
+        <source>&amp;Other…</source>
+        <translation>&amp;Autre…</translation>
+    </message>
+    <message>
+        <source>&amp;Other (%1)…</source>
+        <translation>&amp;Autre (%1)…</translation>
+    </message>
+</context>
+<context>
     <name>stratamesh::ExportController</name>
     <message>
         <source>Exporting</source>

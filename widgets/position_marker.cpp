@@ -44,8 +44,12 @@ void PositionMarker::show(const Vec3 &position, double radius)
 {
     m_position = position;
     m_radius = radius;
-    m_sphere->SetCenter(position.x(), position.y(), position.z());
+    // Placed by the actors, not the source: their scale then squeezes the sphere about its own
+    // centre (setVerticalExaggeration).
+    m_sphere->SetCenter(0.0, 0.0, 0.0);
     m_sphere->SetRadius(radius);
+    m_actor->SetPosition(position.x(), position.y(), position.z());
+    m_halo->SetPosition(position.x(), position.y(), position.z());
     m_actor->SetVisibility(true);
     m_halo->SetVisibility(true);
 }
@@ -59,6 +63,14 @@ void PositionMarker::hide()
 bool PositionMarker::isVisible() const
 {
     return m_actor->GetVisibility();
+}
+
+void PositionMarker::setVerticalExaggeration(double factor)
+{
+    if (!(factor > 0.0))
+        return;
+    m_actor->SetScale(1.0, 1.0, 1.0 / factor);
+    m_halo->SetScale(1.0, 1.0, 1.0 / factor);
 }
 
 } // namespace stratamesh

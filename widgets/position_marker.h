@@ -22,6 +22,8 @@ public:
     void show(const Vec3 &position, double radius);
     void hide();
     bool isVisible() const;
+    // The views stretch z by `factor`: the sphere is squeezed by as much, so it stays round.
+    void setVerticalExaggeration(double factor);
     Vec3 position() const { return m_position; }
     double radius() const { return m_radius; }
 

@@ -4,6 +4,7 @@
 
 #include <vtkActor.h>
 #include <vtkCellPicker.h>
+#include <vtkMatrix4x4.h>
 #include <vtkRenderer.h>
 
 namespace stratamesh {
@@ -49,9 +50,14 @@ std::optional<TrianglePick> pickTriangle(const ModelScene &scene, vtkRenderer *r
         triangleOfCell(scene.model()->surfaces[std::size_t(surface)], picker->GetCellId());
     if (pick.triangle < 0)
         return std::nullopt;
-    double p[3];
-    picker->GetPickPosition(p);
-    pick.position = Vec3(p[0], p[1], p[2]);
+    // The picker answers in world coordinates: back through the actor's matrix (the views'
+    // vertical exaggeration) to the model's.
+    double world[4] = {0.0, 0.0, 0.0, 1.0}, p[4];
+    picker->GetPickPosition(world);
+    vtkNew<vtkMatrix4x4> inverse;
+    vtkMatrix4x4::Invert(picker->GetActor()->GetMatrix(), inverse);
+    inverse->MultiplyPoint(world, p);
+    pick.position = Vec3(p[0], p[1], p[2]) / p[3];
     return pick;
 }
 

@@ -15,8 +15,11 @@
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkLightKit.h>
+#include <vtkMatrix4x4.h>
 #include <vtkOpenGLState.h>
 #include <vtkOrientationMarkerWidget.h>
+#include <vtkProp3D.h>
+#include <vtkPropCollection.h>
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
@@ -194,13 +197,38 @@ vtkGenericRenderWindowInteractor *VtkViewWidget::interactor() const
 
 void VtkViewWidget::resetCamera()
 {
+    applyExaggeration();
     double bounds[6];
-    m_renderer->ComputeVisiblePropBounds(bounds);
-    resetCamera(bounds);
+    m_renderer->ComputeVisiblePropBounds(bounds); // already exaggerated
+    frame(bounds);
 }
 
-void VtkViewWidget::centreOn(const double point[3])
+void VtkViewWidget::setVerticalExaggeration(double factor)
 {
+    if (!(factor > 0.0) || factor == m_exaggeration)
+        return;
+    m_exaggeration = factor;
+    m_exaggerationMatrix->SetElement(2, 2, factor);
+    applyExaggeration();
+}
+
+void VtkViewWidget::applyExaggeration()
+{
+    vtkMatrix4x4 *matrix = m_exaggeration == 1.0 ? nullptr : m_exaggerationMatrix.Get();
+    vtkPropCollection *props = m_renderer->GetViewProps();
+    vtkCollectionSimpleIterator it;
+    props->InitTraversal(it);
+    while (vtkProp *prop = props->GetNextProp(it)) {
+        auto *prop3d = vtkProp3D::SafeDownCast(prop);
+        if (!prop3d || prop3d->GetUserMatrix() == matrix)
+            continue;
+        prop3d->SetUserMatrix(matrix);
+    }
+}
+
+void VtkViewWidget::centreOn(const double modelPoint[3])
+{
+    const double point[3] = {modelPoint[0], modelPoint[1], m_exaggeration * modelPoint[2]};
     vtkCamera *camera = m_renderer->GetActiveCamera();
     double focal[3], position[3];
     camera->GetFocalPoint(focal);
@@ -211,9 +239,10 @@ void VtkViewWidget::centreOn(const double point[3])
     m_renderer->ResetCameraClippingRange();
 }
 
-void VtkViewWidget::flyTo(const double point[3], double distance)
+void VtkViewWidget::flyTo(const double modelPoint[3], double distance)
 {
-    centreOn(point);
+    centreOn(modelPoint);
+    const double point[3] = {modelPoint[0], modelPoint[1], m_exaggeration * modelPoint[2]};
     vtkCamera *camera = m_renderer->GetActiveCamera();
     // vtkCamera::SetDistance would move the focal point: the position moves instead.
     if (distance > 0.0 && camera->GetDistance() > distance) {
@@ -225,7 +254,17 @@ void VtkViewWidget::flyTo(const double point[3], double distance)
     m_renderer->ResetCameraClippingRange();
 }
 
-void VtkViewWidget::resetCamera(const double bounds[6])
+void VtkViewWidget::resetCamera(const double modelBounds[6])
+{
+    applyExaggeration();
+    double bounds[6];
+    std::copy(modelBounds, modelBounds + 6, bounds);
+    bounds[4] *= m_exaggeration;
+    bounds[5] *= m_exaggeration;
+    frame(bounds);
+}
+
+void VtkViewWidget::frame(const double bounds[6])
 {
     vtkCamera *camera = m_renderer->GetActiveCamera();
     camera->SetFocalPoint(0.0, 0.0, 0.0);
@@ -307,6 +346,7 @@ void VtkViewWidget::paintGL()
     state->Reset();
     state->Push();
     state->vtkglDepthFunc(GL_LEQUAL); // Qt leaves GL_LESS; VTK expects LEQUAL
+    applyExaggeration();
     m_renderWindow->SetReadyForRendering(true);
     m_renderWindow->Render();
     m_renderWindow->SetReadyForRendering(false);

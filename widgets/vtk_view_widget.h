@@ -13,6 +13,7 @@ class vtkCallbackCommand;
 class vtkGenericOpenGLRenderWindow;
 class vtkGenericRenderWindowInteractor;
 class vtkInteractorStyleTrackballCamera;
+class vtkMatrix4x4;
 class vtkObject;
 class vtkOrientationMarkerWidget;
 class vtkRenderer;
@@ -46,6 +47,13 @@ public:
     // Schedules a repaint; VTK only ever renders inside paintGL.
     void render();
 
+    // Z stretched by `factor` about z = 0 (a geologist's vertical exaggeration: thin layers and
+    // low dips become visible). Every 3D prop of the renderer is drawn through it, props added
+    // later too; the points and bounds given to the camera methods above stay model coordinates.
+    // The camera is not moved (ViewPair moves the one its views share).
+    void setVerticalExaggeration(double factor);
+    double verticalExaggeration() const { return m_exaggeration; }
+
     QSize minimumSizeHint() const override;
     QSize sizeHint() const override;
 
@@ -76,6 +84,9 @@ private:
                            void *callData);
     void setPointerInfo(const QPointF &pos, Qt::KeyboardModifiers modifiers);
     void cleanupGL();
+    // Gives every 3D prop the exaggeration's matrix (none at 1×); at each paint and before bounds.
+    void applyExaggeration();
+    void frame(const double worldBounds[6]);
     void onContextAboutToBeDestroyed();
 
     vtkNew<vtkGenericOpenGLRenderWindow> m_renderWindow;
@@ -84,6 +95,8 @@ private:
     vtkNew<vtkInteractorStyleTrackballCamera> m_style;
     vtkNew<vtkCallbackCommand> m_callback;
     vtkSmartPointer<vtkOrientationMarkerWidget> m_axes;
+    vtkNew<vtkMatrix4x4> m_exaggerationMatrix;
+    double m_exaggeration = 1.0;
     bool m_initialized = false;
     QPointF m_leftPress{-1.0, -1.0}; // where the left button went down, to tell a click from a drag
 };

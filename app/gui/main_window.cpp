@@ -3,6 +3,7 @@
 #include "about_dialog.h"
 #include "app_settings.h"
 #include "complexity_workflow.h"
+#include "exaggeration_workflow.h"
 #include "export_workflow.h"
 #include "hybrid_workflow.h"
 #include "message_panel.h"
@@ -67,6 +68,7 @@ MainWindow::MainWindow(QWidget *parent)
     auto *exporter = add(new ExportWorkflow(*m_bench, *m_remesh, *m_tetmesh, *m_hybrid, this));
     m_project = add(new ProjectWorkflow(*m_bench, *m_open, *m_remesh, this));
     m_view = add(new ViewWorkflow(*m_bench, *m_remesh, *m_tetmesh, *m_hybrid, this));
+    m_exaggeration = add(new ExaggerationWorkflow(*m_bench, this));
     m_tree = add(new ModelTreeWorkflow(*m_bench, *m_open, *m_remesh, this));
     m_steps = add(new StepsWorkflow(*m_bench, *m_open, *m_complexity, *m_remesh, *m_tetmesh,
                                     *m_hybrid, *exporter, this));

@@ -32,6 +32,7 @@ class StepsWorkflow;
 class StudyWorkflow;
 class TetmeshWorkflow;
 class ViewWorkflow;
+class ExaggerationWorkflow;
 class ViewPair;
 class VtkViewWidget;
 class Workbench;
@@ -66,6 +67,7 @@ public:
     HybridWorkflow *hybridWorkflow() const { return m_hybrid; }
     ProjectWorkflow *projectWorkflow() const { return m_project; }
     ViewWorkflow *viewWorkflow() const { return m_view; }
+    ExaggerationWorkflow *exaggerationWorkflow() const { return m_exaggeration; }
     ModelTreeWorkflow *modelTreeWorkflow() const { return m_tree; }
     StepsWorkflow *stepsWorkflow() const { return m_steps; }
     RecentFiles *recentFiles() const { return m_recent; }
@@ -117,6 +119,7 @@ private:
     HybridWorkflow *m_hybrid = nullptr;
     ProjectWorkflow *m_project = nullptr;
     ViewWorkflow *m_view = nullptr;
+    ExaggerationWorkflow *m_exaggeration = nullptr;
     ModelTreeWorkflow *m_tree = nullptr;
     StepsWorkflow *m_steps = nullptr;
     RecentFiles *m_recent = nullptr;

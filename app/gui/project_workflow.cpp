@@ -1,5 +1,7 @@
 #include "project_workflow.h"
 
+#include "exaggeration_workflow.h"
+
 #include "app_settings.h"
 #include "disabled_reason.h"
 #include "error_message.h"
@@ -500,6 +502,12 @@ void ProjectWorkflow::install(Pending &pending)
     const int shown = pending.file.shownRun >= 0 ? pending.file.shownRun : int(m_runs.size()) - 1;
     if (shown >= 0)
         showRun(shown);
+    // Before the camera: the camera was saved in the exaggerated view's coordinates.
+    const double exaggeration =
+        pending.file.view.value(QLatin1String("vertical_exaggeration")).toDouble(1.0);
+    if (exaggeration >= ExaggerationWorkflow::kMinimum
+        && exaggeration <= ExaggerationWorkflow::kMaximum)
+        m_bench.setVerticalExaggeration(exaggeration);
     applyCamera(pending.file.view.value(QLatin1String("camera")).toObject(),
                 m_bench.inputView()->renderer()->GetActiveCamera());
     m_bench.inputView()->renderer()->ResetCameraClippingRange();
@@ -564,6 +572,7 @@ bool ProjectWorkflow::saveProject(const QString &path)
     file.inputPath = inputPath;
     file.inputIsSample = inputPath.isEmpty();
     file.shownRun = m_shown;
+    file.view.insert(QStringLiteral("vertical_exaggeration"), m_bench.verticalExaggeration());
     file.view.insert(QStringLiteral("camera"),
                      cameraJson(m_bench.inputView()->renderer()->GetActiveCamera()));
     std::vector<RunContent> contents;

@@ -5,6 +5,7 @@
 #include <QLabel>
 #include <QVBoxLayout>
 
+#include <vtkCamera.h>
 #include <vtkRenderer.h>
 
 namespace stratamesh {
@@ -54,6 +55,33 @@ void ViewPair::splitEvenly()
 {
     const int half = width() / 2;
     setSizes({half, width() - half});
+}
+
+void ViewPair::setVerticalExaggeration(double factor)
+{
+    const double before = m_input->verticalExaggeration();
+    if (!(factor > 0.0) || factor == before)
+        return;
+    // World z is exaggeration × model z: the focal point moves with the model point it shows,
+    // and the camera keeps its direction and distance.
+    vtkCamera *camera = m_input->renderer()->GetActiveCamera();
+    double focal[3], position[3];
+    camera->GetFocalPoint(focal);
+    camera->GetPosition(position);
+    const double shift = focal[2] * (factor / before - 1.0);
+    camera->SetFocalPoint(focal[0], focal[1], focal[2] + shift);
+    camera->SetPosition(position[0], position[1], position[2] + shift);
+    m_input->setVerticalExaggeration(factor);
+    m_output->setVerticalExaggeration(factor);
+    m_input->renderer()->ResetCameraClippingRange();
+    m_output->renderer()->ResetCameraClippingRange();
+    m_input->render();
+    m_output->render();
+}
+
+double ViewPair::verticalExaggeration() const
+{
+    return m_input->verticalExaggeration();
 }
 
 } // namespace stratamesh

@@ -23,6 +23,10 @@ public:
     void setTitles(const QString &input, const QString &output);
     // Half the width each, for the pane just shown.
     void splitEvenly();
+    // Both views' vertical exaggeration (VtkViewWidget); the shared camera keeps looking at the
+    // same place of the model.
+    void setVerticalExaggeration(double factor);
+    double verticalExaggeration() const;
 
 private:
     VtkViewWidget *m_input = nullptr;

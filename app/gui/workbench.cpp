@@ -121,6 +121,20 @@ void Workbench::hidePosition()
     render();
 }
 
+void Workbench::setVerticalExaggeration(double factor)
+{
+    if (!(factor > 0.0))
+        return;
+    m_inputMarker->setVerticalExaggeration(factor);
+    m_outputMarker->setVerticalExaggeration(factor);
+    m_views->setVerticalExaggeration(factor);
+}
+
+double Workbench::verticalExaggeration() const
+{
+    return m_views->verticalExaggeration();
+}
+
 void Workbench::resetCamera()
 {
     double bounds[6];

@@ -74,6 +74,11 @@ public:
     PositionMarker *outputMarker() const { return m_outputMarker.get(); }
     double diagonal() const;
 
+    // View > Vertical Exaggeration: z stretched in both views (1 = true scale), the marker and
+    // every scene with them; positions and bounds given to the views stay model coordinates.
+    void setVerticalExaggeration(double factor);
+    double verticalExaggeration() const;
+
     // Frames the input model; the output view shares the camera.
     void resetCamera();
     void render();
