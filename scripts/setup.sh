@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The two set-up commands of the README:
 #   scripts/setup.sh run [MODEL]   install what is missing, build, start the GUI (bundled sample
-#                                  model when no MODEL is given)
+#                                  project when no MODEL is given)
 #   scripts/setup.sh test          install what is missing, build, run every test (GUI tests in
 #                                  a virtual X server) and print CTest's summary
 set -euo pipefail
@@ -28,7 +28,7 @@ run)
         echo "setup: no display; use a desktop session (or xvfb-run -a $gui)" >&2
         exit 1
     fi
-    # Without a MODEL the window opens its bundled sample model.
+    # Without a MODEL the window opens its bundled sample project.
     exec "$gui" "$@"
     ;;
 test)

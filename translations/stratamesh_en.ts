@@ -1446,6 +1446,10 @@ angle (°)</source>
         <source>%1[*] — StrataMesh</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 (%2)[*] — StrataMesh</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>

@@ -1448,6 +1448,10 @@ min. (°)</translation>
         <source>%1[*] — StrataMesh</source>
         <translation>%1[*] — StrataMesh</translation>
     </message>
+    <message>
+        <source>%1 (%2)[*] — StrataMesh</source>
+        <translation>%1 (%2)[*] — StrataMesh</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>

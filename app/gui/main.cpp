@@ -80,8 +80,10 @@ int main(int argc, char **argv)
                              opened, Qt::SingleShotConnection);
     }
     window.show();
-    if (options.openPath.isEmpty())
-        window.openSample();
+    if (options.openPath.isEmpty() && scripted)
+        window.openSample(); // scripted steps start from the model alone
+    else if (options.openPath.isEmpty())
+        window.openSampleProject();
     else if (project) {
         // False when the project cannot be read (no projectOpened() follows).
         if (!window.projectWorkflow()->openProject(options.openPath) && scripted)

@@ -15,6 +15,7 @@
 #include "project_workflow.h"
 #include "recent_files.h"
 #include "remesh_workflow.h"
+#include "script_runner.h"
 #include "steps_workflow.h"
 #include "study_workflow.h"
 #include "tetmesh_workflow.h"
@@ -25,15 +26,18 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QFileInfo>
 #include <QLabel>
 #include <QLocale>
 #include <QMenuBar>
 #include <QMimeData>
 #include <QScrollArea>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
@@ -78,6 +82,7 @@ MainWindow::MainWindow(QWidget *parent)
     // A project opens its input model first: the project then comes above it.
     connect(m_open, &OpenWorkflow::opened, m_recent,
             [this](const LoadedModel &loaded) { m_recent->add(loaded.path); });
+    connect(m_project, &ProjectWorkflow::pathChanged, this, &MainWindow::updateTitle);
     connect(m_project, &ProjectWorkflow::projectOpened, m_recent, [this](bool ok) {
         if (ok)
             m_recent->add(m_project->projectPath());
@@ -313,10 +318,21 @@ void MainWindow::retranslate()
     m_toolBar->setWindowTitle(tr("Main Toolbar"));
     m_messageDock->setWindowTitle(tr("Messages"));
     m_messageDock->toggleViewAction()->setText(tr("&Messages"));
-    const QString &name = m_bench->displayName();
-    // [*]: the unsaved-project marker (ProjectWorkflow sets windowModified).
-    setWindowTitle(name.isEmpty() ? tr("StrataMesh[*]") : tr("%1[*] — StrataMesh").arg(name));
+    updateTitle();
     updateCounts();
+}
+
+void MainWindow::updateTitle()
+{
+    const QString &name = m_bench->displayName();
+    const QString project = QFileInfo(m_project->projectPath()).fileName();
+    // [*]: the unsaved-project marker (ProjectWorkflow sets windowModified).
+    if (name.isEmpty())
+        setWindowTitle(tr("StrataMesh[*]"));
+    else if (project.isEmpty())
+        setWindowTitle(tr("%1[*] — StrataMesh").arg(name));
+    else
+        setWindowTitle(tr("%1 (%2)[*] — StrataMesh").arg(project, name));
 }
 
 void MainWindow::changeEvent(QEvent *event)
@@ -347,6 +363,39 @@ void MainWindow::closeEvent(QCloseEvent *event)
 void MainWindow::openSample()
 {
     m_open->openSample();
+}
+
+QString MainWindow::sampleProjectPath()
+{
+    const QString folder = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation);
+    return QDir(folder).filePath(QStringLiteral("sample/sample.smproj"));
+}
+
+void MainWindow::openSampleProject()
+{
+    const QString path = sampleProjectPath();
+    if (QFileInfo::exists(path) && m_project->openProject(path))
+        return;
+    // First time (or the saved one could not be read: its error is in Messages): made again.
+    ScriptStep remesh;
+    remesh.kind = ScriptStep::Kind::Remesh;
+    remesh.count = 300;
+    ScriptStep save;
+    save.kind = ScriptStep::Kind::SaveProject;
+    save.value = path;
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    auto *runner = new ScriptRunner(*this, {remesh, save}, this);
+    connect(runner, &ScriptRunner::finished, runner, &QObject::deleteLater);
+    connect(
+        m_open, &OpenWorkflow::finished, runner,
+        [runner](bool ok) {
+            if (ok)
+                runner->start();
+            else
+                runner->deleteLater();
+        },
+        Qt::SingleShotConnection);
+    openSample();
 }
 
 void MainWindow::setBoxVisible(bool visible)

@@ -83,6 +83,12 @@ public slots:
     // A model, or a project (.smproj).
     void openFile(const QString &path);
     void openSample();
+    // What the window opens on without a file: the bundled sample as a project (sample.smproj in
+    // the user's data folder). The first time, the sample model is remeshed once at 300 sites and
+    // saved there, so that Runs, Review and Input vs Output have a result to show; afterwards the
+    // project is read back without remeshing, with what the user saved in it.
+    void openSampleProject();
+    static QString sampleProjectPath();
     void setBoxVisible(bool visible);
     void setEdgesVisible(bool visible);
     void resetCamera();
@@ -98,6 +104,8 @@ private:
     W *add(W *workflow);
     void createActions();
     void createMenus();
+    // "PROJECT.smproj (model)" while a project is open, else the model's name.
+    void updateTitle();
     void placeDocks();
     void retranslate();
     void showModel(const LoadedModel &loaded);

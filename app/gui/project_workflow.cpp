@@ -201,6 +201,7 @@ void ProjectWorkflow::clear()
     m_shown = -1;
     m_compared = -1; // the Workbench puts the next model in the input view
     m_path.clear();
+    emit pathChanged(m_path);
     setModified(false);
     updatePanel();
     m_dock->hide();
@@ -498,6 +499,7 @@ void ProjectWorkflow::install(Pending &pending)
     }
     m_runs = std::move(runs);
     m_path = pending.path;
+    emit pathChanged(m_path);
     m_shown = -1;
     const int shown = pending.file.shownRun >= 0 ? pending.file.shownRun : int(m_runs.size()) - 1;
     if (shown >= 0)
@@ -615,6 +617,7 @@ bool ProjectWorkflow::saveProject(const QString &path)
         return false;
     }
     m_path = absolute;
+    emit pathChanged(m_path);
     for (Run &run : m_runs)
         run.savedIn = absolute;
     setModified(false);

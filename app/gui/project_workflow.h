@@ -87,6 +87,8 @@ public slots:
 
 signals:
     void projectOpened(bool ok);
+    // The project's file changed: opened, saved elsewhere, or none once another model is open.
+    void pathChanged(const QString &path);
 
 private:
     struct Pending;
