@@ -1,9 +1,13 @@
 // Runs the built stratamesh-cli and captures its exit status and both output streams.
 #pragma once
 
+#include "support/sanitizer.h"
+
 #include <QProcess>
 #include <QString>
 #include <QStringList>
+
+#include <algorithm>
 
 namespace stratamesh::test {
 
@@ -21,7 +25,8 @@ inline CliRun runCli(const QStringList &arguments, int timeoutMs = 240000)
     CliRun run;
     if (!process.waitForStarted(10000))
         return run;
-    const bool done = process.waitForFinished(timeoutMs);
+    // The instrumented CLI of a sanitizer build is several times slower (sanitizer.h).
+    const bool done = process.waitForFinished(int(std::min(2e9, timeoutMs * kTimeScale)));
     run.finished = done && process.exitStatus() == QProcess::NormalExit;
     if (!done)
         process.kill();
