@@ -1450,6 +1450,14 @@ angle (°)</source>
         <source>%1 (%2)[*] — StrataMesh</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Link Cameras</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the input and output views together; unchecked, each view has its own camera</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>

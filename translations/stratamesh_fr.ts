@@ -1452,6 +1452,14 @@ min. (°)</translation>
         <source>%1 (%2)[*] — StrataMesh</source>
         <translation>%1 (%2)[*] — StrataMesh</translation>
     </message>
+    <message>
+        <source>&amp;Link Cameras</source>
+        <translation>&amp;Lier les caméras</translation>
+    </message>
+    <message>
+        <source>Move the input and output views together; unchecked, each view has its own camera</source>
+        <translation>Déplacer ensemble les vues d’entrée et de sortie ; décoché, chaque vue a sa propre caméra</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::MessagePanel</name>

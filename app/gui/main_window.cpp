@@ -166,6 +166,11 @@ void MainWindow::createActions()
     m_resetCamera = new QAction(this);
     m_resetCamera->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
     connect(m_resetCamera, &QAction::triggered, this, &MainWindow::resetCamera);
+    m_linkCameras = new QAction(this);
+    m_linkCameras->setCheckable(true);
+    m_linkCameras->setChecked(true);
+    connect(m_linkCameras, &QAction::toggled, this,
+            [this](bool linked) { m_views->setCamerasLinked(linked); });
 
     m_about = new QAction(this);
     m_about->setMenuRole(QAction::AboutRole);
@@ -208,6 +213,7 @@ void MainWindow::createMenus()
     m_viewMenu->addAction(m_showEdges);
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_resetCamera);
+    m_viewMenu->addAction(m_linkCameras);
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_messageDock->toggleViewAction());
 
@@ -310,6 +316,9 @@ void MainWindow::retranslate()
     m_showEdges->setStatusTip(tr("Draw the edges of every surface triangle"));
     m_resetCamera->setText(tr("&Reset Camera"));
     m_resetCamera->setStatusTip(tr("Look at the whole model from the south-west"));
+    m_linkCameras->setText(tr("&Link Cameras"));
+    m_linkCameras->setStatusTip(
+        tr("Move the input and output views together; unchecked, each view has its own camera"));
     m_about->setText(tr("&About StrataMesh"));
     m_aboutQt->setText(tr("About &Qt"));
     m_recent->retranslate();

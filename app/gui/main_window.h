@@ -54,6 +54,7 @@ public:
     ProgressStrip *progressStrip() const { return m_strip; }
     QAction *showBoxAction() const { return m_showBox; }
     QAction *showEdgesAction() const { return m_showEdges; }
+    QAction *linkCamerasAction() const { return m_linkCameras; }
     QString statusCounts() const;
     Workbench *workbench() const { return m_bench.get(); }
     // What Help > About lists: the Mesh and Analyse actions, but the Cancels.
@@ -136,6 +137,7 @@ private:
     QAction *m_showBox = nullptr;
     QAction *m_showEdges = nullptr;
     QAction *m_resetCamera = nullptr;
+    QAction *m_linkCameras = nullptr;
     QAction *m_about = nullptr;
     QAction *m_aboutQt = nullptr;
     QAction *m_undo = nullptr;

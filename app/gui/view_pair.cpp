@@ -6,6 +6,7 @@
 #include <QVBoxLayout>
 
 #include <vtkCamera.h>
+#include <vtkNew.h>
 #include <vtkRenderer.h>
 
 namespace stratamesh {
@@ -64,19 +65,44 @@ void ViewPair::setVerticalExaggeration(double factor)
         return;
     // World z is exaggeration × model z: the focal point moves with the model point it shows,
     // and the camera keeps its direction and distance.
-    vtkCamera *camera = m_input->renderer()->GetActiveCamera();
-    double focal[3], position[3];
-    camera->GetFocalPoint(focal);
-    camera->GetPosition(position);
-    const double shift = focal[2] * (factor / before - 1.0);
-    camera->SetFocalPoint(focal[0], focal[1], focal[2] + shift);
-    camera->SetPosition(position[0], position[1], position[2] + shift);
+    for (VtkViewWidget *view : {m_input, m_output}) {
+        if (view == m_output && camerasLinked())
+            break;
+        vtkCamera *camera = view->renderer()->GetActiveCamera();
+        double focal[3], position[3];
+        camera->GetFocalPoint(focal);
+        camera->GetPosition(position);
+        const double shift = focal[2] * (factor / before - 1.0);
+        camera->SetFocalPoint(focal[0], focal[1], focal[2] + shift);
+        camera->SetPosition(position[0], position[1], position[2] + shift);
+    }
     m_input->setVerticalExaggeration(factor);
     m_output->setVerticalExaggeration(factor);
     m_input->renderer()->ResetCameraClippingRange();
     m_output->renderer()->ResetCameraClippingRange();
     m_input->render();
     m_output->render();
+}
+
+void ViewPair::setCamerasLinked(bool linked)
+{
+    if (linked == camerasLinked())
+        return;
+    vtkCamera *input = m_input->renderer()->GetActiveCamera();
+    if (linked) {
+        m_output->renderer()->SetActiveCamera(input);
+    } else {
+        vtkNew<vtkCamera> own;
+        own->DeepCopy(input);
+        m_output->renderer()->SetActiveCamera(own);
+    }
+    m_output->renderer()->ResetCameraClippingRange();
+    m_output->render();
+}
+
+bool ViewPair::camerasLinked() const
+{
+    return m_output->renderer()->GetActiveCamera() == m_input->renderer()->GetActiveCamera();
 }
 
 double ViewPair::verticalExaggeration() const

@@ -26,6 +26,10 @@ public:
     // Both views' vertical exaggeration (VtkViewWidget); the shared camera keeps looking at the
     // same place of the model.
     void setVerticalExaggeration(double factor);
+    // Linked (the default): both views look through one camera. Unlinked, the output view gets
+    // its own copy, moved on its own; linking again gives it the input view's camera.
+    void setCamerasLinked(bool linked);
+    bool camerasLinked() const;
     double verticalExaggeration() const;
 
 private:

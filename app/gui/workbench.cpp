@@ -110,7 +110,10 @@ void Workbench::showPosition(const Vec3 &position, double radius)
     // The views share one camera: close in on the spot in both, a fifth of the model around it.
     const double centre[3] = {position.x(), position.y(), position.z()};
     inputView()->flyTo(centre, 0.4 * diagonal);
-    outputView()->renderer()->ResetCameraClippingRange();
+    if (m_views->camerasLinked())
+        outputView()->renderer()->ResetCameraClippingRange();
+    else
+        outputView()->flyTo(centre, 0.4 * diagonal);
     render();
 }
 
@@ -142,8 +145,14 @@ void Workbench::resetCamera()
         inputView()->resetCamera(bounds);
     else
         inputView()->resetCamera();
-    // The output view shares the camera; its clipping range follows its own actors.
-    outputView()->renderer()->ResetCameraClippingRange();
+    // The output view shares the camera (its clipping range follows its own actors), or has its
+    // own, framed on the same box.
+    if (m_views->camerasLinked())
+        outputView()->renderer()->ResetCameraClippingRange();
+    else if (m_inputScene->bounds(bounds))
+        outputView()->resetCamera(bounds);
+    else
+        outputView()->resetCamera();
     outputView()->render();
 }
 

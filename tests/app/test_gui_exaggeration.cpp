@@ -1,6 +1,6 @@
 // View > Vertical Exaggeration (issue 17): z stretched in both views, the camera framing and the
 // triangle pick still right in model coordinates, undoable, kept by a project, true scale again
-// for another model.
+// for another model. View > Link Cameras: one camera for both views, or one each.
 #include "exaggeration_workflow.h"
 #include "main_window.h"
 #include "model_scene.h"
@@ -14,6 +14,7 @@
 #include "window_screenshot.h"
 #include "workbench.h"
 
+#include <QAction>
 #include <QDir>
 #include <QFile>
 #include <QJsonDocument>
@@ -25,6 +26,7 @@
 #include <QtTest>
 
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkRenderer.h>
 
 #include <Eigen/Geometry>
@@ -205,6 +207,34 @@ private slots:
         QCOMPARE(m_window->outputView()->verticalExaggeration(), 5.0);
         emit workflow->menu()->aboutToShow();
         QVERIFY(workflow->presetAction(2)->isChecked());
+    }
+
+    void camerasLinkOrNot()
+    {
+        QAction *link = m_window->linkCamerasAction();
+        vtkRenderer *input = m_window->view()->renderer();
+        vtkRenderer *output = m_window->outputView()->renderer();
+        QVERIFY(link->isChecked());
+        QCOMPARE(output->GetActiveCamera(), input->GetActiveCamera());
+        link->trigger();
+        QVERIFY(!link->isChecked());
+        QVERIFY(output->GetActiveCamera() != input->GetActiveCamera());
+        double before[3], after[3];
+        output->GetActiveCamera()->GetPosition(before);
+        input->GetActiveCamera()->Azimuth(40.0); // the user turns the input view only
+        output->GetActiveCamera()->GetPosition(after);
+        QCOMPARE(after[0], before[0]);
+        QCOMPARE(after[1], before[1]);
+        // Both still fly to a record, each with its own camera.
+        const Vec3 spot(500.0, 400.0, 200.0);
+        m_window->workbench()->showPosition(spot);
+        double focalIn[3], focalOut[3];
+        input->GetActiveCamera()->GetFocalPoint(focalIn);
+        output->GetActiveCamera()->GetFocalPoint(focalOut);
+        for (int i = 0; i < 3; ++i)
+            QVERIFY(std::abs(focalIn[i] - focalOut[i]) < 1e-6 * m_window->workbench()->diagonal());
+        link->trigger();
+        QCOMPARE(output->GetActiveCamera(), input->GetActiveCamera());
     }
 
     void anotherModelIsTrueScale()
