@@ -7,8 +7,7 @@
 #   SANITIZE_BUILD=dir   another build folder
 #   SANITIZE_CMAKE_ARGS  more cmake options, e.g. "-DSTRATAMESH_BUILD_GUI=OFF" to leave out the GUI
 #                        (a third of the build) when time is short
-#   SANITIZE_EXCLUDE     a ctest -E regex of tests left out (CI leaves out the data-matrix tests:
-#                        instrumented, they need 100 of the suite's 118 CPU-minutes)
+#   SANITIZE_EXCLUDE     a ctest -E regex of tests left out
 #   SANITIZE_GUI_DEADLINE  a time (seconds since 1970) after which the GUI tests are not started
 set -euo pipefail
 
@@ -17,6 +16,8 @@ build="${SANITIZE_BUILD:-$root/build-sanitize}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}"
 export CCACHE_MAXSIZE="${CCACHE_MAXSIZE:-5G}"
+# -g1 would otherwise put the build folder in every hash: another clone would miss the cache.
+export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 
 start=$(date +%s)
 # -O1: the sanitizers' usual trade between build time, run time and readable stacks.
