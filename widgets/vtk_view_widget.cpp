@@ -97,6 +97,13 @@ VtkViewWidget::VtkViewWidget(QWidget *parent) : QOpenGLWidget(parent)
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
     setUpdateBehavior(QOpenGLWidget::NoPartialUpdate);
+    m_hoverTimer.setSingleShot(true);
+    m_hoverTimer.setInterval(kHoverDelayMs);
+    connect(&m_hoverTimer, &QTimer::timeout, this, [this] {
+        const QPointF p = displayPosition(m_hoverPos);
+        m_hoverShown = true;
+        emit hovered(p.x(), p.y());
+    });
 
     // The context belongs to Qt: VTK must neither create, swap nor make it current on its own.
     m_renderWindow->SetOwnContext(false);
@@ -416,8 +423,24 @@ void VtkViewWidget::setPointerInfo(const QPointF &pos, Qt::KeyboardModifiers mod
     m_interactor->SetAltKey((modifiers & Qt::AltModifier) ? 1 : 0);
 }
 
+QPointF VtkViewWidget::displayPosition(const QPointF &pos) const
+{
+    const qreal ratio = devicePixelRatioF();
+    return {pos.x() * ratio, height() * ratio - pos.y() * ratio - 1.0};
+}
+
+void VtkViewWidget::endHover()
+{
+    m_hoverTimer.stop();
+    if (m_hoverShown) {
+        m_hoverShown = false;
+        emit hoverEnded();
+    }
+}
+
 void VtkViewWidget::mousePressEvent(QMouseEvent *event)
 {
+    endHover();
     if (event->button() == Qt::LeftButton)
         m_leftPress = event->position();
     setPointerInfo(event->position(), event->modifiers());
@@ -435,9 +458,8 @@ void VtkViewWidget::mouseReleaseEvent(QMouseEvent *event)
     // A few pixels of jitter are still a click; more is a rotation of the camera.
     if (event->button() == Qt::LeftButton && m_leftPress.x() >= 0.0
         && (event->position() - m_leftPress).manhattanLength() <= 4.0) {
-        const qreal ratio = devicePixelRatioF();
-        emit clicked(event->position().x() * ratio,
-                     height() * ratio - event->position().y() * ratio - 1.0);
+        const QPointF p = displayPosition(event->position());
+        emit clicked(p.x(), p.y());
     }
     m_leftPress = QPointF(-1.0, -1.0);
 }
@@ -457,10 +479,16 @@ void VtkViewWidget::mouseMoveEvent(QMouseEvent *event)
     setPointerInfo(event->position(), event->modifiers());
     m_interactor->InvokeEvent(vtkCommand::MouseMoveEvent, nullptr);
     event->accept();
+    endHover();
+    if (event->buttons() == Qt::NoButton) {
+        m_hoverPos = event->position();
+        m_hoverTimer.start();
+    }
 }
 
 void VtkViewWidget::wheelEvent(QWheelEvent *event)
 {
+    endHover();
     setPointerInfo(event->position(), event->modifiers());
     const int delta = event->angleDelta().y();
     if (delta > 0)
@@ -513,6 +541,7 @@ void VtkViewWidget::enterEvent(QEnterEvent *event)
 
 void VtkViewWidget::leaveEvent(QEvent *event)
 {
+    endHover();
     m_interactor->InvokeEvent(vtkCommand::LeaveEvent, nullptr);
     QOpenGLWidget::leaveEvent(event);
 }

@@ -5,6 +5,7 @@
 #include <QOpenGLWidget>
 #include <QPointF>
 #include <QSurfaceFormat>
+#include <QTimer>
 
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
@@ -54,6 +55,8 @@ public:
     void setVerticalExaggeration(double factor);
     double verticalExaggeration() const { return m_exaggeration; }
 
+    static constexpr int kHoverDelayMs = 300;
+
     QSize minimumSizeHint() const override;
     QSize sizeHint() const override;
 
@@ -63,6 +66,12 @@ signals:
     // A left click without drag, at VTK display coordinates (device pixels, origin bottom left):
     // what lies there can be picked.
     void clicked(double x, double y);
+    // The pointer rested on the view (no button down) for kHoverDelayMs, at VTK display
+    // coordinates as for clicked(): what lies there can be described without selecting it.
+    void hovered(double x, double y);
+    // The pointer moved away, a button went down, or the pointer left the view: a description
+    // shown for the last hover is out of date.
+    void hoverEnded();
 
 protected:
     void initializeGL() override;
@@ -83,6 +92,9 @@ private:
     static void onVtkEvent(vtkObject *caller, unsigned long eventId, void *clientData,
                            void *callData);
     void setPointerInfo(const QPointF &pos, Qt::KeyboardModifiers modifiers);
+    // VTK display coordinates (device pixels, origin bottom left) of a Qt widget position.
+    QPointF displayPosition(const QPointF &pos) const;
+    void endHover();
     void cleanupGL();
     // Gives every 3D prop the exaggeration's matrix (none at 1×); at each paint and before bounds.
     void applyExaggeration();
@@ -99,6 +111,10 @@ private:
     double m_exaggeration = 1.0;
     bool m_initialized = false;
     QPointF m_leftPress{-1.0, -1.0}; // where the left button went down, to tell a click from a drag
+    // Picking on every mouse move would cost a ray cast per event; the pointer must rest first.
+    QTimer m_hoverTimer;
+    QPointF m_hoverPos;
+    bool m_hoverShown = false;
 };
 
 } // namespace stratamesh

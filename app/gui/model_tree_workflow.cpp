@@ -15,10 +15,13 @@
 #include <QDockWidget>
 #include <QLocale>
 #include <QMainWindow>
+#include <QToolTip>
 #include <QUndoCommand>
 #include <QUndoStack>
 
 #include <vtkRenderer.h>
+
+#include <cmath>
 
 namespace stratamesh {
 
@@ -79,6 +82,12 @@ ModelTreeWorkflow::ModelTreeWorkflow(Workbench &bench, OpenWorkflow &open, Remes
             [this](double x, double y) { inspect(false, x, y); });
     connect(bench.outputView(), &VtkViewWidget::clicked, this,
             [this](double x, double y) { inspect(true, x, y); });
+    connect(bench.inputView(), &VtkViewWidget::hovered, this,
+            [this](double x, double y) { hover(false, x, y); });
+    connect(bench.outputView(), &VtkViewWidget::hovered, this,
+            [this](double x, double y) { hover(true, x, y); });
+    for (VtkViewWidget *view : {bench.inputView(), bench.outputView()})
+        connect(view, &VtkViewWidget::hoverEnded, this, [] { QToolTip::hideText(); });
 }
 
 ModelTreeWorkflow::~ModelTreeWorkflow() = default;
@@ -208,38 +217,63 @@ void ModelTreeWorkflow::highlightOutput(const QModelIndex &index)
     m_outputHighlight->showSurfaces(*m_bench.outputScene(), surfaces);
 }
 
-bool ModelTreeWorkflow::inspect(bool output, double x, double y)
+std::optional<ModelTreeWorkflow::Description> ModelTreeWorkflow::describe(bool output, double x,
+                                                                          double y) const
 {
     const ModelScene *scene = output ? m_bench.outputScene() : m_bench.inputScene();
     VtkViewWidget *view = output ? m_bench.outputView() : m_bench.inputView();
     const auto pick = pickTriangle(*scene, view->renderer(), x, y);
     if (!pick)
-        return false;
+        return std::nullopt;
     const Surface &surface = scene->model()->surfaces[std::size_t(pick->surface)];
     const Triangle &t = surface.triangles[std::size_t(pick->triangle)];
     const TriangleShape shape =
         triangleShape(surface.vertices[std::size_t(t[0])], surface.vertices[std::size_t(t[1])],
                       surface.vertices[std::size_t(t[2])]);
+    Description d;
     // The tree lists the input: an output surface is found there by its name.
-    int inputSurface = pick->surface;
+    d.inputSurface = pick->surface;
     if (output) {
-        inputSurface = -1;
+        d.inputSurface = -1;
         const auto &input = m_bench.model();
         for (std::size_t s = 0; input && s < input->surfaces.size(); ++s)
             if (input->surfaces[s].name == surface.name)
-                inputSurface = int(s);
+                d.inputSurface = int(s);
     }
-    if (inputSurface >= 0)
-        m_panel->selectEntity(ModelTreeModel::Kind::Surface, inputSurface);
     const QLocale locale;
-    const QString text =
-        (output ? tr("Output surface %1, triangle %2: min angle %3°, Q = %4")
-                : tr("Surface %1, triangle %2: min angle %3°, Q = %4"))
-            .arg(QString::fromStdString(surface.name), QString::number(pick->triangle),
-                 locale.toString(shape.minAngleDeg, 'f', 1),
-                 locale.toString(shape.quality, 'f', 3));
-    m_bench.setStatus(text);
+    d.text = (output ? tr("Output surface %1, triangle %2: min angle %3°, Q = %4")
+                     : tr("Surface %1, triangle %2: min angle %3°, Q = %4"))
+                 .arg(QString::fromStdString(surface.name), QString::number(pick->triangle),
+                      locale.toString(shape.minAngleDeg, 'f', 1),
+                      locale.toString(shape.quality, 'f', 3));
+    return d;
+}
+
+bool ModelTreeWorkflow::inspect(bool output, double x, double y)
+{
+    const auto d = describe(output, x, y);
+    if (!d)
+        return false;
+    if (d->inputSurface >= 0)
+        m_panel->selectEntity(ModelTreeModel::Kind::Surface, d->inputSurface);
+    m_bench.setStatus(d->text);
     return true;
+}
+
+QString ModelTreeWorkflow::hover(bool output, double x, double y)
+{
+    VtkViewWidget *view = output ? m_bench.outputView() : m_bench.inputView();
+    const auto d = describe(output, x, y);
+    if (!d) {
+        QToolTip::hideText();
+        return {};
+    }
+    // Back from VTK display pixels (origin bottom left) to the widget's own coordinates.
+    const qreal ratio = view->devicePixelRatioF();
+    const QPoint local(int(std::lround(x / ratio)),
+                       int(std::lround((view->height() * ratio - y - 1.0) / ratio)));
+    QToolTip::showText(view->mapToGlobal(local), d->text, view);
+    return d->text;
 }
 
 } // namespace stratamesh

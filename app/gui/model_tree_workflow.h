@@ -10,6 +10,7 @@
 #include <QModelIndex>
 
 #include <memory>
+#include <optional>
 
 namespace stratamesh {
 
@@ -40,12 +41,20 @@ public:
     // What lies at display position (x, y) of the input or the output view: its surface selected,
     // the triangle described in the status bar. False when no surface is there.
     bool inspect(bool output, double x, double y);
+    // The same description as a tooltip at that place, selecting nothing (the pointer rests
+    // there); returns it, empty when no surface is there (any tooltip shown is then hidden).
+    QString hover(bool output, double x, double y);
 
 public slots:
     // Lists the Workbench's model (after it was opened).
     void refresh();
 
 private:
+    struct Description {
+        QString text;
+        int inputSurface = -1; // the surface in the tree (the input's), -1 when it has none
+    };
+    std::optional<Description> describe(bool output, double x, double y) const;
     void requestVisibility(const QList<int> &surfaces, bool visible);
     void onSelected(const QModelIndex &index);
     void highlightOutput(const QModelIndex &index);

@@ -1,7 +1,8 @@
 // The Model dock on modelA1: the tree lists the topology's entities, a check box hides a surface
 // in the view and Edit > Undo brings it back, the search keeps matching rows, the dock's box
-// toggle and View > Show Box agree, a selected surface is overlaid with its own triangles, and a
-// click on a triangle in the view names its surface in the status bar.
+// toggle and View > Show Box agree, a selected surface is overlaid with its own triangles, a
+// click on a triangle in the view names its surface in the status bar, and the pointer resting on
+// it names it in a tooltip.
 #include "support/test_data.h"
 
 #include "entity_highlight.h"
@@ -29,6 +30,7 @@
 #include <QSignalSpy>
 #include <QSortFilterProxyModel>
 #include <QSurfaceFormat>
+#include <QToolTip>
 #include <QTreeView>
 #include <QUndoStack>
 #include <QtTest>
@@ -298,6 +300,37 @@ private slots:
         QVERIFY2(status.startsWith(QStringLiteral("Output surface h2_model1, triangle ")),
                  qPrintable(status));
         QCOMPARE(m_panel->selectedIndex(), m_panel->treeModel()->indexOf(Kind::Surface, s));
+
+        // The pointer resting on the same spot describes the triangle in a tooltip, selecting
+        // nothing; any move or button press takes the tooltip away.
+        m_panel->selectEntity(Kind::Line, 0);
+        const QModelIndex line = m_panel->selectedIndex();
+        const qreal ratio = view->devicePixelRatioF();
+        const QPointF local(d[0] / ratio, (view->height() * ratio - d[1] - 1.0) / ratio);
+        QSignalSpy hovered(view, &VtkViewWidget::hovered);
+        QMouseEvent move(QEvent::MouseMove, local, view->mapToGlobal(local), Qt::NoButton,
+                         Qt::NoButton, Qt::NoModifier);
+        QApplication::sendEvent(view, &move);
+        QCOMPARE(hovered.count(), 0); // not on every move: the pointer must rest first
+        QVERIFY(hovered.wait(5 * VtkViewWidget::kHoverDelayMs));
+        QTRY_VERIFY(QToolTip::isVisible());
+        qInfo("tooltip: %s", qPrintable(QToolTip::text()));
+        QVERIFY2(QToolTip::text().startsWith(QStringLiteral("Output surface h2_model1, triangle ")),
+                 qPrintable(QToolTip::text()));
+        QCOMPARE(QToolTip::text(), status);
+        QCOMPARE(m_panel->selectedIndex(), line);
+        QVERIFY(m_tree->hover(true, 1.0, 1.0).isEmpty()); // the corner of the view: no surface
+        QTRY_VERIFY(!QToolTip::isVisible());
+        QCOMPARE(m_tree->hover(true, d[0], d[1]), status);
+        QTRY_VERIFY(QToolTip::isVisible());
+        QSignalSpy ended(view, &VtkViewWidget::hoverEnded);
+        QEvent leave(QEvent::Leave);
+        QApplication::sendEvent(view, &leave);
+        QCOMPARE(ended.count(), 1);
+        QTRY_VERIFY(!QToolTip::isVisible());
+        QTest::qWait(2 * VtkViewWidget::kHoverDelayMs);
+        QCOMPARE(hovered.count(), 1); // gone from the view, the pointer describes nothing
+
         m_tree->applySurfacesVisible({}, true); // the output follows the tree again
         for (int i = 0; i < int(output->surfaces.size()); ++i)
             QVERIFY(m_window->outputScene()->surfaceActor(i)->GetVisibility()
