@@ -2125,6 +2125,10 @@ Click to show it in the views</source>
         <source>another step is running</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Run %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RecentFiles</name>

@@ -2128,6 +2128,10 @@ Cliquer pour le montrer dans les vues</translation>
         <source>another step is running</source>
         <translation>une autre étape est en cours</translation>
     </message>
+    <message>
+        <source>Run %1</source>
+        <translation>Remaillage %1</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RecentFiles</name>

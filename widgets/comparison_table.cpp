@@ -60,6 +60,11 @@ QString ComparisonTable::cellText(Row row, Column column) const
     return m_table->item(row, column)->text();
 }
 
+QString ComparisonTable::columnName(Column column) const
+{
+    return m_table->horizontalHeaderItem(column)->text();
+}
+
 void ComparisonTable::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange)
@@ -69,7 +74,8 @@ void ComparisonTable::changeEvent(QEvent *event)
 
 void ComparisonTable::retranslate()
 {
-    m_table->setHorizontalHeaderLabels({tr("Input"), tr("Output")});
+    m_table->setHorizontalHeaderLabels({m_firstName.isEmpty() ? tr("Input") : m_firstName,
+                                        m_secondName.isEmpty() ? tr("Output") : m_secondName});
     m_table->setVerticalHeaderLabels(
         {tr("Vertices"), tr("Triangles"), tr("Surfaces"), tr("Lines"), tr("Corners"),
          tr("Min angle (°)"), tr("Angle < 30° (% triangles)"), tr("Mean quality Q"),
@@ -79,6 +85,15 @@ void ComparisonTable::retranslate()
     m_caption->setText(tr("As thesis Table 4.2: entities counted without the box; Q is 1 for an "
                           "equilateral triangle."));
     fill();
+}
+
+void ComparisonTable::setColumnNames(const QString &first, const QString &second)
+{
+    m_firstName = first;
+    m_secondName = second;
+    m_minAngle->setSeriesNames(first, second);
+    m_quality->setSeriesNames(first, second);
+    retranslate();
 }
 
 void ComparisonTable::fill()
@@ -120,7 +135,7 @@ void ComparisonTable::fill()
         set(HausdorffRow, c,
             row.hausdorffPctBbox < 0.0 ? QStringLiteral("—")
                                        : locale.toString(row.hausdorffPctBbox, 'f', 3));
-        const bool input = c == InputColumn;
+        const bool input = row.hausdorffPctBbox < 0.0; // the input model: it was not remeshed
         set(SamplingTimeRow, c,
             input ? QStringLiteral("—") : locale.toString(row.samplingSeconds, 'f', 2));
         set(MeshTimeRow, c, input ? QStringLiteral("—") : locale.toString(row.meshSeconds, 'f', 2));

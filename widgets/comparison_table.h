@@ -41,9 +41,13 @@ public:
 
     // std::nullopt clears.
     void setComparison(std::optional<ModelComparison> comparison);
+    // The columns' and histograms' names: "Input" and "Output" when empty, "Run 1" and "Run 3"
+    // when two runs are compared.
+    void setColumnNames(const QString &first, const QString &second);
     bool hasComparison() const { return m_comparison.has_value(); }
     // Text of a cell as shown.
     QString cellText(Row row, Column column) const;
+    QString columnName(Column column) const;
     // Min angle and Q distributions of both models, below the table.
     HistogramChart *minAngleChart() const { return m_minAngle; }
     HistogramChart *qualityChart() const { return m_quality; }
@@ -58,6 +62,8 @@ private:
     void fill();
 
     std::optional<ModelComparison> m_comparison;
+    QString m_firstName;
+    QString m_secondName;
     QTableWidget *m_table;
     QLabel *m_caption;
     QTabWidget *m_charts;

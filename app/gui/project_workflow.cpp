@@ -3,6 +3,7 @@
 #include "exaggeration_workflow.h"
 
 #include "app_settings.h"
+#include "comparison_table.h"
 #include "disabled_reason.h"
 #include "error_message.h"
 #include "model_scene.h"
@@ -17,6 +18,9 @@
 #include "view_pair.h"
 #include "vtk_view_widget.h"
 #include "workbench.h"
+
+#include "common/error.h"
+#include "quality/model_comparison.h"
 
 #include <QAction>
 #include <QDir>
@@ -200,6 +204,7 @@ void ProjectWorkflow::clear()
     m_runs.clear();
     m_shown = -1;
     m_compared = -1; // the Workbench puts the next model in the input view
+    m_remesh.comparisonTable()->setColumnNames({}, {});
     m_path.clear();
     emit pathChanged(m_path);
     setModified(false);
@@ -299,6 +304,7 @@ void ProjectWorkflow::showRuns(int input, int output)
         showRun(output);
     setInputRun(input);
     updateViewTitles(); // showRun named the input model
+    updateComparison();
     updatePanel();
     if (input >= 0)
         m_bench.setStatus(tr("Comparing run %1 with run %2")
@@ -320,7 +326,34 @@ void ProjectWorkflow::setInputRun(int index)
     m_bench.hidePosition();
     m_bench.updateLegend();
     updateViewTitles();
+    updateComparison();
     m_bench.render();
+}
+
+// Input vs Output compares what the views show: the run with its input, or two runs (figures of
+// both as measured when they were made; nothing is measured again).
+void ProjectWorkflow::updateComparison()
+{
+    ComparisonTable *table = m_remesh.comparisonTable();
+    if (m_shown < 0 || m_shown >= int(m_runs.size())) {
+        table->setColumnNames({}, {});
+        return;
+    }
+    const Run &shown = m_runs[std::size_t(m_shown)];
+    if (m_compared < 0) {
+        table->setColumnNames({}, {});
+        table->setComparison(shown.outcome.comparison);
+        return;
+    }
+    const Run &compared = m_runs[std::size_t(m_compared)];
+    table->setColumnNames(tr("Run %1").arg(compared.id), tr("Run %1").arg(shown.id));
+    try {
+        table->setComparison(
+            stratamesh::compareRuns(compared.outcome.comparison, shown.outcome.comparison));
+    } catch (const InputError &e) {
+        table->setComparison(std::nullopt);
+        m_bench.setStatus(QString::fromStdString(e.what()));
+    }
 }
 
 // While comparing, each view names its run; else RemeshWorkflow's titles (Input: …, Output: …).

@@ -100,6 +100,7 @@ private:
     void updatePanel();
     void setInputRun(int index);
     void updateViewTitles();
+    void updateComparison();
     void fail(const Message &message, const QString &status);
 
     OpenWorkflow &m_openWorkflow;

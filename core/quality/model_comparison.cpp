@@ -1,5 +1,7 @@
 #include "quality/model_comparison.h"
 
+#include "common/error.h"
+
 #include <cstdio>
 
 namespace stratamesh {
@@ -37,6 +39,23 @@ ModelComparison compareModels(const Model &input, const Model &output,
     c.outputQuality = qualityHistogram(output);
     c.hausdorff = measured;
     c.output.hausdorffPctBbox = c.hausdorff.symmetricPctBbox;
+    return c;
+}
+
+ModelComparison compareRuns(const ModelComparison &first, const ModelComparison &second)
+{
+    if (first.input.mesh.vertices != second.input.mesh.vertices
+        || first.input.mesh.triangles != second.input.mesh.triangles
+        || first.input.label != second.input.label)
+        throw InputError("the two runs were not made from the same input model");
+    ModelComparison c;
+    c.input = first.output;
+    c.output = second.output;
+    c.hausdorff = second.hausdorff;
+    c.inputMinAngle = first.outputMinAngle;
+    c.outputMinAngle = second.outputMinAngle;
+    c.inputQuality = first.outputQuality;
+    c.outputQuality = second.outputQuality;
     return c;
 }
 

@@ -46,6 +46,12 @@ ModelComparison compareModels(const Model &input, const Model &output,
 ModelComparison compareModels(const Model &input, const Model &output,
                               const HausdorffResult &measured);
 
+// Two remeshes of one input side by side (a run compared with another): `first` in the input
+// column, `second` in the output column, each with its figures, histograms and Hausdorff distance
+// to the input they were both made from; the Hausdorff result kept is the second's. Nothing is
+// measured again. Throws InputError when the two were not made from the same input model.
+ModelComparison compareRuns(const ModelComparison &first, const ModelComparison &second);
+
 // A plain-text table in the layout of Table 4.2, one line per row (Markdown pipes).
 std::string formatTable42(const std::vector<ComparisonRow> &rows);
 

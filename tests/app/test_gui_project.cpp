@@ -3,6 +3,7 @@
 // reopened in a new window with the same runs, figures, decisions and output model, and no engine
 // run; a moved input located through the callback; a moved runs folder, a newer schema and
 // malformed JSON refused with messages naming the cause.
+#include "comparison_table.h"
 #include "ledger_panel.h"
 #include "ledger_table_model.h"
 #include "main_window.h"
@@ -371,6 +372,18 @@ private slots:
                      && outputTitle->text().contains(trianglesB),
                  qPrintable(outputTitle->text()));
         QVERIFY(panel->inputButton()->isEnabled());
+        // Input vs Output compares the two runs shown, with the figures each was made with.
+        const ComparisonTable *table = window->findChild<ComparisonTable *>();
+        QVERIFY(table && table->hasComparison());
+        const auto triangles = [&](ComparisonTable::Column c) {
+            return QLocale().toUInt(table->cellText(ComparisonTable::TrianglesRow, c));
+        };
+        QCOMPARE(table->columnName(ComparisonTable::InputColumn), QStringLiteral("Run 1"));
+        QCOMPARE(table->columnName(ComparisonTable::OutputColumn), QStringLiteral("Run 2"));
+        QCOMPARE(std::size_t(triangles(ComparisonTable::InputColumn)), runA->triangleCount());
+        QCOMPARE(std::size_t(triangles(ComparisonTable::OutputColumn)), runB->triangleCount());
+        QVERIFY(table->cellText(ComparisonTable::HausdorffRow, ComparisonTable::InputColumn)
+                != QStringLiteral("—"));
         QVERIFY(panel->table()->item(0, 0)->text().startsWith(QStringLiteral("◀")));
         QVERIFY(panel->table()->item(1, 0)->text().startsWith(QStringLiteral("▶")));
         const QString shots = QStringLiteral(STRATAMESH_SCREENSHOT_DIR);
@@ -389,6 +402,11 @@ private slots:
         QVERIFY2(inputTitle->text().startsWith(QStringLiteral("Input: ")),
                  qPrintable(inputTitle->text()));
         QVERIFY(!panel->inputButton()->isEnabled());
+        QCOMPARE(table->columnName(ComparisonTable::InputColumn), QStringLiteral("Input"));
+        QCOMPARE(std::size_t(triangles(ComparisonTable::InputColumn)), input->triangleCount());
+        QCOMPARE(std::size_t(triangles(ComparisonTable::OutputColumn)), runB->triangleCount());
+        QCOMPARE(table->cellText(ComparisonTable::HausdorffRow, ComparisonTable::InputColumn),
+                 QStringLiteral("—"));
         undo->redo();
         QCOMPARE(window->scene()->model(), runA);
         QVERIFY(inputTitle->text().startsWith(QStringLiteral("Run 1: ")));
@@ -398,6 +416,9 @@ private slots:
         QCOMPARE(window->scene()->model(), runB);
         QCOMPARE(window->outputScene()->model(), runA);
         QVERIFY(outputTitle->text().startsWith(QStringLiteral("Run 1: ")));
+        QCOMPARE(table->columnName(ComparisonTable::InputColumn), QStringLiteral("Run 2"));
+        QCOMPARE(std::size_t(triangles(ComparisonTable::InputColumn)), runB->triangleCount());
+        QCOMPARE(std::size_t(triangles(ComparisonTable::OutputColumn)), runA->triangleCount());
         panel->inputButton()->click();
         QCOMPARE(project->comparedRun(), -1);
         QCOMPARE(window->scene()->model(), input);

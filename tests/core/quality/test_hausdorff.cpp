@@ -1,4 +1,5 @@
-// Hausdorff distance (thesis Table 4.2) on shapes whose distance is known exactly.
+// Hausdorff distance (thesis Table 4.2) on shapes whose distance is known exactly, and the
+// comparison rows built on it (input vs output, run vs run).
 #include "model/topology.h"
 #include "quality/hausdorff.h"
 #include "quality/model_comparison.h"
@@ -105,6 +106,23 @@ private slots:
         QCOMPARE(restored.output.hausdorffPctBbox, 1.25);
         QCOMPARE(restored.output.mesh.triangles, std::size_t(4));
         QCOMPARE(restored.outputQuality.total(), std::size_t(4));
+
+        // Two runs of the same input side by side: each column is a run, with its own distance
+        // to the input; nothing of the input is left in the table.
+        const Model same = recoverTopology(modelOf({rectangle(0, 2, 0, 2, 0)}));
+        const ModelComparison flat = compareModels(a, same, HausdorffParams{4000});
+        const ModelComparison runs = compareRuns(restored, flat);
+        QCOMPARE(runs.input.mesh.triangles, std::size_t(4));
+        QCOMPARE(runs.input.hausdorffPctBbox, 1.25);
+        QCOMPARE(runs.output.mesh.triangles, std::size_t(2));
+        QVERIFY(runs.output.hausdorffPctBbox >= 0.0 && runs.output.hausdorffPctBbox < 1e-9);
+        QCOMPARE(runs.inputQuality.total(), std::size_t(4));
+        QCOMPARE(runs.outputQuality.total(), std::size_t(2));
+        QCOMPARE(runs.inputMinAngle.total(), std::size_t(4));
+        QCOMPARE(runs.hausdorff.symmetricPctBbox, flat.hausdorff.symmetricPctBbox);
+        // Runs of different inputs do not go side by side.
+        const ModelComparison other = compareModels(b, a, HausdorffParams{400});
+        QVERIFY_THROWS_EXCEPTION(InputError, compareRuns(c, other));
     }
 
     void emptyModelRefused()
