@@ -473,6 +473,22 @@ per cell</source>
         <source>Complexity analysis cancelled: no result, the model is unchanged</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>no model open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no complexity analysis is running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no complexity analysis yet</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::Core</name>
@@ -896,6 +912,14 @@ per cell</source>
         <source>Could not export</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>no model open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::FeatureLegend</name>
@@ -1193,6 +1217,22 @@ angle (°)</source>
         <source>Hybrid meshing cancelled: no mesh</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>no model open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no hybrid mesh is being built</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no hybrid mesh yet</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::LedgerPanel</name>
@@ -1456,6 +1496,14 @@ angle (°)</source>
     </message>
     <message>
         <source>Move the input and output views together; unchecked, each view has its own camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>nothing to undo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>nothing to redo</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2152,6 +2200,10 @@ Click to show it in the views</source>
         <source>Forget the files opened before</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>no file opened yet</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RemeshController</name>
@@ -2339,6 +2391,10 @@ Click to show it in the views</source>
     </message>
     <message>
         <source>no remeshed model yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no remesh is running</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2905,6 +2961,18 @@ angle (°)</source>
         <source>Tetrahedralisation cancelled: the previous meshes, if any, are kept</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>no model open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen is not running</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ViewWorkflow</name>
@@ -3049,6 +3117,18 @@ angle (°)</source>
     </message>
     <message>
         <source>Remove the highlight of a histogram bar&apos;s triangles or of the worst triangle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no model open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no remeshed model yet</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

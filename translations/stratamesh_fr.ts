@@ -474,6 +474,22 @@ par cellule</translation>
         <source>Complexity analysis cancelled: no result, the model is unchanged</source>
         <translation>Analyse de complexité annulée : aucun résultat, le modèle est inchangé</translation>
     </message>
+    <message>
+        <source>no model open</source>
+        <translation>aucun modèle ouvert</translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation>une autre étape est en cours</translation>
+    </message>
+    <message>
+        <source>no complexity analysis is running</source>
+        <translation>aucune analyse de complexité n&apos;est en cours</translation>
+    </message>
+    <message>
+        <source>no complexity analysis yet</source>
+        <translation>pas encore d&apos;analyse de complexité</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::Core</name>
@@ -897,6 +913,14 @@ par cellule</translation>
         <source>Could not export</source>
         <translation>Impossible d&apos;exporter</translation>
     </message>
+    <message>
+        <source>no model open</source>
+        <translation>aucun modèle ouvert</translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation>une autre étape est en cours</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::FeatureLegend</name>
@@ -1195,6 +1219,22 @@ min. (°)</translation>
         <source>Hybrid meshing cancelled: no mesh</source>
         <translation>Maillage hybride annulé : aucun maillage</translation>
     </message>
+    <message>
+        <source>no model open</source>
+        <translation>aucun modèle ouvert</translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation>une autre étape est en cours</translation>
+    </message>
+    <message>
+        <source>no hybrid mesh is being built</source>
+        <translation>aucun maillage hybride n&apos;est en construction</translation>
+    </message>
+    <message>
+        <source>no hybrid mesh yet</source>
+        <translation>pas encore de maillage hybride</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::LedgerPanel</name>
@@ -1459,6 +1499,14 @@ min. (°)</translation>
     <message>
         <source>Move the input and output views together; unchecked, each view has its own camera</source>
         <translation>Déplacer ensemble les vues d’entrée et de sortie ; décoché, chaque vue a sa propre caméra</translation>
+    </message>
+    <message>
+        <source>nothing to undo</source>
+        <translation>rien à annuler</translation>
+    </message>
+    <message>
+        <source>nothing to redo</source>
+        <translation>rien à rétablir</translation>
     </message>
 </context>
 <context>
@@ -2155,6 +2203,10 @@ Cliquer pour le montrer dans les vues</translation>
         <source>Forget the files opened before</source>
         <translation>Oublier les fichiers ouverts auparavant</translation>
     </message>
+    <message>
+        <source>no file opened yet</source>
+        <translation>aucun fichier ouvert auparavant</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::RemeshController</name>
@@ -2343,6 +2395,10 @@ Cliquer pour le montrer dans les vues</translation>
     <message>
         <source>no remeshed model yet</source>
         <translation>pas encore de modèle remaillé</translation>
+    </message>
+    <message>
+        <source>no remesh is running</source>
+        <translation>aucun remaillage n&apos;est en cours</translation>
     </message>
 </context>
 <context>
@@ -2909,6 +2965,18 @@ min. (°)</translation>
         <source>Tetrahedralisation cancelled: the previous meshes, if any, are kept</source>
         <translation>Tétraédrisation annulée : les maillages précédents, s&apos;il y en a, sont conservés</translation>
     </message>
+    <message>
+        <source>no model open</source>
+        <translation>aucun modèle ouvert</translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation>une autre étape est en cours</translation>
+    </message>
+    <message>
+        <source>TetGen is not running</source>
+        <translation>TetGen n&apos;est pas en cours</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ViewWorkflow</name>
@@ -3055,6 +3123,18 @@ min. (°)</translation>
     <message>
         <source>Remove the highlight of a histogram bar&apos;s triangles or of the worst triangle</source>
         <translation>Retirer la mise en évidence des triangles d’une barre d’histogramme ou du pire triangle</translation>
+    </message>
+    <message>
+        <source>no model open</source>
+        <translation>aucun modèle ouvert</translation>
+    </message>
+    <message>
+        <source>another step is running</source>
+        <translation>une autre étape est en cours</translation>
+    </message>
+    <message>
+        <source>no remeshed model yet</source>
+        <translation>pas encore de modèle remaillé</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 #include "complexity_controller.h"
 #include "complexity_dialog.h"
 #include "complexity_panel.h"
+#include "disabled_reason.h"
 #include "error_message.h"
 #include "vtk_view_widget.h"
 #include "workbench.h"
@@ -37,6 +38,13 @@ ComplexityWorkflow::ComplexityWorkflow(Workbench &bench, QObject *parent)
     connect(m_cancel, &QAction::triggered, this, &ComplexityWorkflow::cancel);
     m_export->setEnabled(false);
     connect(m_export, &QAction::triggered, this, &ComplexityWorkflow::chooseCellsFile);
+    setDisabledReason(m_analyse, [this] {
+        return !m_bench.model() ? tr("no model open") : tr("another step is running");
+    });
+    setDisabledReason(m_cancel, [] { return tr("no complexity analysis is running"); });
+    setDisabledReason(m_export, [this] {
+        return !m_outcome ? tr("no complexity analysis yet") : tr("another step is running");
+    });
 
     m_dock->setObjectName(QStringLiteral("ComplexityDock"));
     m_dock->setWidget(m_panel);

@@ -34,6 +34,8 @@ void explain(QAction *action, const std::function<QString()> &reason)
 
 void setDisabledReason(QAction *action, std::function<QString()> reason)
 {
+    // A second reason replaces the first: both would rewrite the tooltip after each other forever.
+    QObject::disconnect(action, &QAction::changed, action, nullptr);
     QObject::connect(action, &QAction::changed, action,
                      [action, reason] { explain(action, reason); });
     explain(action, reason);

@@ -11,6 +11,7 @@ class QAction;
 
 namespace stratamesh {
 
+// A later call for the same action replaces its reason.
 void setDisabledReason(QAction *action, std::function<QString()> reason);
 
 } // namespace stratamesh

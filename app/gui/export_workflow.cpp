@@ -1,5 +1,6 @@
 #include "export_workflow.h"
 
+#include "disabled_reason.h"
 #include "error_message.h"
 #include "export_controller.h"
 #include "hybrid_workflow.h"
@@ -48,6 +49,9 @@ ExportWorkflow::ExportWorkflow(Workbench &bench, RemeshWorkflow &remesh,
     m_export->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
     m_export->setEnabled(false);
     connect(m_export, &QAction::triggered, this, &ExportWorkflow::chooseExport);
+    setDisabledReason(m_export, [this] {
+        return !m_bench.model() ? tr("no model open") : tr("another step is running");
+    });
     connect(m_controller, &ExportController::succeeded, this, &ExportWorkflow::onSucceeded);
     connect(m_controller, &ExportController::failed, this, &ExportWorkflow::onFailed);
     // A write can take seconds for a large mesh: the window stays live, with a busy cursor.

@@ -1,5 +1,6 @@
 #include "hybrid_workflow.h"
 
+#include "disabled_reason.h"
 #include "error_message.h"
 #include "hybrid_controller.h"
 #include "hybrid_dialog.h"
@@ -59,6 +60,13 @@ HybridWorkflow::HybridWorkflow(Workbench &bench, const RemeshWorkflow &remesh,
     m_save->setIcon(style->standardIcon(QStyle::SP_DialogSaveButton));
     m_save->setEnabled(false);
     connect(m_save, &QAction::triggered, this, &HybridWorkflow::chooseFile);
+    setDisabledReason(m_hybrid, [this] {
+        return !m_bench.model() ? tr("no model open") : tr("another step is running");
+    });
+    setDisabledReason(m_cancel, [] { return tr("no hybrid mesh is being built"); });
+    setDisabledReason(m_save, [this] {
+        return !m_outcome ? tr("no hybrid mesh yet") : tr("another step is running");
+    });
     m_scenes->setColouring(m_panel->colouring());
 
     m_dock->setObjectName(QStringLiteral("HybridMeshDock"));

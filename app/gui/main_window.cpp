@@ -3,6 +3,7 @@
 #include "about_dialog.h"
 #include "app_settings.h"
 #include "complexity_workflow.h"
+#include "disabled_reason.h"
 #include "exaggeration_workflow.h"
 #include "export_workflow.h"
 #include "hybrid_workflow.h"
@@ -180,6 +181,8 @@ void MainWindow::createActions()
     m_undo->setShortcut(QKeySequence::Undo);
     m_redo = m_bench->undoStack()->createRedoAction(this);
     m_redo->setShortcut(QKeySequence::Redo);
+    setDisabledReason(m_undo, [] { return tr("nothing to undo"); });
+    setDisabledReason(m_redo, [] { return tr("nothing to redo"); });
 
     m_aboutQt = new QAction(this);
     m_aboutQt->setMenuRole(QAction::AboutQtRole);

@@ -1,6 +1,7 @@
 #include "recent_files.h"
 
 #include "app_settings.h"
+#include "disabled_reason.h"
 
 #include <QAction>
 #include <QDir>
@@ -23,6 +24,7 @@ RecentFiles::RecentFiles(QWidget *parent)
     m_menu->setToolTipsVisible(true); // "File not found" on a file gone
     connect(m_menu, &QMenu::aboutToShow, this, &RecentFiles::refresh);
     connect(m_clear, &QAction::triggered, this, &RecentFiles::clear);
+    setDisabledReason(m_clear, [] { return tr("no file opened yet"); });
     retranslate();
 }
 

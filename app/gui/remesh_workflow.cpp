@@ -68,6 +68,7 @@ RemeshWorkflow::RemeshWorkflow(Workbench &bench, QObject *parent)
         return !m_outcome ? tr("no remeshed model yet") : tr("another step is running");
     });
     setDisabledReason(m_exportReview, [] { return tr("no remeshed model yet"); });
+    setDisabledReason(m_cancel, [] { return tr("no remesh is running"); });
 
     m_ledgerDock->setObjectName(QStringLiteral("ReviewDock"));
     m_ledgerDock->setWidget(m_review);

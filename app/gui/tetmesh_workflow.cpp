@@ -1,5 +1,6 @@
 #include "tetmesh_workflow.h"
 
+#include "disabled_reason.h"
 #include "model_scene.h"
 #include "remesh_workflow.h"
 #include "tet_mesh_pair.h"
@@ -31,6 +32,10 @@ TetmeshWorkflow::TetmeshWorkflow(Workbench &bench, const RemeshWorkflow &remesh,
     m_cancel->setIcon(bench.window()->style()->standardIcon(QStyle::SP_DialogCancelButton));
     m_cancel->setEnabled(false);
     connect(m_cancel, &QAction::triggered, this, &TetmeshWorkflow::cancel);
+    setDisabledReason(m_tetmesh, [this] {
+        return !m_bench.model() ? tr("no model open") : tr("another step is running");
+    });
+    setDisabledReason(m_cancel, [] { return tr("TetGen is not running"); });
 
     m_dock->setObjectName(QStringLiteral("TetrahedraDock"));
     m_dock->setWidget(m_panel);

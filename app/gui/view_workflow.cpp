@@ -1,6 +1,7 @@
 #include "view_workflow.h"
 
 #include "comparison_table.h"
+#include "disabled_reason.h"
 #include "error_message.h"
 #include "histogram_chart.h"
 #include "hybrid_panel.h"
@@ -152,6 +153,21 @@ ViewWorkflow::ViewWorkflow(Workbench &bench, RemeshWorkflow &remesh, TetmeshWork
     connect(m_nextWorst, &QAction::triggered, this, &ViewWorkflow::nextWorst);
     m_clearHighlight->setShortcut(QKeySequence(Qt::Key_Escape));
     connect(m_clearHighlight, &QAction::triggered, this, &ViewWorkflow::clearHighlight);
+    const auto noModelOrBusy = [this] {
+        return !m_bench.model() ? tr("no model open") : tr("another step is running");
+    };
+    for (QAction *action : m_colourActions)
+        if (action != m_colourActions[int(Colouring::Distance)])
+            setDisabledReason(action, noModelOrBusy);
+    setDisabledReason(m_colourActions[int(Colouring::Distance)], [this] {
+        return !m_bench.model() ? tr("no model open")
+               : !output()      ? tr("no remeshed model yet")
+                                : tr("another step is running");
+    });
+    setDisabledReason(m_reverse, noModelOrBusy);
+    setDisabledReason(m_nextWorst, noModelOrBusy);
+    setDisabledReason(m_clip, [] { return tr("no model open"); });
+    setDisabledReason(m_clearHighlight, [] { return tr("no model open"); });
 
     connectCharts();
     // One plane: a change made in the tet meshes' own controls moves it in every view too.

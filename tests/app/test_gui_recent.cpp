@@ -27,6 +27,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <functional>
+
 using namespace stratamesh;
 
 namespace {
@@ -185,6 +187,40 @@ private slots:
         QCOMPARE(remesh->saveAction()->toolTip(),
                  QStringLiteral("Save Remeshed Model As…: no remeshed model yet"));
         QCOMPARE(window.projectWorkflow()->saveAction()->toolTip(), QStringLiteral("Save Project"));
+    }
+
+    // Every disabled entry of every menu says why, with no model and with one: a greyed entry is
+    // never a riddle. (Recent files that are gone say so in their own words.)
+    void everyDisabledMenuEntrySaysWhy()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        const auto unexplained = [&window] {
+            QStringList silent;
+            std::function<void(const QList<QAction *> &)> visit =
+                [&](const QList<QAction *> &list) {
+                    for (QAction *a : list) {
+                        if (a->menu()) {
+                            visit(a->menu()->actions());
+                            continue;
+                        }
+                        if (a->isSeparator() || a->isEnabled() || a->text().isEmpty())
+                            continue;
+                        QString text = a->text();
+                        text.remove(QLatin1Char('&'));
+                        if (!a->toolTip().startsWith(text + QStringLiteral(": ")))
+                            silent << text + QStringLiteral(" [") + a->toolTip() + QLatin1Char(']');
+                    }
+                };
+            visit(window.menuBar()->actions());
+            return silent;
+        };
+        QStringList silent = unexplained();
+        QVERIFY2(silent.isEmpty(), qPrintable(silent.join(QStringLiteral("; "))));
+        QVERIFY(openAndWait(window, m_second));
+        silent = unexplained();
+        QVERIFY2(silent.isEmpty(), qPrintable(silent.join(QStringLiteral("; "))));
     }
 
     void atMostEightFiles()
