@@ -2,6 +2,7 @@
 // and its remesh: the values drawn are the core's, bad is warm, undo restores the colouring, a bar
 // selects its count, Next Worst goes by increasing Q, the clip cuts both views.
 #include "comparison_table.h"
+#include "gui_fixture.h"
 #include "histogram_chart.h"
 #include "hybrid_panel.h"
 #include "hybrid_workflow.h"
@@ -66,15 +67,8 @@ private slots:
         m_window = std::make_unique<MainWindow>();
         m_window->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
-        m_window->openSample();
-        QVERIFY(loaded.wait(kTimeoutMs) && loaded.first().first().toBool());
-        RemeshParams params;
-        params.sites = 300;
-        params.iterations = 20;
-        QSignalSpy finished(m_window->remeshWorkflow(), &RemeshWorkflow::finished);
-        QVERIFY(m_window->remeshWorkflow()->start(params));
-        QVERIFY(finished.wait(kTimeoutMs) && finished.first().first().toBool());
+        QVERIFY(test::openSample(*m_window, kTimeoutMs));
+        QVERIFY(test::remeshOpenModel(*m_window, 300, 20, kTimeoutMs));
         m_view = m_window->viewWorkflow();
         QVERIFY(m_view);
     }

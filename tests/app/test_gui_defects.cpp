@@ -10,6 +10,7 @@
 #include "comparison_table.h"
 #include "complexity_controller.h"
 #include "complexity_workflow.h"
+#include "gui_fixture.h"
 #include "histogram_chart.h"
 #include "ledger_table_model.h"
 #include "main_window.h"
@@ -313,15 +314,7 @@ private:
         return loaded.wait(kTimeoutMs) && loaded.first().first().toBool();
     }
 
-    bool remesh()
-    {
-        RemeshParams params;
-        params.sites = 300;
-        params.iterations = 20;
-        QSignalSpy finished(m_window->remeshWorkflow(), &RemeshWorkflow::finished);
-        return m_window->remeshWorkflow()->start(params) && finished.wait(kTimeoutMs)
-               && finished.first().first().toBool();
-    }
+    bool remesh() { return test::remeshOpenModel(*m_window, 300, 20, kTimeoutMs); }
 
     bool runComplexity(const ComplexityParams &params)
     {

@@ -2,6 +2,7 @@
 // triangle pick still right in model coordinates, undoable, kept by a project, true scale again
 // for another model. View > Link Cameras: one camera for both views, or one each.
 #include "exaggeration_workflow.h"
+#include "gui_fixture.h"
 #include "main_window.h"
 #include "model_scene.h"
 #include "open_workflow.h"
@@ -64,15 +65,8 @@ private slots:
         m_window->workbench()->setAsk([](const QString &) { return QMessageBox::Discard; });
         m_window->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-        QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
-        m_window->openSample();
-        QVERIFY(loaded.wait(kTimeoutMs) && loaded.first().first().toBool());
-        RemeshParams params;
-        params.sites = 300;
-        params.iterations = 15;
-        QSignalSpy finished(m_window->remeshWorkflow(), &RemeshWorkflow::finished);
-        QVERIFY(m_window->remeshWorkflow()->start(params));
-        QVERIFY(finished.wait(kTimeoutMs) && finished.first().first().toBool());
+        QVERIFY(test::openSample(*m_window, kTimeoutMs));
+        QVERIFY(test::remeshOpenModel(*m_window, 300, 15, kTimeoutMs));
         QTest::qWait(200);
     }
 
@@ -239,9 +233,7 @@ private slots:
 
     void anotherModelIsTrueScale()
     {
-        QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
-        m_window->openSample();
-        QVERIFY(loaded.wait(kTimeoutMs) && loaded.first().first().toBool());
+        QVERIFY(test::openSample(*m_window, kTimeoutMs));
         QCOMPARE(m_window->exaggerationWorkflow()->exaggeration(), 1.0);
         QCOMPARE(m_window->view()->verticalExaggeration(), 1.0);
     }

@@ -2,6 +2,7 @@
 // themselves, and each status following what was done (validity, complexity, remesh, volume).
 #include "complexity_workflow.h"
 #include "export_workflow.h"
+#include "gui_fixture.h"
 #include "hybrid_workflow.h"
 #include "main_window.h"
 #include "open_workflow.h"
@@ -62,21 +63,14 @@ private slots:
 
     void statusesFollowTheWork()
     {
-        QSignalSpy loaded(m_window->openWorkflow(), &OpenWorkflow::finished);
-        m_window->openSample();
-        QVERIFY(loaded.wait(kTimeoutMs) && loaded.first().first().toBool());
+        QVERIFY(test::openSample(*m_window, kTimeoutMs));
         StepList *steps = m_window->stepsWorkflow()->steps();
         QVERIFY(steps->isDone(StepsWorkflow::Check));
         QVERIFY2(steps->statusText(StepsWorkflow::Check).contains(QLatin1String("no validity")),
                  qPrintable(steps->statusText(StepsWorkflow::Check)));
         QVERIFY(!steps->isDone(StepsWorkflow::Remesh));
 
-        RemeshParams params;
-        params.sites = 300;
-        params.iterations = 20;
-        QSignalSpy finished(m_window->remeshWorkflow(), &RemeshWorkflow::finished);
-        QVERIFY(m_window->remeshWorkflow()->start(params));
-        QVERIFY(finished.wait(kTimeoutMs) && finished.first().first().toBool());
+        QVERIFY(test::remeshOpenModel(*m_window, 300, 20, kTimeoutMs));
         QVERIFY(steps->isDone(StepsWorkflow::Remesh));
         const auto &outcome = m_window->remeshWorkflow()->outcome();
         const QString status = steps->statusText(StepsWorkflow::Remesh);
