@@ -107,7 +107,8 @@ void Workbench::showPosition(const Vec3 &position, double radius)
     const double r = std::clamp(radius, 0.01 * diagonal, 0.03 * diagonal);
     m_inputMarker->show(position, r);
     m_outputMarker->show(position, r);
-    // The views share one camera: close in on the spot in both, a fifth of the model around it.
+    // Close in on the spot in both views, a fifth of the model around it: through the one camera
+    // they share, or through each one's own when View > Link Cameras is off.
     const double centre[3] = {position.x(), position.y(), position.z()};
     inputView()->flyTo(centre, 0.4 * diagonal);
     if (m_views->camerasLinked())
