@@ -26,9 +26,8 @@ namespace stratamesh::cli {
 
 namespace {
 
-QJsonObject qualityJson(const VolumeMesh &mesh)
+QJsonObject typesJson(const std::array<TypeQuality, 3> &byType)
 {
-    const auto byType = qualityByType(mesh);
     QJsonObject q;
     for (CellType t : {CellType::Tet, CellType::Pyramid, CellType::Prism}) {
         const TypeQuality &s = byType[static_cast<int>(t)];
@@ -42,6 +41,22 @@ QJsonObject qualityJson(const VolumeMesh &mesh)
         q[cellTypeName(t)] = o;
     }
     return q;
+}
+
+QJsonObject qualityJson(const VolumeMesh &mesh)
+{
+    return typesJson(qualityByType(mesh));
+}
+
+// Cells and quality per type, region by region (the thin layers are where prisms should win).
+QJsonArray regionsJson(const VolumeMesh &mesh)
+{
+    const auto byRegion = qualityByRegionAndType(mesh);
+    QJsonArray regions;
+    for (std::size_t r = 0; r < byRegion.size(); ++r)
+        regions.append(QJsonObject{{"name", QString::fromStdString(mesh.regionNames[r])},
+                                   {"quality", typesJson(byRegion[r])}});
+    return regions;
 }
 
 } // namespace
@@ -152,6 +167,7 @@ int runHybrid(CommandArgs &args)
         {"tetgen_outcome", tetgenOutcomeName(r.tetgenOutcome)},
         {"max_quad_warp_deg", r.validity.maxQuadWarpDegrees},
         {"quality", qualityJson(m)},
+        {"regions", regionsJson(m)},
         {"time_s", t.totalSeconds},
         {"stages_s", QJsonObject{{"cvt", t.cvtSeconds},
                                  {"surface_sites", t.surfaceSitesSeconds},

@@ -9,6 +9,7 @@
 #include "cli_output.h"
 #include "command_args.h"
 #include "common/error.h"
+#include "hybrid/cell_quality.h"
 #include "io/formats.h"
 #include "io/mesh_writer.h"
 #include "io/model_reader.h"
@@ -40,14 +41,25 @@ QJsonArray stringArray(const std::vector<std::string> &items)
     return a;
 }
 
+// Per region, with the dihedral range and slivers, as `hybrid --report` gives them: the two
+// meshes of one model compare region by region (thin layers against the rest).
 QJsonArray regionsJson(const Model &model, const TetmeshSide &side)
 {
+    const auto quality = qualityByRegionAndType(side.result.mesh);
     QJsonArray regions;
-    for (std::size_t r = 0; r < model.regions.size(); ++r)
-        regions.append(QJsonObject{{"name", QString::fromStdString(model.regions[r].name)},
-                                   {"tets", static_cast<qint64>(side.regions[r].tets)},
-                                   {"volume", side.regions[r].volume},
-                                   {"brep_volume", side.brepVolumes[r]}});
+    for (std::size_t r = 0; r < model.regions.size(); ++r) {
+        QJsonObject o{{"name", QString::fromStdString(model.regions[r].name)},
+                      {"tets", static_cast<qint64>(side.regions[r].tets)},
+                      {"volume", side.regions[r].volume},
+                      {"brep_volume", side.brepVolumes[r]}};
+        if (r < quality.size() && quality[r][int(CellType::Tet)].cells > 0) {
+            const TypeQuality &q = quality[r][int(CellType::Tet)];
+            o["min_dihedral_deg"] = q.minDihedral;
+            o["max_dihedral_deg"] = q.maxDihedral;
+            o["slivers"] = static_cast<qint64>(q.slivers);
+        }
+        regions.append(o);
+    }
     return regions;
 }
 

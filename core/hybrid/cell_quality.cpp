@@ -51,17 +51,36 @@ DihedralRange cellDihedrals(const VolumeMesh &mesh, const Cell &cell)
     return r;
 }
 
+namespace {
+
+void addCell(TypeQuality &t, CellType type, const DihedralRange &r)
+{
+    ++t.cells;
+    t.minDihedral = std::min(t.minDihedral, r.minDegrees);
+    t.maxDihedral = std::max(t.maxDihedral, r.maxDegrees);
+    if (type == CellType::Tet && (r.minDegrees < 5.0 || r.maxDegrees > 175.0))
+        ++t.slivers;
+}
+
+} // namespace
+
 std::array<TypeQuality, 3> qualityByType(const VolumeMesh &mesh)
 {
     std::array<TypeQuality, 3> q;
-    for (const Cell &c : mesh.cells) {
-        TypeQuality &t = q[static_cast<int>(c.type)];
-        const DihedralRange r = cellDihedrals(mesh, c);
-        ++t.cells;
-        t.minDihedral = std::min(t.minDihedral, r.minDegrees);
-        t.maxDihedral = std::max(t.maxDihedral, r.maxDegrees);
-        if (c.type == CellType::Tet && (r.minDegrees < 5.0 || r.maxDegrees > 175.0))
-            ++t.slivers;
+    for (const Cell &c : mesh.cells)
+        addCell(q[static_cast<int>(c.type)], c.type, cellDihedrals(mesh, c));
+    return q;
+}
+
+std::vector<std::array<TypeQuality, 3>> qualityByRegionAndType(const VolumeMesh &mesh)
+{
+    std::vector<std::array<TypeQuality, 3>> q(mesh.regionNames.size());
+    for (std::size_t i = 0; i < mesh.cells.size() && i < mesh.cellRegion.size(); ++i) {
+        const int region = mesh.cellRegion[i];
+        if (region < 0 || std::size_t(region) >= q.size())
+            continue;
+        const Cell &c = mesh.cells[i];
+        addCell(q[std::size_t(region)][static_cast<int>(c.type)], c.type, cellDihedrals(mesh, c));
     }
     return q;
 }

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <vector>
 
 namespace stratamesh {
 
@@ -27,5 +28,9 @@ struct TypeQuality {
 
 // Indexed by CellType (Tet, Pyramid, Prism).
 std::array<TypeQuality, 3> qualityByType(const VolumeMesh &mesh);
+
+// The same per region (one entry per VolumeMesh::regionNames; untagged cells are left out): the
+// thesis's claim is about the thin layers, so the comparison with TetGen is made region by region.
+std::vector<std::array<TypeQuality, 3>> qualityByRegionAndType(const VolumeMesh &mesh);
 
 } // namespace stratamesh

@@ -8,8 +8,10 @@
 #include "support/test_data.h"
 
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QMap>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
@@ -78,6 +80,31 @@ private slots:
             QVERIFY2(prisms >= 150, qPrintable(QString::number(prisms)));
             QVERIFY(pyramids > 0);
             QCOMPARE(r["repaired"].toInteger(), qint64(0));
+            // Region by region: the four regions of modelA1, every cell in one of them, and no
+            // region's angles outside the whole mesh's.
+            const QJsonArray regions = r["regions"].toArray();
+            QCOMPARE(regions.size(), 4);
+            QMap<QString, qint64> byType;
+            for (const QJsonValue &v : regions) {
+                const QJsonObject q = v["quality"].toObject();
+                QVERIFY(!v["name"].toString().isEmpty());
+                for (const QString &type : q.keys()) {
+                    const QJsonObject t = q[type].toObject(), all = r["quality"][type].toObject();
+                    byType[type] += t["cells"].toInteger();
+                    if (t["cells"].toInteger() > 0) {
+                        QVERIFY(t["min_dihedral_deg"].toDouble()
+                                >= all["min_dihedral_deg"].toDouble());
+                        QVERIFY(t["max_dihedral_deg"].toDouble()
+                                <= all["max_dihedral_deg"].toDouble());
+                    }
+                }
+                qInfo("%s: %lld tets, %lld prisms, %lld pyramids", qPrintable(v["name"].toString()),
+                      q["tet"]["cells"].toInteger(), q["prism"]["cells"].toInteger(),
+                      q["pyramid"]["cells"].toInteger());
+            }
+            QCOMPARE(byType.value("tet"), tets);
+            QCOMPARE(byType.value("prism"), prisms);
+            QCOMPARE(byType.value("pyramid"), pyramids);
             checkCavityWithTetgen(poly);
             const VolumeMesh m = readVolumeMesh(out.toStdString());
             QCOMPARE(qint64(m.countCells(CellType::Tet)), tets);

@@ -47,6 +47,19 @@ QString tetmeshRow(const QString &label, const QString &model, const QStringList
             || std::abs(region["volume"].toDouble() - brep) > 1e-6 * std::abs(brep))
             QTest::qFail(qPrintable(label + ": region " + region["name"].toString()), __FILE__,
                          __LINE__);
+        // The region's dihedral range lies within the whole mesh's, as `hybrid --report` gives it
+        // (measured by the hybrid cells' code: on a flat tet of the raw models the two differ by
+        // up to 1e-7 degrees).
+        constexpr double slack = 1e-4;
+        if (!region.contains("min_dihedral_deg")
+            || region["min_dihedral_deg"].toDouble() < r["min_dihedral_deg"].toDouble() - slack
+            || region["max_dihedral_deg"].toDouble() > r["max_dihedral_deg"].toDouble() + slack)
+            QTest::qFail(qPrintable(label + ": dihedral range of " + region["name"].toString()),
+                         __FILE__, __LINE__);
+        qInfo("|   %-26s | %7d tets | dihedral %.4g-%.4g | %lld slivers",
+              qPrintable(region["name"].toString()), region["tets"].toInt(),
+              region["min_dihedral_deg"].toDouble(), region["max_dihedral_deg"].toDouble(),
+              region["slivers"].toInteger());
     }
     return outcome;
 }
