@@ -144,6 +144,106 @@ long long typeBytes(const std::string &type)
     return 0;
 }
 
+// The values of one version 5 array, after its "OFFSETS type" or "CONNECTIVITY type" line:
+// big-endian in a BINARY file, whitespace-separated integers in an ASCII one.
+std::vector<long long> readArray5(std::istream &in, bool binary, long long count, int bytes,
+                                  const std::string &path, int &line, const std::string &what)
+{
+    std::vector<long long> values;
+    values.reserve(static_cast<std::size_t>(count));
+    if (binary) {
+        std::string raw(static_cast<std::size_t>(count) * static_cast<std::size_t>(bytes), '\0');
+        if (!in.read(raw.data(), static_cast<std::streamsize>(raw.size())))
+            throw FileError(path, line, what + " data is cut short");
+        for (long long i = 0; i < count; ++i) {
+            std::uint64_t v = 0;
+            for (int b = 0; b < bytes; ++b)
+                v = v << 8
+                    | static_cast<unsigned char>(raw[static_cast<std::size_t>(i * bytes + b)]);
+            values.push_back(bytes == 4 ? static_cast<std::int32_t>(v) : static_cast<long long>(v));
+        }
+        return values;
+    }
+    std::string text;
+    while (static_cast<long long>(values.size()) < count) {
+        if (!std::getline(in, text))
+            throw FileError(path, line,
+                            what + " declares " + std::to_string(count)
+                                + " values, the file ends after " + std::to_string(values.size()));
+        ++line;
+        for (const std::string &w : words(text)) {
+            long long v = 0;
+            if (!parseInt(w, v))
+                throw FileError(path, line,
+                                what + " value '" + printable(w.substr(0, 40))
+                                    + "' is not an integer");
+            if (static_cast<long long>(values.size()) == count)
+                throw FileError(path, line,
+                                what + " declares " + std::to_string(count)
+                                    + " values, the line holds more");
+            values.push_back(v);
+        }
+    }
+    return values;
+}
+
+// The header line of a version 5 array: "OFFSETS vtktypeint64" (or vtktypeint32); its size.
+int arrayHeader5(std::istream &in, const char *name, const std::string &path, int &line,
+                 const std::string &keyword)
+{
+    std::string text;
+    do {
+        if (!std::getline(in, text))
+            throw FileError(path, line,
+                            "the file ends before the " + std::string(name) + " of " + keyword);
+        ++line;
+    } while (words(text).empty());
+    const std::vector<std::string> w = words(text);
+    if (w.size() != 2 || w[0] != name || (w[1] != "vtktypeint64" && w[1] != "vtktypeint32"))
+        throw FileError(path, line,
+                        keyword + " of a version 5 file goes on with \"" + name
+                            + " vtktypeint64\" (or vtktypeint32), found \""
+                            + printable(text.substr(0, 60)) + "\"");
+    return w[1] == "vtktypeint64" ? 8 : 4;
+}
+
+// The version 5 cell section "offsets connectivity", then OFFSETS and CONNECTIVITY: VTK 9.1
+// builds cells from offsets it never checks and reads on from a closed file after a bad array
+// (fuzz_vtk_legacy findings: SEGVs in vtkDataReader::ReadString and vtkPolyData::GetCellType).
+// Checks that the offsets start at 0, never decrease and end at the connectivity size.
+void checkCellList5(std::istream &in, bool binary, long long offsets, long long connectivity,
+                    const std::string &path, int &line, const std::string &keyword)
+{
+    const int start = line;
+    if (offsets == 0) {
+        if (connectivity != 0)
+            throw FileError(path, start,
+                            keyword + " declares no offsets but " + std::to_string(connectivity)
+                                + " connectivity values");
+        return;
+    }
+    const int offsetBytes = arrayHeader5(in, "OFFSETS", path, line, keyword);
+    const std::vector<long long> offset =
+        readArray5(in, binary, offsets, offsetBytes, path, line, keyword + " OFFSETS");
+    const int connectivityBytes = arrayHeader5(in, "CONNECTIVITY", path, line, keyword);
+    if (connectivityBytes != offsetBytes)
+        throw FileError(path, line, keyword + " OFFSETS and CONNECTIVITY have different types");
+    readArray5(in, binary, connectivity, connectivityBytes, path, line, keyword + " CONNECTIVITY");
+    if (offset.front() != 0)
+        throw FileError(path, start,
+                        keyword + " OFFSETS start at " + std::to_string(offset.front())
+                            + ", not 0");
+    for (std::size_t c = 1; c < offset.size(); ++c)
+        if (offset[c] < offset[c - 1])
+            throw FileError(path, start,
+                            keyword + " OFFSETS decrease at cell " + std::to_string(c - 1)
+                                + " (numbered from 0)");
+    if (offset.back() != connectivity)
+        throw FileError(path, start,
+                        keyword + " OFFSETS end at " + std::to_string(offset.back()) + ", "
+                            + std::to_string(connectivity) + " connectivity values are declared");
+}
+
 // The arrays of a FIELD block, each "name components tuples type" then its values: VTK 9.1
 // reads a malformed header as sizes and goes on into memory it does not own. Skips the values.
 void checkFieldArrays(std::istream &in, bool binary, long long arrays, long long fileSize,
@@ -260,10 +360,12 @@ VtkLegacyCounts scanVtkLegacyCounts(const std::string &path)
             const int keyLine = line;
             long long n = scan.count(w, 1, 1, line);
             const long long values = scan.count(w, 2, 1, line);
-            if (version5)
+            if (version5) {
+                checkCellList5(in, binary, n, values, path, line, key);
                 n = n > 0 ? n - 1 : 0;
-            else
+            } else {
                 checkCellList(in, binary, n, values, path, line, key);
+            }
             counts.cells = {counts.cells.value < 0 ? n : counts.cells.value + n,
                             counts.cells.line ? counts.cells.line : keyLine};
         } else if (key == "FIELD") {

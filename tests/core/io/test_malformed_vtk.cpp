@@ -147,6 +147,62 @@ private slots:
         }
     }
 
+    // Version 5 cell sections: VTK 9.1 builds cells from offsets it never checks (a SEGV in
+    // vtkPolyData::GetCellType) and reads on from the file it closed after a bad array (a SEGV in
+    // vtkDataReader::ReadString, fuzz_vtk_legacy finding in CI).
+    void version5CellSectionsAreChecked_data()
+    {
+        QTest::addColumn<QByteArray>("text");
+        QTest::addColumn<int>("line");
+        QTest::addColumn<QString>("cause");
+        const QByteArray head = "# vtk DataFile Version 5.1\nv5\nASCII\nDATASET POLYDATA\n"
+                                "POINTS 3 double\n0 0 0 1 0 0 0 1 0\n";
+        const QByteArray off = "OFFSETS vtktypeint64\n";
+        const QByteArray con = "CONNECTIVITY vtktypeint64\n";
+        QTest::newRow("no offsets, connectivity")
+            << head + "POLYGONS 0 4\n\x8d\xe0\x05\x00\xe0`\x00\x00" << 7
+            << "POLYGONS declares no offsets but 4 connectivity values";
+        QTest::newRow("offsets from 3") << head + "POLYGONS 2 3\n" + off + "3 0\n" + con + "0 1 2\n"
+                                        << 7 << "POLYGONS OFFSETS start at 3, not 0";
+        QTest::newRow("offsets decrease")
+            << head + "POLYGONS 3 3\n" + off + "0 3 1\n" + con + "0 1 2\n"
+            << 7 << "POLYGONS OFFSETS decrease at cell 1 (numbered from 0)";
+        QTest::newRow("offsets past connectivity")
+            << head + "POLYGONS 2 3\n" + off + "0 4\n" + con + "0 1 2\n"
+            << 7 << "POLYGONS OFFSETS end at 4, 3 connectivity values are declared";
+        QTest::newRow("no OFFSETS line")
+            << head + "POLYGONS 2 3\n0 3\n" + con + "0 1 2\n"
+            << 8 << "POLYGONS of a version 5 file goes on with \"OFFSETS";
+        QTest::newRow("types differ")
+            << head + "POLYGONS 2 3\n" + off + "0 3\nCONNECTIVITY vtktypeint32\n0 1 2\n"
+            << 10 << "POLYGONS OFFSETS and CONNECTIVITY have different types";
+        QTest::newRow("too many offsets")
+            << head + "POLYGONS 2 3\n" + off + "0 3 3\n" + con + "0 1 2\n"
+            << 9 << "POLYGONS OFFSETS declares 2 values, the line holds more";
+        QTest::newRow("cut connectivity") << head + "POLYGONS 2 3\n" + off + "0 3\n" + con + "0 1\n"
+                                          << 11 << "POLYGONS CONNECTIVITY declares 3 values";
+        QTest::newRow("binary cut")
+            << QByteArray("# vtk DataFile Version 5.1\nv5\nBINARY\nDATASET UNSTRUCTURED_GRID\n"
+                          "CELLS 2 4\nOFFSETS vtktypeint64\n\0\0\0\0",
+                          98)
+            << 6 << "CELLS OFFSETS data is cut short";
+    }
+    void version5CellSectionsAreChecked()
+    {
+        QFETCH(QByteArray, text);
+        QFETCH(int, line);
+        QFETCH(QString, cause);
+        QTemporaryDir dir;
+        const std::string path = writeTestFile(dir.path(), "v5.vtk", text);
+        try {
+            readModel(path);
+            QFAIL("read a broken version 5 cell section");
+        } catch (const FileError &e) {
+            QCOMPARE(e.line(), line);
+            QVERIFY2(QString(e.what()).contains(cause), e.what());
+        }
+    }
+
     void hugeDeclaredCountsAreRefusedBeforeReading_data()
     {
         QTest::addColumn<QByteArray>("text");
