@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdio>
+#include <unordered_map>
 
 namespace stratamesh {
 
@@ -31,15 +32,16 @@ struct Attributes {
 constexpr std::array<const char *, 4> polyKeywords{"VERTICES", "LINES", "POLYGONS",
                                                    "TRIANGLE_STRIPS"};
 
-// A later array of a name replaces the earlier one, as vtkFieldData::AddArray does.
-void addArray(std::vector<VtkLegacyArray> &arrays, VtkLegacyArray array)
+// A later array of a name replaces the earlier one, as vtkFieldData::AddArray does; `index` finds
+// it without a scan (a file of many arrays would cost their square).
+void addArray(std::vector<VtkLegacyArray> &arrays,
+              std::unordered_map<std::string, std::size_t> &index, VtkLegacyArray array)
 {
-    for (VtkLegacyArray &a : arrays)
-        if (a.name == array.name) {
-            a = std::move(array);
-            return;
-        }
-    arrays.push_back(std::move(array));
+    const auto [at, added] = index.emplace(array.name, arrays.size());
+    if (added)
+        arrays.push_back(std::move(array));
+    else
+        arrays[at->second] = std::move(array);
 }
 
 class Parser {
@@ -375,10 +377,10 @@ private:
         }
         const auto points = static_cast<long long>(m_data.points.size() / 3);
         for (std::size_t c = 0; c < m_data.cellTypes.size(); ++c) {
-            const long long begin = m_data.offsets[c];
+            const long long begin = m_data.offsets[c], size = m_data.offsets[c + 1] - begin;
             const std::string problem = vtkCellProblem(
-                static_cast<long long>(c), m_data.cellTypes[c], m_data.connectivity.data() + begin,
-                m_data.offsets[c + 1] - begin, points);
+                static_cast<long long>(c), m_data.cellTypes[c],
+                size > 0 ? m_data.connectivity.data() + begin : nullptr, size, points);
             if (!problem.empty())
                 fail(cellLines[c], problem);
         }
@@ -466,7 +468,7 @@ private:
     void keep(VtkLegacyArray &array)
     {
         if (m_cellSection)
-            addArray(m_data.cellArrays, std::move(array));
+            addArray(m_data.cellArrays, m_cellIndex, std::move(array));
     }
     void keep(bool &set, VtkLegacyArray array)
     {
@@ -587,6 +589,7 @@ private:
         next("the name of FIELD");
         const long long n = count("FIELD");
         std::vector<VtkLegacyArray> arrays;
+        std::unordered_map<std::string, std::size_t> index;
         for (long long a = 0; a < n; ++a) {
             const std::string_view name =
                 next("FIELD array " + std::to_string(a + 1) + " of " + std::to_string(n)
@@ -617,7 +620,7 @@ private:
                 array.values = readVtkNumbers(m_in, at, t, components * tuples);
             }
             skipVtkMetadata(m_in, array.components);
-            addArray(arrays, std::move(array));
+            addArray(arrays, index, std::move(array));
         }
         return arrays;
     }
@@ -631,6 +634,7 @@ private:
     bool m_cellSection = false; // in CELL_DATA rather than POINT_DATA
     long long m_tuples = 0;     // values per array of the current section
     Attributes m_cellAttributes, m_pointAttributes;
+    std::unordered_map<std::string, std::size_t> m_cellIndex; // of m_data.cellArrays
     VtkLegacyData m_data;
 };
 

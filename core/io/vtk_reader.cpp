@@ -35,7 +35,9 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <type_traits>
+#include <utility>
 
 namespace stratamesh {
 
@@ -110,6 +112,10 @@ vtkSmartPointer<vtkDataSet> runReader(const std::string &path)
 // and its field arrays. Every array holds doubles, as GetComponent gives any type.
 vtkSmartPointer<vtkDataSet> legacyDataSet(VtkLegacyData data)
 {
+    static const std::set<std::string> fieldNames{
+        vtkarrays::meshName,     vtkarrays::zPositiveDepth,  vtkarrays::regionNames,
+        vtkarrays::surfaceNames, vtkarrays::surfaceFeatures, vtkarrays::surfaceTypes,
+        vtkarrays::lineNames,    vtkarrays::qualityName,     vtkarrays::regionSides};
     static_assert(std::is_same_v<vtkIdType, long long>, "point ids are copied as they are");
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     vtkNew<vtkDoubleArray> coordinates;
@@ -148,12 +154,29 @@ vtkSmartPointer<vtkDataSet> legacyDataSet(VtkLegacyData data)
         std::copy(a.values.begin(), a.values.end(), d->GetPointer(0));
         return d;
     };
+    // Only the arrays the mesh is built from: vtkFieldData::AddArray looks for each name among
+    // the arrays already added, which thousands of arrays would pay in their square.
+    std::set<std::string> cellNames{vtkarrays::regionId, vtkarrays::surfaceId, vtkarrays::lineId};
+    for (VtkLegacyArray &a : data.fieldArrays) {
+        if (!fieldNames.count(a.name))
+            continue;
+        if (a.name == vtkarrays::qualityName) {
+            // Any name it holds (string or "\n"-ended bytes) may be the quality's cell array.
+            std::string name;
+            for (const std::string &s : a.strings)
+                cellNames.insert(s);
+            for (double v : a.values)
+                if (v == '\n')
+                    cellNames.insert(std::exchange(name, std::string()));
+                else if (v >= -128 && v <= 255)
+                    name += static_cast<char>(static_cast<int>(v) & 0xff);
+        }
+        grid->GetFieldData()->AddArray(array(a));
+    }
     // A string array is no cell array to GetArray: leaving it out keeps it absent.
     for (VtkLegacyArray &a : data.cellArrays)
-        if (!a.text)
+        if (!a.text && cellNames.count(a.name))
             grid->GetCellData()->AddArray(array(a));
-    for (VtkLegacyArray &a : data.fieldArrays)
-        grid->GetFieldData()->AddArray(array(a));
     return grid;
 }
 

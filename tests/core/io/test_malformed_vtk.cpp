@@ -299,6 +299,27 @@ private slots:
         }
     }
 
+    // Before: each array's name was looked for among all the arrays before it (VTK's reader):
+    // 100000 empty FIELD arrays, 1.6 MB, did not read in 120 s. Now a lookup each.
+    void manyArraysReadInLinearTime()
+    {
+        QTemporaryDir dir;
+        const int n = 50000;
+        QByteArray text = "# vtk DataFile Version 4.2\nmany\nASCII\nDATASET POLYDATA\nFIELD f "
+                          + QByteArray::number(n) + "\n";
+        for (int i = 0; i < n; ++i)
+            text += "a" + QByteArray::number(i) + " 1 0 int\n";
+        text += "POINTS 3 double\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 2\nCELL_DATA 1\nFIELD g "
+                + QByteArray::number(n) + "\n";
+        for (int i = 0; i < n; ++i)
+            text += "c" + QByteArray::number(i) + " 1 1 int\n0\n";
+        const std::string path = writeTestFile(dir.path(), "many.vtk", text);
+        const BoundedRead r = runBounded([&] { readVtk(path); });
+        qInfo("%d + %d arrays: %s in %.3f s", n, n, outcomeName(r.outcome), r.seconds);
+        QCOMPARE(outcomeName(r.outcome), outcomeName(BoundedRead::Read));
+        QVERIFY(r.seconds < 5);
+    }
+
     void hugeDeclaredCountsAreRefusedBeforeReading_data()
     {
         QTest::addColumn<QByteArray>("text");
