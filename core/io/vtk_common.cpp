@@ -1,6 +1,7 @@
 #include "io/vtk_common.h"
 
 #include <vtkCallbackCommand.h>
+#include <vtkCellType.h>
 #include <vtkCommand.h>
 #include <vtkNew.h>
 #include <vtkObject.h>
@@ -27,7 +28,51 @@ void collect(vtkObject *, unsigned long event, void *clientData, void *callData)
     *message += line;
 }
 
+// How many point ids a cell of this VTK type has; 0 for "at least one" (poly types), -1 for a
+// type StrataMesh does not exchange.
+int pointCountOf(int type)
+{
+    switch (type) {
+    case VTK_TETRA:
+        return 4;
+    case VTK_PYRAMID:
+        return 5;
+    case VTK_WEDGE:
+        return 6;
+    case VTK_TRIANGLE:
+        return 3;
+    case VTK_LINE:
+        return 2;
+    case VTK_VERTEX:
+        return 1;
+    case VTK_POLY_LINE:
+    case VTK_POLY_VERTEX:
+        return 0;
+    default:
+        return -1;
+    }
+}
+
 } // namespace
+
+std::string vtkCellProblem(long long cell, int type, const long long *ids, long long count,
+                           long long points)
+{
+    const int expected = pointCountOf(type);
+    if ((expected > 0 && count != expected) || count < 1 || (type == VTK_POLY_LINE && count < 2))
+        return "cell " + std::to_string(cell) + " (numbered from 0, VTK type "
+               + std::to_string(type) + ") has " + std::to_string(count) + " point ids"
+               + (expected > 0 ? ", its type needs " + std::to_string(expected) : "");
+    if (expected < 0)
+        return "cell " + std::to_string(cell) + " has VTK type " + std::to_string(type)
+               + ", which StrataMesh does not exchange (tets, pyramids, wedges, triangles, lines "
+                 "and vertices only)";
+    for (long long k = 0; k < count; ++k)
+        if (ids[k] < 0 || ids[k] >= points)
+            return "cell " + std::to_string(cell) + " uses point " + std::to_string(ids[k]) + " of "
+                   + std::to_string(points);
+    return {};
+}
 
 VtkErrorCapture::VtkErrorCapture(vtkObject *object) : m_object(object)
 {

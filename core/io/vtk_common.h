@@ -27,6 +27,14 @@ constexpr const char *regionSides = "RegionSides";
 // VTK_WEDGE node i is our prism node wedgeMap[i] (and the reverse: the map is its own inverse).
 constexpr std::array<int, 6> vtkWedgeMap{0, 2, 1, 3, 5, 4};
 
+// Why cell `cell` (numbered from 0) of VTK type `type` with these `count` point ids cannot be
+// read, checked in this order: a point-id count its type does not have, a type StrataMesh does
+// not exchange (tets, pyramids, wedges, triangles, lines, vertices), a point id outside
+// 0..points-1. Empty when it can be read. Shared by the XML path and the legacy parser, so that
+// both refuse the same cells in the same words.
+std::string vtkCellProblem(long long cell, int type, const long long *ids, long long count,
+                           long long points);
+
 // Collects the ErrorEvent messages of a VTK object instead of printing them.
 class VtkErrorCapture {
 public:

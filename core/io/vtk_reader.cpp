@@ -5,24 +5,28 @@
 #include "io/formats.h"
 #include "io/group_index.h"
 #include "io/vtk_common.h"
-#include "io/vtk_legacy_counts.h"
+#include "io/vtk_legacy_reader.h"
 #include "io/vtk_output_capture.h"
 #include "io/vtk_xml_counts.h"
 
 #include <vtkAbstractArray.h>
 #include <vtkCell.h>
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
-#include <vtkDataSetReader.h>
+#include <vtkDoubleArray.h>
 #include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
+#include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
@@ -31,13 +35,17 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <set>
+#include <type_traits>
+#include <utility>
 
 namespace stratamesh {
 
 namespace {
 
-// Names written by our writer (bytes, each name ended by '\n'), or a VTK string array.
-std::vector<std::string> stringsOf(vtkFieldData *fd, const char *name)
+// Names written by our writer (bytes, each name ended by '\n'), or a VTK string array. A value
+// that is not a byte (a double array, a damaged file) is refused rather than cast.
+std::vector<std::string> stringsOf(const std::string &path, vtkFieldData *fd, const char *name)
 {
     std::vector<std::string> out;
     vtkAbstractArray *array = fd ? fd->GetAbstractArray(name) : nullptr;
@@ -46,8 +54,15 @@ std::vector<std::string> stringsOf(vtkFieldData *fd, const char *name)
             out.push_back(a->GetValue(i));
     } else if (auto *bytes = vtkDataArray::SafeDownCast(array)) {
         std::string current;
+        const int components = bytes->GetNumberOfComponents();
         for (vtkIdType i = 0; i < bytes->GetNumberOfValues(); ++i) {
-            const char c = static_cast<char>(static_cast<unsigned char>(bytes->GetComponent(i, 0)));
+            const double v = bytes->GetComponent(i / components, static_cast<int>(i % components));
+            if (!(v >= -128 && v <= 255) || v != std::floor(v))
+                throw FileError(path, 0,
+                                std::string("the ") + name + " field data holds " + doubleText(v)
+                                    + ", not a byte of text");
+            const char c =
+                static_cast<char>(static_cast<unsigned char>(static_cast<int>(v) & 0xff));
             if (c == '\n') {
                 out.push_back(current);
                 current.clear();
@@ -92,25 +107,77 @@ vtkSmartPointer<vtkDataSet> runReader(const std::string &path)
     return out;
 }
 
-// How many point ids a cell of this VTK type has; 0 for "at least `minimum`" (poly types).
-int pointCountOf(int type)
+// A legacy file's data set as the XML readers give theirs, so that both build the mesh alike:
+// an unstructured grid (poly data cells come typed and in VTK's order), its numeric cell arrays
+// and its field arrays. Every array holds doubles, as GetComponent gives any type.
+vtkSmartPointer<vtkDataSet> legacyDataSet(VtkLegacyData data)
 {
-    switch (type) {
-    case VTK_TETRA:
-        return 4;
-    case VTK_PYRAMID:
-        return 5;
-    case VTK_WEDGE:
-        return 6;
-    case VTK_TRIANGLE:
-        return 3;
-    case VTK_LINE:
-        return 2;
-    case VTK_VERTEX:
-        return 1;
-    default:
-        return 0;
+    static const std::set<std::string> fieldNames{
+        vtkarrays::meshName,     vtkarrays::zPositiveDepth,  vtkarrays::regionNames,
+        vtkarrays::surfaceNames, vtkarrays::surfaceFeatures, vtkarrays::surfaceTypes,
+        vtkarrays::lineNames,    vtkarrays::qualityName,     vtkarrays::regionSides};
+    static_assert(std::is_same_v<vtkIdType, long long>, "point ids are copied as they are");
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    vtkNew<vtkDoubleArray> coordinates;
+    coordinates->SetNumberOfComponents(3);
+    coordinates->SetNumberOfTuples(static_cast<vtkIdType>(data.points.size() / 3));
+    std::copy(data.points.begin(), data.points.end(), coordinates->GetPointer(0));
+    vtkNew<vtkPoints> points;
+    points->SetData(coordinates);
+    grid->SetPoints(points);
+    auto ids = [](const std::vector<long long> &values) {
+        auto a = vtkSmartPointer<vtkIdTypeArray>::New();
+        a->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+        std::copy(values.begin(), values.end(), a->GetPointer(0));
+        return a;
+    };
+    vtkNew<vtkCellArray> cells;
+    cells->SetData(ids(data.offsets), ids(data.connectivity));
+    vtkNew<vtkUnsignedCharArray> types;
+    types->SetNumberOfValues(static_cast<vtkIdType>(data.cellTypes.size()));
+    for (std::size_t c = 0; c < data.cellTypes.size(); ++c)
+        types->SetValue(static_cast<vtkIdType>(c), static_cast<unsigned char>(data.cellTypes[c]));
+    grid->SetCells(types, cells);
+    auto array = [](VtkLegacyArray &a) -> vtkSmartPointer<vtkAbstractArray> {
+        if (a.text) {
+            auto s = vtkSmartPointer<vtkStringArray>::New();
+            s->SetName(a.name.c_str());
+            s->SetNumberOfComponents(a.components);
+            for (std::string &v : a.strings)
+                s->InsertNextValue(v);
+            return s;
+        }
+        auto d = vtkSmartPointer<vtkDoubleArray>::New();
+        d->SetName(a.name.c_str());
+        d->SetNumberOfComponents(a.components);
+        d->SetNumberOfTuples(static_cast<vtkIdType>(a.tuples));
+        std::copy(a.values.begin(), a.values.end(), d->GetPointer(0));
+        return d;
+    };
+    // Only the arrays the mesh is built from: vtkFieldData::AddArray looks for each name among
+    // the arrays already added, which thousands of arrays would pay in their square.
+    std::set<std::string> cellNames{vtkarrays::regionId, vtkarrays::surfaceId, vtkarrays::lineId};
+    for (VtkLegacyArray &a : data.fieldArrays) {
+        if (!fieldNames.count(a.name))
+            continue;
+        if (a.name == vtkarrays::qualityName) {
+            // Any name it holds (string or "\n"-ended bytes) may be the quality's cell array.
+            std::string name;
+            for (const std::string &s : a.strings)
+                cellNames.insert(s);
+            for (double v : a.values)
+                if (v == '\n')
+                    cellNames.insert(std::exchange(name, std::string()));
+                else if (v >= -128 && v <= 255)
+                    name += static_cast<char>(static_cast<int>(v) & 0xff);
+        }
+        grid->GetFieldData()->AddArray(array(a));
     }
+    // A string array is no cell array to GetArray: leaving it out keeps it absent.
+    for (VtkLegacyArray &a : data.cellArrays)
+        if (!a.text && cellNames.count(a.name))
+            grid->GetCellData()->AddArray(array(a));
+    return grid;
 }
 
 // Integer cell array by name, or null.
@@ -151,15 +218,13 @@ VolumeMesh readVtk(const std::string &path)
     else if (ext == ".vtp")
         data = runReader<vtkXMLPolyDataReader>(path);
     else if (ext == ".vtk") {
-        const VtkLegacyCounts declared = scanVtkLegacyCounts(path);
-        data = runReader<vtkDataSetReader>(path);
-        checkVtkLegacyCounts(path, declared, data->GetNumberOfPoints(), data->GetNumberOfCells());
+        data = legacyDataSet(readVtkLegacy(path));
     } else
         throw FileError(path, 0, "unknown VTK extension '" + ext + "' (use .vtu, .vtp or .vtk)");
 
     VolumeMesh mesh;
     vtkFieldData *fd = data->GetFieldData();
-    const std::vector<std::string> meshName = stringsOf(fd, vtkarrays::meshName);
+    const std::vector<std::string> meshName = stringsOf(path, fd, vtkarrays::meshName);
     mesh.name = meshName.empty() ? fileStem(path) : meshName.front();
     if (vtkDataArray *depth = fd ? fd->GetArray(vtkarrays::zPositiveDepth) : nullptr)
         mesh.zPositiveDepth = depth->GetNumberOfTuples() > 0 && depth->GetComponent(0, 0) != 0;
@@ -175,7 +240,7 @@ VolumeMesh readVtk(const std::string &path)
     vtkDataArray *regionIds = intArray(data, vtkarrays::regionId);
     vtkDataArray *surfaceIds = intArray(data, vtkarrays::surfaceId);
     vtkDataArray *lineIds = intArray(data, vtkarrays::lineId);
-    const std::vector<std::string> qualityName = stringsOf(fd, vtkarrays::qualityName);
+    const std::vector<std::string> qualityName = stringsOf(path, fd, vtkarrays::qualityName);
     vtkDataArray *quality =
         qualityName.empty() ? nullptr : intArray(data, qualityName.front().c_str());
     // Group ids are file ids here and become dense indices once all are known.
@@ -186,22 +251,11 @@ VolumeMesh readVtk(const std::string &path)
         const int type = data->GetCellType(c);
         data->GetCellPoints(c, ids);
         const vtkIdType count = ids->GetNumberOfIds();
-        const int expected = pointCountOf(type);
-        if ((expected > 0 && count != expected) || count < 1
-            || ((type == VTK_LINE || type == VTK_POLY_LINE) && count < 2))
-            throw FileError(
-                path, 0,
-                "cell " + std::to_string(c) + " (numbered from 0, VTK type " + std::to_string(type)
-                    + ") has " + std::to_string(count) + " point ids"
-                    + (expected > 0 ? ", its type needs " + std::to_string(expected) : ""));
-        auto id = [&](vtkIdType k) {
-            const vtkIdType v = ids->GetId(k);
-            if (v < 0 || v >= data->GetNumberOfPoints())
-                throw FileError(path, 0,
-                                "cell " + std::to_string(c) + " uses point " + std::to_string(v)
-                                    + " of " + std::to_string(data->GetNumberOfPoints()));
-            return static_cast<int>(v);
-        };
+        if (const std::string problem =
+                vtkCellProblem(c, type, ids->GetPointer(0), count, data->GetNumberOfPoints());
+            !problem.empty())
+            throw FileError(path, 0, problem);
+        auto id = [&](vtkIdType k) { return static_cast<int>(ids->GetId(k)); };
         switch (type) {
         case VTK_TETRA:
         case VTK_PYRAMID:
@@ -238,10 +292,7 @@ VolumeMesh readVtk(const std::string &path)
                 mesh.corners.push_back(id(k));
             break;
         default:
-            throw FileError(path, 0,
-                            "cell " + std::to_string(c) + " has VTK type " + std::to_string(type)
-                                + ", which StrataMesh does not exchange (tets, pyramids, wedges, "
-                                  "triangles, lines and vertices only)");
+            break; // refused by vtkCellProblem
         }
     }
     if (mesh.cells.empty() && mesh.triangles.empty())
@@ -249,23 +300,23 @@ VolumeMesh readVtk(const std::string &path)
     if (quality)
         mesh.qualityName = qualityName.front();
     const std::string fallback = fileStem(path);
-    std::vector<std::string> regions = stringsOf(fd, vtkarrays::regionNames);
+    std::vector<std::string> regions = stringsOf(path, fd, vtkarrays::regionNames);
     if (!regionIds && regions.empty() && !mesh.cells.empty())
         regions = {fallback};
     regionIndex.number(regions.size());
     mesh.regionNames = regionIndex.names(regions, "region");
-    std::vector<std::string> surfaceNames = stringsOf(fd, vtkarrays::surfaceNames);
+    std::vector<std::string> surfaceNames = stringsOf(path, fd, vtkarrays::surfaceNames);
     if (!surfaceIds && surfaceNames.empty() && !mesh.triangles.empty())
         surfaceNames = {fallback};
     surfaceIndex.number(surfaceNames.size());
     surfaceNames = surfaceIndex.names(surfaceNames, "surface");
-    const std::vector<std::string> features = stringsOf(fd, vtkarrays::surfaceFeatures);
-    const std::vector<std::string> types = stringsOf(fd, vtkarrays::surfaceTypes);
+    const std::vector<std::string> features = stringsOf(path, fd, vtkarrays::surfaceFeatures);
+    const std::vector<std::string> types = stringsOf(path, fd, vtkarrays::surfaceTypes);
     for (std::size_t s = 0; s < surfaceNames.size(); ++s)
         mesh.surfaces.push_back(
             {surfaceNames[s], s < features.size() ? features[s] : surfaceNames[s],
              s < types.size() ? featureTypeFromName(types[s]) : FeatureType::Unknown});
-    std::vector<std::string> lines = stringsOf(fd, vtkarrays::lineNames);
+    std::vector<std::string> lines = stringsOf(path, fd, vtkarrays::lineNames);
     if (!lineIds && lines.empty() && !mesh.edges.empty())
         lines = {fallback};
     lineIndex.number(lines.size());

@@ -1,4 +1,5 @@
-// VTK input through VTK's readers: .vtu, .vtp, legacy .vtk (unstructured grid or poly data).
+// VTK input: .vtu and .vtp through VTK's XML readers, legacy .vtk (unstructured grid or poly data)
+// through our parser (vtk_legacy_reader.h).
 //
 // Files from our writer (vtk_writer.h) come back whole: groups, names, types, region sides,
 // quality. Foreign files: tets, pyramids, wedges (remapped to our prism order), triangles,
@@ -13,7 +14,7 @@
 
 namespace stratamesh {
 
-// Throws FileError naming the file and VTK's complaint when it cannot be read.
+// Throws FileError naming the file (and the line, or VTK's complaint) when it cannot be read.
 VolumeMesh readVtk(const std::string &path);
 
 } // namespace stratamesh

@@ -79,7 +79,7 @@ private slots:
             << QByteArray("# vtk DataFile Version 4.2\nx\nASCII\nDATASET UNSTRUCTURED_GRID\n"
                           "POINTS 3 double\n0 0 0\n1e200 0 0\n0 1 0\nCELLS 1 4\n3 0 1 "
                           "2\nCELL_TYPES 1\n5\n")
-            << 0 << "point 1 (numbered from 0): coordinate 1e+200";
+            << 7 << "point 1 (numbered from 0): coordinate 1e+200";
     }
     void refused()
     {

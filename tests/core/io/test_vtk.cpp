@@ -1,6 +1,8 @@
 // VTK .vtu, legacy .vtk 4.2 and .vtp: our files read back identical (groups, names, types, region
-// sides, quality, exact doubles); VTK itself finds a positive volume for every tet, pyramid and
-// wedge we write; python3-meshio reads them with the same counts.
+// sides, quality, exact doubles); legacy files VTK's own writers make (unstructured grid and poly
+// data, versions 4.2 and 5.1, ASCII and binary) read as the mesh they were made from; VTK itself
+// finds a positive volume for every tet, pyramid and wedge we write; python3-meshio reads them
+// with the same counts.
 #include "common/error.h"
 #include "io/vtk_reader.h"
 #include "io/vtk_writer.h"
@@ -14,15 +16,20 @@
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkDataSetReader.h>
-#include <vtkDataSetWriter.h>
 #include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataWriter.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkUnstructuredGridWriter.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <cmath>
 
 using namespace stratamesh;
 
@@ -62,6 +69,46 @@ std::vector<std::pair<int, double>> vtkVolumes(const QString &path, bool legacy)
     for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
         result.push_back({out->GetCellType(c), volume->GetComponent(c, 0)});
     return result;
+}
+
+// Values with six decimals at most, which VTK's ASCII writer (11 significant digits) keeps.
+VolumeMesh withSixDecimals(VolumeMesh m)
+{
+    auto round = [](double v) { return std::round(v * 1e6) / 1e6; };
+    for (Vec3 &p : m.points)
+        p = Vec3(round(p.x()), round(p.y()), round(p.z()));
+    for (double &q : m.cellQuality)
+        q = round(q);
+    return m;
+}
+
+// `mesh` through our .vtu or .vtp writer, VTK's XML reader, then VTK's own legacy writer.
+void writeWithVtk(const VolumeMesh &mesh, const QString &dir, const QString &out, bool poly,
+                  int version, bool binary)
+{
+    const QString xml = dir + (poly ? "/source.vtp" : "/source.vtu");
+    writeVtk(mesh, xml.toStdString(), poly ? VtkFileKind::Vtp : VtkFileKind::Vtu);
+    vtkSmartPointer<vtkDataWriter> writer;
+    if (poly) {
+        vtkNew<vtkXMLPolyDataReader> reader;
+        reader->SetFileName(xml.toLocal8Bit().constData());
+        reader->Update();
+        auto w = vtkSmartPointer<vtkPolyDataWriter>::New();
+        w->SetInputData(reader->GetOutput());
+        writer = w;
+    } else {
+        vtkNew<vtkXMLUnstructuredGridReader> reader;
+        reader->SetFileName(xml.toLocal8Bit().constData());
+        reader->Update();
+        auto w = vtkSmartPointer<vtkUnstructuredGridWriter>::New();
+        w->SetInputData(reader->GetOutput());
+        writer = w;
+    }
+    writer->SetFileName(out.toLocal8Bit().constData());
+    writer->SetFileVersion(version);
+    if (binary)
+        writer->SetFileTypeToBinary();
+    QVERIFY(writer->Write() == 1);
 }
 
 } // namespace
@@ -160,58 +207,97 @@ private slots:
         }
     }
 
-    // Version 5.1 (OFFSETS and CONNECTIVITY), as VTK 9 itself writes by default: what our
-    // checks of its cell sections accept must be the same mesh as the 4.2 file it came from.
-    void version5FilesOfVtkItselfAreRead_data()
+    // Legacy files of VTK's own writers, each version and encoding, read by our parser: the same
+    // mesh as the one they were written from (ASCII with values VTK's ASCII writer keeps; its
+    // NaN quality off the volume cells written "nan", which VTK's reader could not read back).
+    void filesOfVtkItselfAreRead_data()
     {
+        QTest::addColumn<bool>("poly");
+        QTest::addColumn<int>("version");
         QTest::addColumn<bool>("binary");
-        QTest::newRow("ascii") << false;
-        QTest::newRow("binary") << true;
+        for (bool poly : {false, true})
+            for (int version : {42, 51})
+                for (bool binary : {false, true})
+                    QTest::newRow(qPrintable(QString("%1 %2 %3")
+                                                 .arg(poly ? "poly data" : "grid")
+                                                 .arg(version)
+                                                 .arg(binary ? "binary" : "ascii")))
+                        << poly << version << binary;
     }
-    void version5FilesOfVtkItselfAreRead()
+    void filesOfVtkItselfAreRead()
     {
+        QFETCH(bool, poly);
+        QFETCH(int, version);
         QFETCH(bool, binary);
         QTemporaryDir dir;
-        VolumeMesh m = test::hybridMesh();
-        m.regionBoundaries = regionSidesFromCells(m);
-        const QString v42 = dir.filePath("h42.vtk"), v5 = dir.filePath("h5.vtk");
-        writeVtk(m, v42.toStdString(), VtkFileKind::LegacyVtk);
-        vtkNew<vtkDataSetReader> reader;
-        reader->SetFileName(v42.toLocal8Bit().constData());
-        reader->Update();
-        // VTK 9.1's ASCII writer prints undefined qualities as "nan", which its own
-        // reader cannot parse back: the ASCII file goes without the quality array.
+        VolumeMesh m;
+        if (poly) {
+            LayeredBoxParams p;
+            p.fault = true;
+            p.faultThrow = 30;
+            p.edgeLength = 200;
+            m = meshFromModel(recoverTopology(layeredBox(p)));
+        } else {
+            m = test::hybridMesh();
+            m.regionBoundaries = regionSidesFromCells(m);
+        }
         if (!binary)
-            reader->GetOutput()->GetCellData()->RemoveArray("scaled jacobian");
-        vtkNew<vtkDataSetWriter> writer;
-        writer->SetInputData(reader->GetOutput());
-        writer->SetFileName(v5.toLocal8Bit().constData());
-        if (binary)
-            writer->SetFileTypeToBinary();
-        QVERIFY(writer->Write() == 1);
-        QFile f(v5);
+            m = withSixDecimals(m);
+        const QString path = dir.filePath("vtk.vtk");
+        writeWithVtk(m, dir.path(), path, poly, version, binary);
+        QFile f(path);
         QVERIFY(f.open(QIODevice::ReadOnly));
-        QCOMPARE(f.readLine(), QByteArray("# vtk DataFile Version 5.1\n"));
-        QVERIFY(f.readAll().contains("OFFSETS vtktypeint64"));
+        QCOMPARE(f.readLine(), QByteArray(version == 42 ? "# vtk DataFile Version 4.2\n"
+                                                        : "# vtk DataFile Version 5.1\n"));
+        QCOMPARE(f.readAll().contains("OFFSETS vtktypeint64"), version == 51);
         VolumeMesh back;
         try {
-            back = readVtk(v5.toStdString());
+            back = readVtk(path.toStdString());
         } catch (const std::exception &e) {
             QFAIL(e.what());
         }
-        if (!binary) {
-            // VTK's ASCII writer also rounds coordinates: same cells, not same bits.
-            QCOMPARE(back.points.size(), m.points.size());
-            for (CellType t : {CellType::Tet, CellType::Pyramid, CellType::Prism})
-                QCOMPARE(back.countCells(t), m.countCells(t));
-            QCOMPARE(back.triangles.size(), m.triangles.size());
-            QCOMPARE(back.regionNames, m.regionNames);
-            for (std::size_t p = 0; p < m.points.size(); ++p)
-                QVERIFY((back.points[p] - m.points[p]).norm() < 1e-5);
-            return;
-        }
         const std::string diff = test::compareMeshes(m, back);
         QVERIFY2(diff.empty(), diff.c_str());
+        QCOMPARE(back.name, m.name);
+        QCOMPARE(back.points, m.points);
+    }
+
+    // Legacy files mean what VTK's own reader made of them (each checked against VTK 9.1's
+    // reader when our parser replaced it): poly data cells come vertices, lines, polygons, then
+    // strips whatever the file's order; only the first SCALARS of a section counts; a later FIELD
+    // array replaces an array of its name.
+    void legacyFilesMeanWhatVtkMakesOfThem()
+    {
+        QTemporaryDir dir;
+        const QByteArray points = "POINTS 4 double\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n";
+        const QString poly = dir.filePath("poly.vtk");
+        QFile f(poly);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("# vtk DataFile Version 4.2\norder\nASCII\nDATASET POLYDATA\n" + points
+                + "POLYGONS 2 8\n3 0 1 2\n3 1 3 2\nLINES 2 7\n2 0 1\n3 1 3 2\nVERTICES 2 4\n1 0\n1 "
+                  "3\nCELL_DATA 6\nSCALARS Other int\nLOOKUP_TABLE default\n0 0 0 0 0 0\n"
+                  "SCALARS LineId int\nLOOKUP_TABLE default\n9 9 9 9 9 9\nFIELD FieldData 2\n"
+                  "SurfaceId 1 6 int\n-1 -1 -1 -1 4 5\nLineId 1 6 int\n-1 -1 2 3 -1 -1\n");
+        f.close();
+        const VolumeMesh mesh = readVtk(poly.toStdString());
+        QCOMPARE(mesh.corners, (std::vector<int>{0, 3}));
+        QCOMPARE(mesh.edges, (std::vector<std::array<int, 2>>{{0, 1}, {1, 3}, {3, 2}}));
+        QCOMPARE(mesh.lineNames, (std::vector<std::string>{"line_3", "line_4"}));
+        QCOMPARE(mesh.edgeLine, (std::vector<int>{0, 1, 1}));
+        QCOMPARE(mesh.triangles.size(), std::size_t(2));
+        QCOMPARE(mesh.triangleSurface, (std::vector<int>{0, 1}));
+
+        const QString grid = dir.filePath("grid.vtk");
+        QFile g(grid);
+        QVERIFY(g.open(QIODevice::WriteOnly));
+        g.write("# vtk DataFile Version 4.2\nscalars\nASCII\nDATASET UNSTRUCTURED_GRID\n" + points
+                + "CELLS 2 8\n3 0 1 2\n3 1 3 2\nCELL_TYPES 2\n5 5\nCELL_DATA 2\n"
+                  "SCALARS Other int\nLOOKUP_TABLE default\n0 0\n"
+                  "SCALARS SurfaceId int\nLOOKUP_TABLE default\n0 1\n");
+        g.close();
+        const VolumeMesh one = readVtk(grid.toStdString());
+        QCOMPARE(one.surfaces.size(), std::size_t(1)); // the second SCALARS was not kept
+        QCOMPARE(one.surfaces[0].name, std::string("grid"));
     }
 
     void polyDataRefusesCells()
