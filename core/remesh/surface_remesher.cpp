@@ -11,6 +11,7 @@
 #include "remesh/cell_components.h"
 #include "remesh/duplicate_separation.h"
 #include "remesh/editable_soup.h"
+#include "remesh/feature_sizing.h"
 #include "remesh/input_projector.h"
 #include "remesh/ledger_reconciliation.h"
 #include "remesh/line_fins.h"
@@ -170,6 +171,28 @@ RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec
     return result;
 }
 
+// The feature sizing field for an edge length h0, its smallest size raised until it needs at most
+// sizingMaxGrowth times the sites of a uniform h0 (features left closer are the refinement
+// rounds' or the ledger's).
+FeatureSizing fittedSizing(const Model &model, double h0, const RemeshParams &params,
+                           Progress &progress)
+{
+    FeatureSizingParams sp;
+    sp.edgeLength = h0;
+    sp.lfsFactor = params.lfsFactor;
+    sp.gradation = params.sizingGradation;
+    sp.minEdgeLength = params.sizingMinFraction * h0;
+    sp.dResolution = params.dResolution;
+    std::vector<double> lfs =
+        localFeatureSizes(model, h0 / params.lfsFactor, sp.wedgeSine, progress);
+    FeatureSizing sizing = sizingFromLfs(model, lfs, sp);
+    while (sizing.siteFactor > params.sizingMaxGrowth && sp.minEdgeLength < h0) {
+        sp.minEdgeLength = std::min(h0, 1.5 * sp.minEdgeLength);
+        sizing = sizingFromLfs(model, lfs, sp);
+    }
+    return sizing;
+}
+
 } // namespace
 
 int sitesForEdgeLength(double area, double edgeLength)
@@ -250,18 +273,34 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         collapsed = stripsRemoved(input, edgeLengthForSites(area, n), params, ledger, strips);
     }
     const Model &simplified = collapsed.model;
-    const RestrictionDomain domain = makeRestrictionDomain(
-        simplified, params.adaptive ? adaptiveDensity(simplified, params) : std::vector<double>{});
+    const double h0 = edgeLengthForSites(area, n);
+    std::vector<double> startDensity =
+        params.adaptive ? adaptiveDensity(simplified, params) : std::vector<double>{};
+    int sized = n;
+    double smallest = h0;
+    if (params.lfsFactor > 0.0) {
+        Progress sizingProgress(progress, 0.03, 0.06, "Feature sizing");
+        const FeatureSizing sizing = fittedSizing(simplified, h0, params, sizingProgress);
+        sized = std::min(most, static_cast<int>(std::lround(n * sizing.siteFactor)));
+        smallest = *std::min_element(sizing.size.begin(), sizing.size.end());
+        const std::vector<double> rho = sizingDensity(sizing, h0);
+        if (startDensity.empty())
+            startDensity = rho;
+        else
+            for (std::size_t v = 0; v < rho.size(); ++v)
+                startDensity[v] *= rho[v];
+    }
+    const RestrictionDomain domain = makeRestrictionDomain(simplified, startDensity);
     CvtParams cvt;
     cvt.iterations = params.iterations;
     cvt.alpha = params.boundaryWeight;
-    Progress cvtProgress(progress, 0.03, 0.55, "CVT");
+    Progress cvtProgress(progress, 0.06, 0.55, "CVT");
     const CvtResult optimised =
         params.iterations > 0
-            ? optimizeCvt(domain, sampleSurfaces(domain, n, params.seed), cvt, cvtProgress)
+            ? optimizeCvt(domain, sampleSurfaces(domain, sized, params.seed), cvt, cvtProgress)
             : CvtResult{};
     std::vector<Vec3> sites =
-        params.iterations > 0 ? optimised.sites : sampleSurfaces(domain, n, params.seed);
+        params.iterations > 0 ? optimised.sites : sampleSurfaces(domain, sized, params.seed);
     const double sampling = secondsSince(start);
     const std::size_t stripRecords = ledger.size();
     RemeshResult result;
@@ -285,7 +324,8 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     RemeshResult best = result;
     const double baseSlivers = computeMeshStatistics(result.model).pctTrianglesAngleBelow30;
     for (;;) {
-        const double spacing = edgeLengthForSites(area, static_cast<int>(sites.size()));
+        const double spacing =
+            edgeLengthForSites(area, static_cast<int>(sites.size())) * std::sqrt(sized / double(n));
         // Validity comes first: its places are refined while rounds are left, whatever the
         // growth cap; topology places only while the cap leaves room.
         const ValidityReport none;
@@ -300,7 +340,7 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
             || rounds >= params.refinementRounds + (invalid.empty() ? 0 : 4))
             break;
         const int room = static_cast<int>(std::lround(params.refinementMaxGrowth * n))
-                         - (static_cast<int>(sites.size()) - n);
+                         - (static_cast<int>(sites.size()) - sized);
         std::vector<Vec3> targets = invalid;
         if (room > 0 && rounds < params.refinementRounds)
             targets.insert(targets.end(), topology.begin(), topology.end());
@@ -313,7 +353,7 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         // Topology places share the growth cap; places that are not valid get at most as many
         // sites again (an 8-fault network doubled its sites every round to 15 GB without it).
         extra = std::min(extra, std::max(room, 0) + (invalid.empty() ? 0 : n));
-        extra = std::min(extra, 3 * n - static_cast<int>(sites.size()));
+        extra = std::min(extra, sized + 2 * n - static_cast<int>(sites.size()));
         if (extra <= 0)
             break;
         const std::vector<Vec3> added =
@@ -358,14 +398,15 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     }
     result = std::move(best);
     rounds = result.refinementRounds;
-    result.remainingTargets = static_cast<int>(
-        refinementTargets(simplified, result.model, result.ledger, stripRecords, result.validity,
-                          params.dResolution, 0.5 * edgeLengthForSites(area, result.siteCount))
-            .size());
-    reconcileLedger(input, result.model, result.ledger,
-                    2.0 * edgeLengthForSites(area, result.siteCount), stripRecords);
+    result.remainingTargets =
+        static_cast<int>(refinementTargets(simplified, result.model, result.ledger, stripRecords,
+                                           result.validity, params.dResolution, 0.5 * h0)
+                             .size());
+    reconcileLedger(input, result.model, result.ledger, 2.0 * h0, stripRecords);
     result.energy = optimised.energy;
     result.initialSiteCount = n;
+    result.sizedSiteCount = sized;
+    result.smallestCellSize = smallest;
     result.refinementRounds = rounds;
     result.timings.samplingSeconds = sampling;
     result.timings.totalSeconds = secondsSince(start);

@@ -40,6 +40,17 @@ struct RemeshParams {
         false; // density ρ = (1 − d/d_max)^exponent from the distance d to corners (Fig 4.19)
     double adaptiveExponent = 4.0;
     double adaptiveFloor = 0.05; // smallest density, so that far surfaces still get sites
+    // Feature sizing (feature_sizing.h): near two features that do not meet, cells are at most
+    // lfsFactor times their distance, graded by sizingGradation, down to sizingMinFraction of the
+    // edge length; the sites grow accordingly, to at most sizingMaxGrowth times those asked
+    // (beyond, the smallest size is raised until they fit). 0 turns it off, the default: with
+    // thin strips kept (stripWidthFactor 0) it keeps the topology of small throws (A2 at 5000
+    // sites: 7 topology edits instead of 28) but takes about 3.5 times the sites and a lower
+    // mean quality (0.857 instead of 0.861).
+    double lfsFactor = 0.0;
+    double sizingGradation = 0.4;
+    double sizingMinFraction = 1.0 / 16.0;
+    double sizingMaxGrowth = 4.0;
     CleanupParams cleanup;
     bool flips = true;       // quality-improving flips inside surfaces after the thesis steps
     int smoothingPasses = 3; // vertex relaxation on the input surfaces and lines (0: none)
@@ -78,8 +89,11 @@ struct RemeshResult {
     IntersectionRepairResult intersections;
     ValidityReport validity;  // of `model`; the front ends refuse to write an invalid one
     int initialSiteCount = 0; // the sites asked for; siteCount is the final number
-    int refinementRounds = 0; // rounds that added sites
-    int remainingTargets = 0; // places still wrong after the last round (0 when converged)
+    int sizedSiteCount = 0;   // the sites of the feature sizing field, before refinement rounds
+    double smallestCellSize = 0.0; // the smallest size of the sizing field (the edge length
+                                   // when nothing is refined)
+    int refinementRounds = 0;      // rounds that added sites
+    int remainingTargets = 0;      // places still wrong after the last round (0 when converged)
 };
 
 // Topology edits of a result per kind (surface, surface part, line and corner lost/created
