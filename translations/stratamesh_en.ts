@@ -2013,6 +2013,18 @@ Click to show it in the views</source>
         <source>Apex height of a pyramid on a quad face that meets the tets, over the square root of the quad&apos;s area.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>× feature distance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cells near c&amp;lose features:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Near two features that do not meet (the two lines of a small fault throw, close corners), cells are at most this times their distance, so that both are kept without needles; the sites grow accordingly, to at most 4 times those asked. Use it with the strip factor at 0 to keep small throws rather than remove them; 0 turns it off.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ProjectWorkflow</name>

@@ -2016,6 +2016,18 @@ Cliquer pour le montrer dans les vues</translation>
         <source>Apex height of a pyramid on a quad face that meets the tets, over the square root of the quad&apos;s area.</source>
         <translation>Hauteur du sommet d&apos;une pyramide posée sur une face quadrangulaire qui touche les tétraèdres, rapportée à la racine carrée de l&apos;aire du quadrangle.</translation>
     </message>
+    <message>
+        <source>× feature distance</source>
+        <translation>× distance des objets</translation>
+    </message>
+    <message>
+        <source>Cells near c&amp;lose features:</source>
+        <translation>Cellules près d&apos;objets pr&amp;oches :</translation>
+    </message>
+    <message>
+        <source>Near two features that do not meet (the two lines of a small fault throw, close corners), cells are at most this times their distance, so that both are kept without needles; the sites grow accordingly, to at most 4 times those asked. Use it with the strip factor at 0 to keep small throws rather than remove them; 0 turns it off.</source>
+        <translation>Près de deux objets qui ne se touchent pas (les deux lignes d&apos;un petit rejet de faille, des coins proches), les cellules mesurent au plus ce facteur fois leur distance, pour garder les deux sans aiguilles ; les sites augmentent d&apos;autant, jusqu&apos;à 4 fois ceux demandés. À utiliser avec le facteur de bandes à 0 pour garder les petits rejets plutôt que de les supprimer ; 0 le désactive.</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ProjectWorkflow</name>

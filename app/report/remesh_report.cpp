@@ -47,6 +47,8 @@ QJsonObject remeshReportJson(const RemeshReportParts &parts)
         {QStringLiteral("refinement"),
          QJsonObject{{QStringLiteral("initial_sites"), facts.initialSiteCount},
                      {QStringLiteral("final_sites"), facts.siteCount},
+                     {QStringLiteral("sized_sites"), facts.sizedSiteCount},
+                     {QStringLiteral("smallest_size"), facts.smallestCellSize},
                      {QStringLiteral("rounds"), facts.refinementRounds},
                      {QStringLiteral("remaining_places"), facts.remainingTargets}}},
         {QStringLiteral("parameters"), parameters},

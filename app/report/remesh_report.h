@@ -24,6 +24,8 @@ struct RemeshReportFacts {
     int remainingTargets = 0;
     RemeshTimings timings;
     std::vector<double> energy;
+    int sizedSiteCount = 0;        // the sites of the feature sizing field (0: not known)
+    double smallestCellSize = 0.0; // its smallest size (0: not known)
 };
 
 struct RemeshReportParts {

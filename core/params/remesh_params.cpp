@@ -60,6 +60,21 @@ ParamTable<RemeshParams> makeTable()
     t.add(memberParam(&P::stripWidthFactor, i));
 
     i = {};
+    i.key = "lfs_factor", i.flag = "--lfs-factor", i.jsonKey = "lfs_factor";
+    i.minimum = 0.0, i.maximum = 4.0, i.valueName = "K", i.decimals = 2;
+    i.unit = QT_TRANSLATE_NOOP("stratamesh::Params", "× feature distance");
+    i.thesis = "§4.6.2";
+    i.offText = QT_TRANSLATE_NOOP("stratamesh::Params", "Off");
+    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "Cells near c&lose features:");
+    i.help = QT_TRANSLATE_NOOP(
+        "stratamesh::Params",
+        "Near two features that do not meet (the two lines of a small fault throw, close "
+        "corners), cells are at most this times their distance, so that both are kept without "
+        "needles; the sites grow accordingly, to at most 4 times those asked. Use it with the "
+        "strip factor at 0 to keep small throws rather than remove them; 0 turns it off.");
+    t.add(memberParam(&P::lfsFactor, i));
+
+    i = {};
     i.key = "iterations", i.flag = "--iterations", i.jsonKey = "iterations";
     i.type = ParamType::Int, i.minimum = 0, i.maximum = 100000, i.valueName = "N";
     i.thesis = "§4.3 (100)";
