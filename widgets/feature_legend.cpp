@@ -50,18 +50,24 @@ void FeatureLegend::setEntries(const std::vector<LegendEntry> &entries, bool box
     update();
 }
 
-std::vector<FeatureLegend::Row> FeatureLegend::rows() const
+std::vector<FeatureLegend::Row> FeatureLegend::rows(Detail detail) const
 {
     int features = 0;
     for (const LegendEntry &e : m_entries)
         features += e.type == FeatureType::Boundary ? 0 : e.featureCount;
-    const bool listFeatures = features <= kMaxListedFeatures;
+    const bool listFeatures = detail == Detail::Full && features <= kMaxListedFeatures;
 
     std::vector<Row> result;
     for (const LegendEntry &e : m_entries) {
         Row header;
         header.color = e.color;
         header.header = true;
+        if (detail == Detail::Names) {
+            header.text = typeLabel(e.type);
+            header.dimmed = e.type == FeatureType::Boundary && !m_boxVisible;
+            result.push_back(header);
+            continue;
+        }
         if (e.type == FeatureType::Boundary) {
             header.text =
                 m_boxVisible
@@ -86,26 +92,47 @@ std::vector<FeatureLegend::Row> FeatureLegend::rows() const
     return result;
 }
 
-QSize FeatureLegend::sizeHint() const
+QSize FeatureLegend::sizeFor(Detail detail) const
 {
     QFont bold = font();
     bold.setBold(true);
     const QFontMetrics normal(font()), strong(bold);
     const int lineHeight = qMax(strong.height(), kSwatch) + 3;
-    int width = strong.horizontalAdvance(tr("Legend"));
-    const auto all = rows();
+    const bool title = detail == Detail::Full;
+    int width = title ? strong.horizontalAdvance(tr("Legend")) : 0;
+    const auto all = rows(detail);
     for (const Row &row : all) {
         const int text = (row.header ? strong : normal).horizontalAdvance(row.text);
         width = qMax(width, (row.header ? 0 : kIndent) + kSwatch + 6 + text);
     }
-    return {width + 2 * kPadding, int(all.size() + 1) * lineHeight + 2 * kPadding};
+    return {width + 2 * kPadding, int(all.size() + (title ? 1 : 0)) * lineHeight + 2 * kPadding};
+}
+
+QSize FeatureLegend::sizeHint() const
+{
+    return sizeFor(m_detail);
 }
 
 void FeatureLegend::relayout()
 {
+    m_detail = Detail::Names;
+    if (const QWidget *view = parentWidget()) {
+        const double maxWidth = kMaxWidthShare * view->width();
+        const double maxHeight = kMaxHeightShare * view->height();
+        for (Detail d : {Detail::Full, Detail::Types}) {
+            const QSize size = sizeFor(d);
+            if (size.width() <= maxWidth && size.height() <= maxHeight) {
+                m_detail = d;
+                break;
+            }
+        }
+    } else {
+        m_detail = Detail::Full;
+    }
     resize(sizeHint());
     move(kMargin, kMargin);
     raise();
+    update();
 }
 
 bool FeatureLegend::eventFilter(QObject *watched, QEvent *event)
@@ -137,12 +164,14 @@ void FeatureLegend::paintEvent(QPaintEvent *)
     const QFontMetrics strong(bold);
     const int lineHeight = qMax(strong.height(), kSwatch) + 3;
     int y = kPadding;
-    painter.setFont(bold);
-    painter.setPen(QColor(30, 34, 40));
-    painter.drawText(QRect(kPadding, y, width() - 2 * kPadding, lineHeight),
-                     Qt::AlignVCenter | Qt::AlignLeft, tr("Legend"));
-    y += lineHeight;
-    for (const Row &row : rows()) {
+    if (m_detail == Detail::Full) {
+        painter.setFont(bold);
+        painter.setPen(QColor(30, 34, 40));
+        painter.drawText(QRect(kPadding, y, width() - 2 * kPadding, lineHeight),
+                         Qt::AlignVCenter | Qt::AlignLeft, tr("Legend"));
+        y += lineHeight;
+    }
+    for (const Row &row : rows(m_detail)) {
         const int x = kPadding + (row.header ? 0 : kIndent);
         const QRect swatch(x, y + (lineHeight - kSwatch) / 2, kSwatch, kSwatch);
         QColor fill = row.color;
