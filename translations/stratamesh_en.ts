@@ -644,6 +644,14 @@ per cell</source>
         <source>strip %1 (%2 m wide, limit %3 m) removed before remeshing</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>surfaces %1 and %2 fold over each other at %3: one space between them is on the side of %4 and of %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>region %1 is in more than one piece: a pocket of volume %2 between %3 at %4 is cut off from it</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ExaggerationWorkflow</name>

@@ -645,6 +645,14 @@ par cellule</translation>
         <source>strip %1 (%2 m wide, limit %3 m) removed before remeshing</source>
         <translation>bande %1 (%2 m de large, limite %3 m) supprimée avant le remaillage</translation>
     </message>
+    <message>
+        <source>surfaces %1 and %2 fold over each other at %3: one space between them is on the side of %4 and of %5</source>
+        <translation>les surfaces %1 et %2 se replient l&apos;une sur l&apos;autre en %3 : un même espace entre elles est du côté de %4 et de %5</translation>
+    </message>
+    <message>
+        <source>region %1 is in more than one piece: a pocket of volume %2 between %3 at %4 is cut off from it</source>
+        <translation>la région %1 est en plusieurs morceaux : une poche de volume %2 entre %3 en %4 en est séparée</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ExaggerationWorkflow</name>

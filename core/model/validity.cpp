@@ -41,6 +41,8 @@ ValidityReport checkValidity(const Model &model, Progress &progress)
     checkSealed(in, sink);
     progress.tick(0.15, "validity: region boundaries");
     checkRegionBoundaries(in, sink);
+    if (sink.count(validity_check::regionBoundary) == 0)
+        checkRegionShells(in, sink);
     progress.tick(0.2, "validity: intersections");
     checkIntersections(in, sink, progress);
     progress.tick(1.0, "validity: done");

@@ -33,6 +33,12 @@ inline constexpr const char *inconsistentOrientation = "inconsistent_orientation
 inline constexpr const char *surfaceIntersection = "surface_intersection";
 // A region boundary that is not closed or whose sides disagree with the surface normals.
 inline constexpr const char *regionBoundary = "region_boundary";
+// Region sides that disagree with the geometry around an edge: two surfaces folded over each
+// other along a contact, so that one space between them is given to two regions.
+inline constexpr const char *foldedContact = "folded_contact";
+// A region in more than one piece: a pocket that one seed per region (TetGen's -A) leaves
+// without a region.
+inline constexpr const char *regionPocket = "region_pocket";
 // Two distinct points closer than kCloseVertexTolerance × the bounding-box diagonal: volume
 // meshers (TetGen's -T) merge them, which makes duplicated or crossing facets of the triangles.
 inline constexpr const char *closeVertices = "close_vertices";

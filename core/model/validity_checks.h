@@ -24,6 +24,7 @@ public:
     {
         return m_report.count(check) >= ValidityReport::kMaxListedPerCheck;
     }
+    std::size_t count(const char *check) const { return m_report.count(check); }
     ValidityReport take() { return std::move(m_report); }
 
 private:
@@ -41,6 +42,8 @@ void checkSealed(const CheckInput &in, ProblemSink &sink);
 void checkSurfaceMeshes(const CheckInput &in, ProblemSink &sink);
 void checkIntersections(const CheckInput &in, ProblemSink &sink, Progress &progress);
 void checkRegionBoundaries(const CheckInput &in, ProblemSink &sink);
+// Run only when the region boundaries are sound: folded_contact, region_pocket.
+void checkRegionShells(const CheckInput &in, ProblemSink &sink);
 void checkCloseVertices(const CheckInput &in, ProblemSink &sink);
 
 // Helpers for messages.

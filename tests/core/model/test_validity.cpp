@@ -337,6 +337,34 @@ private slots:
         QCOMPARE(r.problems.front().entities.size(), std::size_t(3));
     }
 
+    // One region on the inside of two tetrahedra: every side closed, balanced and of positive
+    // volume, yet the region is in two pieces and one seed would leave the smaller one empty.
+    void regionInTwoPiecesHasAPocket()
+    {
+        auto tetrahedron = [](const std::string &name, double size, const Vec3 &o) {
+            return makeSurface(
+                name, {o, o + Vec3(size, 0, 0), o + Vec3(0, size, 0), o + Vec3(0, 0, size)},
+                {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
+        };
+        Model m = modelOf({tetrahedron("big", 1.0, Vec3::Zero()),
+                           tetrahedron("small", 0.5, Vec3(5.0, 0.0, 0.0))});
+        m.regions = {{"inside", {{0, false}, {1, false}}}};
+        m.universe = {{0, true}, {1, true}};
+        const ValidityReport r = checkValidity(m);
+        QCOMPARE(r.count(check::regionPocket), std::size_t(1));
+        QCOMPARE(r.counts.size(), std::size_t(1));
+        const ValidityProblem &p = r.problems.front();
+        QCOMPARE(p.entities, (std::vector<std::string>{"inside", "small"}));
+        QVERIFY((p.position - Vec3(5.125, 0.125, 0.125)).norm() < 0.1);
+
+        // The same shells as a region with a cavity (one inside the other) are one piece.
+        m.surfaces[1] = tetrahedron("small", 0.2, Vec3(0.1, 0.1, 0.1));
+        m.regions = {{"shell", {{0, false}, {1, true}}}, {"core", {{1, false}}}};
+        m.universe = {{0, true}};
+        const ValidityReport nested = checkValidity(m);
+        QVERIFY2(nested.valid, qPrintable(summary(nested)));
+    }
+
     void listsAreCappedButCountsAreNot()
     {
         Surface bad = makeSurface("bad", {{0, 0, 0}, {1, 0, 0}}, {});

@@ -1,0 +1,204 @@
+#include "model/region_shells.h"
+
+#include "model/region_volume.h"
+#include "model/surface_edges.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace stratamesh {
+
+namespace {
+struct EdgeUse {
+    long long key;
+    int triangle; // global triangle index
+    int apex;     // global id of the vertex opposite the edge
+    bool forward; // the triangle runs the edge from its smaller to its larger global id
+};
+
+class DisjointSets {
+public:
+    explicit DisjointSets(std::size_t n) : m_parent(n)
+    {
+        std::iota(m_parent.begin(), m_parent.end(), 0);
+    }
+    std::size_t find(std::size_t x)
+    {
+        while (m_parent[x] != x)
+            x = m_parent[x] = m_parent[m_parent[x]];
+        return x;
+    }
+    void join(std::size_t a, std::size_t b) { m_parent[find(a)] = find(b); }
+
+private:
+    std::vector<std::size_t> m_parent;
+};
+
+// Node of a triangle side: 2·triangle for the positive side (the normal's), +1 for the negative.
+std::size_t sideNode(int triangle, bool positive)
+{
+    return 2 * static_cast<std::size_t>(triangle) + (positive ? 0 : 1);
+}
+
+} // namespace
+
+RegionShells analyseRegionShells(const Model &model)
+{
+    RegionShells result;
+    const int regionCount = static_cast<int>(model.regions.size());
+    if (regionCount == 0)
+        return result;
+    // Owner of each surface side: a region, the Universe (regionCount) or -1 when unknown.
+    std::vector<std::array<int, 2>> sideOwner(model.surfaces.size(), {-1, -1});
+    for (int r = 0; r <= regionCount; ++r) {
+        const std::vector<RegionSide> &sides =
+            r < regionCount ? model.regions[r].boundaries : model.universe;
+        for (const RegionSide &side : sides)
+            if (side.surface >= 0 && side.surface < static_cast<int>(model.surfaces.size()))
+                sideOwner[side.surface][side.positive ? 0 : 1] = r;
+    }
+    std::vector<int> firstTriangle(model.surfaces.size() + 1, 0);
+    for (std::size_t s = 0; s < model.surfaces.size(); ++s)
+        firstTriangle[s + 1] =
+            firstTriangle[s] + static_cast<int>(model.surfaces[s].triangles.size());
+    const int triangleCount = firstTriangle.back();
+    std::vector<int> surfaceOf(triangleCount);
+    std::vector<EdgeUse> uses;
+    uses.reserve(3 * static_cast<std::size_t>(triangleCount));
+    for (std::size_t s = 0; s < model.surfaces.size(); ++s) {
+        const std::vector<int> &g = model.surfaceVertexToGlobal[s];
+        const std::vector<Triangle> &triangles = model.surfaces[s].triangles;
+        for (std::size_t t = 0; t < triangles.size(); ++t) {
+            const int id = firstTriangle[s] + static_cast<int>(t);
+            surfaceOf[id] = static_cast<int>(s);
+            for (int k = 0; k < 3; ++k) {
+                const int a = g[triangles[t][k]], b = g[triangles[t][(k + 1) % 3]];
+                const int w = g[triangles[t][(k + 2) % 3]];
+                if (a != b && w != a && w != b)
+                    uses.push_back({edgeKey(a, b), id, w, a < b});
+            }
+        }
+    }
+    std::sort(uses.begin(), uses.end(), [](const EdgeUse &x, const EdgeUse &y) {
+        return x.key != y.key ? x.key < y.key : x.triangle < y.triangle;
+    });
+
+    auto ownerOf = [&](std::size_t node) {
+        const int t = static_cast<int>(node / 2);
+        return sideOwner[surfaceOf[t]][node % 2];
+    };
+    DisjointSets shells(2 * static_cast<std::size_t>(triangleCount));
+    std::vector<std::pair<double, const EdgeUse *>> around;
+    for (std::size_t i = 0; i < uses.size();) {
+        std::size_t j = i;
+        while (j < uses.size() && uses[j].key == uses[i].key)
+            ++j;
+        const long long key = uses[i].key;
+        const Vec3 p = model.vertices[edgeKeyFirst(key)];
+        const Vec3 d = (model.vertices[edgeKeySecond(key)] - p).normalized();
+        // The half-planes of the triangles, as angles about d from the first one.
+        around.clear();
+        Vec3 e1 = Vec3::Zero(), e2 = Vec3::Zero();
+        bool flat = false;
+        for (std::size_t u = i; u < j && !flat; ++u) {
+            Vec3 v = model.vertices[uses[u].apex] - p;
+            v -= v.dot(d) * d;
+            if (v.squaredNorm() == 0.0)
+                flat = true; // a degenerate triangle: degenerate_triangle says so
+            else if (u == i) {
+                e1 = v.normalized();
+                e2 = d.cross(e1);
+            }
+            around.push_back({std::atan2(v.dot(e2), v.dot(e1)), &uses[u]});
+        }
+        if (!flat) {
+            std::sort(around.begin(), around.end(),
+                      [](const auto &x, const auto &y) { return x.first < y.first; });
+            // Between a triangle and the next one counter-clockwise about d: the side of the
+            // first that faces increasing angles (its positive side when it runs the edge
+            // forward, its normal being d × v) and the side of the next that faces back.
+            for (std::size_t k = 0; k < around.size(); ++k) {
+                const EdgeUse &a = *around[k].second;
+                const EdgeUse &b = *around[(k + 1) % around.size()].second;
+                const std::size_t up = sideNode(a.triangle, a.forward);
+                const std::size_t down = sideNode(b.triangle, !b.forward);
+                const int ownerUp = ownerOf(up), ownerDown = ownerOf(down);
+                if (ownerUp >= 0 && ownerDown >= 0 && ownerUp != ownerDown)
+                    result.folds.push_back(
+                        {key, surfaceOf[a.triangle], surfaceOf[b.triangle], ownerUp, ownerDown});
+                shells.join(up, down);
+            }
+        }
+        i = j;
+    }
+
+    // Volume of each shell, counted for the region on its sides (positive for a region's outer
+    // shell, negative for a cavity in it), and the shells of each region.
+    const Vec3 ref = volumeReferencePoint(model);
+    std::vector<double> volume(2 * static_cast<std::size_t>(triangleCount), 0.0);
+    std::vector<int> owner(volume.size(), -1);
+    for (int t = 0; t < triangleCount; ++t) {
+        const Surface &surface = model.surfaces[surfaceOf[t]];
+        const Triangle &tri = surface.triangles[t - firstTriangle[surfaceOf[t]]];
+        const Vec3 &a = surface.vertices[tri[0]], &b = surface.vertices[tri[1]],
+                   &c = surface.vertices[tri[2]];
+        const double cone = (a - ref).dot((b - ref).cross(c - ref)) / 6.0;
+        for (bool positive : {true, false}) {
+            const std::size_t node = sideNode(t, positive);
+            const std::size_t root = shells.find(node);
+            volume[root] += positive ? -cone : cone;
+            if (ownerOf(node) >= 0)
+                owner[root] = ownerOf(node);
+        }
+    }
+    const double scale = (model.vertices.empty() ? 1.0 : [&] {
+        Vec3 lo = model.vertices.front(), hi = lo;
+        for (const Vec3 &v : model.vertices) {
+            lo = lo.cwiseMin(v);
+            hi = hi.cwiseMax(v);
+        }
+        return (hi - lo).norm();
+    }());
+    const double tiny = 1e-12 * scale * scale * scale;
+    std::vector<std::vector<std::size_t>> pieces(regionCount);
+    for (std::size_t root = 0; root < volume.size(); ++root)
+        if (shells.find(root) == root && owner[root] >= 0 && owner[root] < regionCount
+            && volume[root] > tiny)
+            pieces[owner[root]].push_back(root);
+    // The largest piece of a region is the region; each smaller one is a pocket.
+    std::map<std::size_t, std::size_t> pocketOf;
+    for (int r = 0; r < regionCount; ++r) {
+        std::sort(pieces[r].begin(), pieces[r].end(),
+                  [&](std::size_t x, std::size_t y) { return volume[x] > volume[y]; });
+        for (std::size_t k = 1; k < pieces[r].size(); ++k) {
+            pocketOf[pieces[r][k]] = result.pockets.size();
+            result.pockets.push_back({r, volume[pieces[r][k]], {}, Vec3::Zero()});
+        }
+    }
+    if (pocketOf.empty())
+        return result;
+    for (int t = 0; t < triangleCount; ++t)
+        for (bool positive : {true, false}) {
+            const auto it = pocketOf.find(shells.find(sideNode(t, positive)));
+            if (it == pocketOf.end())
+                continue;
+            RegionPocket &pocket = result.pockets[it->second];
+            const int s = surfaceOf[t];
+            const Surface &surface = model.surfaces[s];
+            const Triangle &tri = surface.triangles[t - firstTriangle[s]];
+            pocket.sides.push_back({s, t - firstTriangle[s], positive});
+            pocket.centre +=
+                (surface.vertices[tri[0]] + surface.vertices[tri[1]] + surface.vertices[tri[2]])
+                / 3.0;
+        }
+    for (RegionPocket &pocket : result.pockets)
+        pocket.centre /= static_cast<double>(std::max<std::size_t>(1, pocket.sides.size()));
+    return result;
+}
+
+} // namespace stratamesh
