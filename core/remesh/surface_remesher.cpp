@@ -18,6 +18,7 @@
 #include "remesh/mesh_smoothing.h"
 #include "remesh/output_model_builder.h"
 #include "remesh/output_points.h"
+#include "remesh/pocket_repair.h"
 #include "remesh/strip_collapse.h"
 #include "remesh/topology_refinement.h"
 #include "voronoi/restricted_voronoi.h"
@@ -171,6 +172,17 @@ RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec
     return result;
 }
 
+// The validity of a result, after opening the pockets its dual mesh closed (pocket_repair.h).
+void checkAndOpenPockets(RemeshResult &result, Progress &progress)
+{
+    Progress checking(progress, 0.0, 0.5, "checking");
+    result.validity = checkValidity(result.model, checking);
+    if (result.validity.count(validity_check::regionPocket) == 0)
+        return;
+    Progress opening(progress, 0.5, 1.0, "opening pockets");
+    result.pocketsOpened += repairPockets(result.model, result.validity, opening).opened;
+}
+
 // The feature sizing field for an edge length h0, its smallest size raised until it needs at most
 // sizingMaxGrowth times the sites of a uniform h0 (features left closer are the refinement
 // rounds' or the ledger's).
@@ -236,7 +248,7 @@ RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &s
     RemeshResult result = meshFromSites(collapsed, sites, params, std::move(ledger), progress);
     reconcileLedger(input, result.model, result.ledger,
                     2.0 * edgeLengthForSites(modelArea(input), result.siteCount), stripRecords);
-    result.validity = checkValidity(result.model);
+    checkAndOpenPockets(result, Progress::none());
     return result;
 }
 
@@ -310,7 +322,7 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     }
     {
         Progress validity(progress, 0.8, 0.85, "Validity");
-        result.validity = checkValidity(result.model, validity);
+        checkAndOpenPockets(result, validity);
     }
     double at = 0.85; // where the next refinement round starts on this run's bar
 
@@ -381,7 +393,7 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         }
         {
             Progress step = roundSteps.step(2, "Validity");
-            again.validity = checkValidity(again.model, step);
+            checkAndOpenPockets(again, step);
         }
         // A round is kept only when it improves (validity first, then topology edits): the next
         // round still starts from its sites, but the result never gets worse by refining.

@@ -94,6 +94,7 @@ struct RemeshResult {
                                    // when nothing is refined)
     int refinementRounds = 0;      // rounds that added sites
     int remainingTargets = 0;      // places still wrong after the last round (0 when converged)
+    int pocketsOpened = 0;         // pockets re-triangulated open (pocket_repair.h)
 };
 
 // Topology edits of a result per kind (surface, surface part, line and corner lost/created
