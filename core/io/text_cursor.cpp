@@ -1,28 +1,13 @@
 #include "io/text_cursor.h"
 
+#include "io/file_bytes.h"
 #include "io/number_text.h"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <limits>
 
 namespace stratamesh {
 
-TextCursor::TextCursor(std::string path) : m_path(std::move(path))
-{
-    std::FILE *f = std::fopen(m_path.c_str(), "rb");
-    if (!f)
-        throw FileError(m_path, 0, std::string("cannot open: ") + std::strerror(errno));
-    char buffer[1 << 16];
-    std::size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0)
-        m_text.append(buffer, n);
-    const bool failed = std::ferror(f) != 0;
-    std::fclose(f);
-    if (failed)
-        throw FileError(m_path, 0, "cannot read the file");
-}
+TextCursor::TextCursor(std::string path) : m_path(std::move(path)), m_text(readFileBytes(m_path)) {}
 
 bool TextCursor::next()
 {

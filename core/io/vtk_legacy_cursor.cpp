@@ -1,11 +1,9 @@
 #include "io/vtk_legacy_cursor.h"
 
 #include "common/error.h"
+#include "io/file_bytes.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 
 namespace stratamesh {
 
@@ -19,19 +17,9 @@ bool isSpace(char c)
 
 } // namespace
 
-VtkLegacyCursor::VtkLegacyCursor(std::string path) : m_path(std::move(path))
+VtkLegacyCursor::VtkLegacyCursor(std::string path)
+    : m_path(std::move(path)), m_text(readFileBytes(m_path))
 {
-    std::FILE *f = std::fopen(m_path.c_str(), "rb");
-    if (!f)
-        throw FileError(m_path, 0, std::string("cannot open: ") + std::strerror(errno));
-    char buffer[1 << 16];
-    std::size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0)
-        m_text.append(buffer, n);
-    const bool failed = std::ferror(f) != 0;
-    std::fclose(f);
-    if (failed)
-        throw FileError(m_path, 0, "cannot read the file");
 }
 
 void VtkLegacyCursor::moveTo(std::size_t pos)
