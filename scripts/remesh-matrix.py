@@ -47,7 +47,8 @@ def tetgen(args, timeout):
 
 
 def judge(cli, model_path, out, folder, tag):
-    """tetgen -d and tetgen -pq1.414AY on the PLC our tetmesh writes (regions seeded)."""
+    """tetgen -d and tetgen -pq1.414AY on the PLC our tetmesh writes (regions seeded): more
+    regions than seeds are pockets."""
     poly = os.path.join(folder, f"{tag}.poly")
     subprocess.run([cli, "tetmesh", out, "--poly", poly, "-o", os.path.join(folder, f"{tag}.vtu"),
                     "--time-limit", "10"], capture_output=True, text=True)
@@ -71,7 +72,15 @@ def judge(cli, model_path, out, folder, tag):
                     w = line.split()
                     if len(w) >= 6 and not w[0].startswith("#"):
                         regions.add(w[5])
-        q = f"ok {seconds:.2f} s, {tets} tets, {len(regions)} regions"
+        seeds = 0
+        with open(poly) as f:
+            for line in f:
+                m = re.match(r"# StrataMesh PLC: .* (\d+) regions", line)
+                if m:
+                    seeds = int(m.group(1))
+                    break
+        # -A gives a region without a seed (a pocket) an attribute of its own.
+        q = (f"ok {seconds:.2f} s, {tets} tets, {len(regions)} regions for {seeds} seeds")
     return d, q
 
 

@@ -139,15 +139,25 @@ PocketRepair repairPockets(Model &model, ValidityReport &validity, Progress &pro
                 int centre = -1;
                 const std::vector<int> loop = fanLoop(model, s, triangles, centre);
                 for (std::size_t way = 0; way < 2 * loop.size() && !changed; ++way) {
-                    // Tries are few and each costs a validity check: tick on each.
+                    // A try that passes the shells costs a validity check: tick on each.
                     ++tries;
                     Progress step(progress, tries / (tries + 8.0), (tries + 1) / (tries + 9.0),
                                   "opening pockets");
-                    Model candidate = model;
-                    if (!retriangulate(candidate.surfaces[s], triangles, loop, way % loop.size(),
+                    // Tried in place on the shells alone (they need no new topology: no
+                    // vertex moves), which rejects most tries cheaply.
+                    Surface &surface = model.surfaces[s];
+                    const std::vector<Triangle> saved = surface.triangles;
+                    if (!retriangulate(surface, triangles, loop, way % loop.size(),
                                        way < loop.size()))
                         continue;
-                    candidate = recoverTopology(std::move(candidate));
+                    const RegionShells opened = analyseRegionShells(model);
+                    if (opened.pockets.size() >= shells.pockets.size()
+                        || opened.folds.size() > shells.folds.size()) {
+                        surface.triangles = saved;
+                        continue;
+                    }
+                    Model candidate = recoverTopology(model);
+                    surface.triangles = saved;
                     ValidityReport after = checkValidity(candidate, step);
                     if (better(after, validity)) {
                         model = std::move(candidate);
