@@ -1,6 +1,7 @@
 #include "complexity/cell_element_counts.h"
 
 #include "common/error.h"
+#include "common/union_find.h"
 #include "complexity/box_elements.h"
 #include "complexity/convex_clip.h"
 #include "complexity/region_locator.h"
@@ -17,18 +18,6 @@
 namespace stratamesh {
 
 namespace {
-
-struct UnionFind {
-    std::vector<int> parent;
-    explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-    int find(int x)
-    {
-        while (parent[x] != x)
-            x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void unite(int a, int b) { parent[find(a)] = find(b); }
-};
 
 Box3 paddedBounds(const ConvexPolyhedron &cell)
 {
@@ -79,7 +68,7 @@ struct Counter {
         UnionFind uf(static_cast<int>(in.size()));
         for (std::size_t k = 1; k < keys.size(); ++k)
             if (keys[k].first == keys[k - 1].first)
-                uf.unite(keys[k].second, keys[k - 1].second);
+                uf.join(keys[k].second, keys[k - 1].second);
         int pieces = 0;
         for (int i = 0; i < static_cast<int>(in.size()); ++i) {
             if (uf.find(i) == i)

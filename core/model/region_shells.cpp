@@ -1,5 +1,7 @@
 #include "model/region_shells.h"
 
+#include "common/union_find.h"
+#include "model/bounding_box.h"
 #include "model/region_volume.h"
 #include "model/surface_edges.h"
 
@@ -9,7 +11,6 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <numeric>
 
 namespace stratamesh {
 
@@ -21,28 +22,10 @@ struct EdgeUse {
     bool forward; // the triangle runs the edge from its smaller to its larger global id
 };
 
-class DisjointSets {
-public:
-    explicit DisjointSets(std::size_t n) : m_parent(n)
-    {
-        std::iota(m_parent.begin(), m_parent.end(), 0);
-    }
-    std::size_t find(std::size_t x)
-    {
-        while (m_parent[x] != x)
-            x = m_parent[x] = m_parent[m_parent[x]];
-        return x;
-    }
-    void join(std::size_t a, std::size_t b) { m_parent[find(a)] = find(b); }
-
-private:
-    std::vector<std::size_t> m_parent;
-};
-
 // Node of a triangle side: 2·triangle for the positive side (the normal's), +1 for the negative.
-std::size_t sideNode(int triangle, bool positive)
+int sideNode(int triangle, bool positive)
 {
-    return 2 * static_cast<std::size_t>(triangle) + (positive ? 0 : 1);
+    return 2 * triangle + (positive ? 0 : 1);
 }
 
 } // namespace
@@ -88,11 +71,11 @@ RegionShells analyseRegionShells(const Model &model)
         return x.key != y.key ? x.key < y.key : x.triangle < y.triangle;
     });
 
-    auto ownerOf = [&](std::size_t node) {
-        const int t = static_cast<int>(node / 2);
+    auto ownerOf = [&](int node) {
+        const int t = node / 2;
         return sideOwner[surfaceOf[t]][node % 2];
     };
-    DisjointSets shells(2 * static_cast<std::size_t>(triangleCount));
+    UnionFind shells(2 * triangleCount);
     std::vector<std::pair<double, const EdgeUse *>> around;
     for (std::size_t i = 0; i < uses.size();) {
         std::size_t j = i;
@@ -125,8 +108,8 @@ RegionShells analyseRegionShells(const Model &model)
             for (std::size_t k = 0; k < around.size(); ++k) {
                 const EdgeUse &a = *around[k].second;
                 const EdgeUse &b = *around[(k + 1) % around.size()].second;
-                const std::size_t up = sideNode(a.triangle, a.forward);
-                const std::size_t down = sideNode(b.triangle, !b.forward);
+                const int up = sideNode(a.triangle, a.forward);
+                const int down = sideNode(b.triangle, !b.forward);
                 const int ownerUp = ownerOf(up), ownerDown = ownerOf(down);
                 if (ownerUp >= 0 && ownerDown >= 0 && ownerUp != ownerDown)
                     result.folds.push_back(
@@ -145,36 +128,27 @@ RegionShells analyseRegionShells(const Model &model)
     for (int t = 0; t < triangleCount; ++t) {
         const Surface &surface = model.surfaces[surfaceOf[t]];
         const Triangle &tri = surface.triangles[t - firstTriangle[surfaceOf[t]]];
-        const Vec3 &a = surface.vertices[tri[0]], &b = surface.vertices[tri[1]],
-                   &c = surface.vertices[tri[2]];
-        const double cone = (a - ref).dot((b - ref).cross(c - ref)) / 6.0;
+        const double cone = triangleConeVolume(surface, tri, ref);
         for (bool positive : {true, false}) {
-            const std::size_t node = sideNode(t, positive);
-            const std::size_t root = shells.find(node);
+            const int node = sideNode(t, positive);
+            const int root = shells.find(node);
             volume[root] += positive ? -cone : cone;
             if (ownerOf(node) >= 0)
                 owner[root] = ownerOf(node);
         }
     }
-    const double scale = (model.vertices.empty() ? 1.0 : [&] {
-        Vec3 lo = model.vertices.front(), hi = lo;
-        for (const Vec3 &v : model.vertices) {
-            lo = lo.cwiseMin(v);
-            hi = hi.cwiseMax(v);
-        }
-        return (hi - lo).norm();
-    }());
+    const double scale = boundingBoxDiagonal(model);
     const double tiny = 1e-12 * scale * scale * scale;
-    std::vector<std::vector<std::size_t>> pieces(regionCount);
-    for (std::size_t root = 0; root < volume.size(); ++root)
+    std::vector<std::vector<int>> pieces(regionCount);
+    for (int root = 0; root < 2 * triangleCount; ++root)
         if (shells.find(root) == root && owner[root] >= 0 && owner[root] < regionCount
             && volume[root] > tiny)
             pieces[owner[root]].push_back(root);
     // The largest piece of a region is the region; each smaller one is a pocket.
-    std::map<std::size_t, std::size_t> pocketOf;
+    std::map<int, std::size_t> pocketOf;
     for (int r = 0; r < regionCount; ++r) {
         std::sort(pieces[r].begin(), pieces[r].end(),
-                  [&](std::size_t x, std::size_t y) { return volume[x] > volume[y]; });
+                  [&](int x, int y) { return volume[x] > volume[y]; });
         for (std::size_t k = 1; k < pieces[r].size(); ++k) {
             pocketOf[pieces[r][k]] = result.pockets.size();
             result.pockets.push_back({r, volume[pieces[r][k]], {}, Vec3::Zero()});

@@ -20,12 +20,17 @@ double coneVolume(const Vec3 &a, const Vec3 &b, const Vec3 &c)
 
 } // namespace
 
+double triangleConeVolume(const Surface &surface, const Triangle &t, const Vec3 &ref)
+{
+    return coneVolume(surface.vertices[t[0]] - ref, surface.vertices[t[1]] - ref,
+                      surface.vertices[t[2]] - ref);
+}
+
 double surfaceConeVolume(const Surface &surface, const Vec3 &ref)
 {
     double sum = 0.0;
     for (const Triangle &t : surface.triangles)
-        sum += coneVolume(surface.vertices[t[0]] - ref, surface.vertices[t[1]] - ref,
-                          surface.vertices[t[2]] - ref);
+        sum += triangleConeVolume(surface, t, ref);
     return sum;
 }
 

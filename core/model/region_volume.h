@@ -10,6 +10,9 @@
 
 namespace stratamesh {
 
+// det(p0 − ref, p1 − ref, p2 − ref) / 6 of one triangle of the surface.
+double triangleConeVolume(const Surface &surface, const Triangle &t, const Vec3 &ref);
+
 // Σ over triangles of det(p0 − ref, p1 − ref, p2 − ref) / 6: the volume of the cone from ref.
 // Sums of these over a closed, outward-oriented set of triangles do not depend on ref.
 double surfaceConeVolume(const Surface &surface, const Vec3 &ref);

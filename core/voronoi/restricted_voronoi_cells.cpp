@@ -1,28 +1,11 @@
 #include "voronoi/restricted_voronoi_cells.h"
 
+#include "common/union_find.h"
+
 #include <algorithm>
-#include <numeric>
 
 namespace stratamesh {
 namespace {
-
-struct UnionFind {
-    std::vector<int> parent;
-    explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-    int find(int x)
-    {
-        while (parent[x] != x)
-            x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void unite(int a, int b)
-    {
-        a = find(a);
-        b = find(b);
-        if (a != b)
-            parent[std::max(a, b)] = std::min(a, b); // the root is the lowest polygon
-    }
-};
 
 void surfaceComponents(const RestrictionDomain &domain, RestrictedVoronoiDiagram &rvd)
 {
@@ -60,9 +43,9 @@ void surfaceComponents(const RestrictionDomain &domain, RestrictedVoronoiDiagram
                 if (t2 <= poly.triangle)
                     continue; // each pair of triangles once
                 for (int p2 = triangleFirst[t2]; p2 < triangleFirst[t2 + 1]; ++p2)
+                    // The cell meets both sides of the edge: along it (convexity).
                     if (rvd.polygons[p2].site == poly.site)
-                        uf.unite(p,
-                                 p2); // the cell meets both sides of the edge: along it (convexity)
+                        uf.join(p, p2);
             }
         }
     }
