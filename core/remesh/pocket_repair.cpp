@@ -28,14 +28,14 @@ bool better(const ValidityReport &after, const ValidityReport &before)
 
 // The fan of `triangles` (local ids) of surface s around a vertex of their own, as the loop
 // of its outer vertices in the fan's orientation; empty when they are not such a fan.
-std::vector<int> fanLoop(const Model &model, int s, const std::vector<int> &triangles, int &centre)
+std::vector<int> fanLoop(const Model &model, int s, const std::vector<int> &triangles)
 {
     const Surface &surface = model.surfaces[s];
     std::map<int, int> uses;
     for (int t : triangles)
         for (int v : surface.triangles[t])
             ++uses[v];
-    centre = -1;
+    int centre = -1;
     for (const auto &[v, n] : uses)
         if (n == static_cast<int>(triangles.size()))
             centre = v;
@@ -71,6 +71,38 @@ std::vector<int> fanLoop(const Model &model, int s, const std::vector<int> &tria
     return loop.size() == next.size() ? loop : std::vector<int>{};
 }
 
+// Flips the edge a–b of a surface: its triangle running a → b and the one running b → a become
+// the two on the other diagonal. False when the edge is not on exactly two triangles running it
+// both ways, or the other diagonal is an edge already.
+bool flipEdge(std::vector<Triangle> &triangles, int a, int b)
+{
+    int inside = -1, outside = -1, c = -1, d = -1;
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const Triangle &tri = triangles[t];
+            if (tri[k] == a && tri[(k + 1) % 3] == b) {
+                if (inside >= 0)
+                    return false;
+                inside = static_cast<int>(t);
+                c = tri[(k + 2) % 3];
+            } else if (tri[k] == b && tri[(k + 1) % 3] == a) {
+                if (outside >= 0)
+                    return false; // not a manifold edge of this surface
+                outside = static_cast<int>(t);
+                d = tri[(k + 2) % 3];
+            }
+        }
+    if (inside < 0 || outside < 0 || c == d)
+        return false;
+    for (const Triangle &tri : triangles)
+        for (int k = 0; k < 3; ++k)
+            if ((tri[k] == c && tri[(k + 1) % 3] == d) || (tri[k] == d && tri[(k + 1) % 3] == c))
+                return false;
+    triangles[inside] = {a, d, c};
+    triangles[outside] = {d, b, c};
+    return true;
+}
+
 // Flips the loop edge (loop[e], loop[e+1]) out of the surface, with the surface's other triangle
 // on it; first, when `withoutCentre`, replaces the fan by a fan from the loop's first vertex.
 // False when it cannot.
@@ -87,32 +119,47 @@ bool retriangulate(Surface &surface, const std::vector<int> &fan, const std::vec
     if (withoutCentre)
         for (std::size_t k = 1; k + 1 < loop.size(); ++k)
             kept.push_back({loop[0], loop[k], loop[k + 1]});
-    const int a = loop[e], b = loop[(e + 1) % loop.size()];
-    // The two triangles on a–b: the new one runs a → b, the other b → a.
-    int inside = -1, outside = -1, c = -1, d = -1;
-    for (std::size_t t = 0; t < kept.size(); ++t)
-        for (int k = 0; k < 3; ++k) {
-            const Triangle &tri = kept[t];
-            if (tri[k] == a && tri[(k + 1) % 3] == b) {
-                inside = static_cast<int>(t);
-                c = tri[(k + 2) % 3];
-            } else if (tri[k] == b && tri[(k + 1) % 3] == a) {
-                if (outside >= 0)
-                    return false; // not a manifold edge of this surface
-                outside = static_cast<int>(t);
-                d = tri[(k + 2) % 3];
-            }
-        }
-    if (inside < 0 || outside < 0 || c == d)
+    if (!flipEdge(kept, loop[e], loop[(e + 1) % loop.size()]))
         return false;
-    for (const Triangle &tri : kept) // the flipped edge c–d must not exist already
-        for (int k = 0; k < 3; ++k)
-            if ((tri[k] == c && tri[(k + 1) % 3] == d) || (tri[k] == d && tri[(k + 1) % 3] == c))
-                return false;
-    kept[inside] = {a, d, c};
-    kept[outside] = {d, b, c};
     surface.triangles = std::move(kept);
     return true;
+}
+
+// One way to change a surface's triangles around a pocket: a fan re-triangulation (fanWay <
+// 2·loop size, see retriangulate), or a flip of the edge a → b of one of its triangles.
+struct PocketEdit {
+    int fanWay = -1;
+    int a = -1, b = -1;
+};
+
+// The fan re-triangulations when the pocket's triangles in the surface are a fan, then the flip
+// of every edge of those triangles: pockets closed by a fold of two surfaces along a longer
+// contact, not by a fan, open by flipping one of their edges.
+std::vector<PocketEdit> pocketEdits(const Surface &surface, const std::vector<int> &triangles,
+                                    const std::vector<int> &loop)
+{
+    std::vector<PocketEdit> edits;
+    for (std::size_t way = 0; way < 2 * loop.size(); ++way)
+        edits.push_back({static_cast<int>(way), -1, -1});
+    std::set<std::pair<int, int>> seen;
+    for (int t : triangles) {
+        const Triangle &tri = surface.triangles[t];
+        for (int k = 0; k < 3; ++k) {
+            const int a = tri[k], b = tri[(k + 1) % 3];
+            if (seen.insert({std::min(a, b), std::max(a, b)}).second)
+                edits.push_back({-1, a, b});
+        }
+    }
+    return edits;
+}
+
+bool applyEdit(Surface &surface, const std::vector<int> &triangles, const std::vector<int> &loop,
+               const PocketEdit &edit)
+{
+    if (edit.fanWay >= 0)
+        return retriangulate(surface, triangles, loop, std::size_t(edit.fanWay) % loop.size(),
+                             std::size_t(edit.fanWay) < loop.size());
+    return flipEdge(surface.triangles, edit.a, edit.b);
 }
 
 } // namespace
@@ -136,9 +183,10 @@ PocketRepair repairPockets(Model &model, ValidityReport &validity, Progress &pro
             for (const auto &[s, triangles] : bySurface) {
                 if (!tried.insert({s, triangles}).second)
                     continue;
-                int centre = -1;
-                const std::vector<int> loop = fanLoop(model, s, triangles, centre);
-                for (std::size_t way = 0; way < 2 * loop.size() && !changed; ++way) {
+                const std::vector<int> loop = fanLoop(model, s, triangles);
+                const std::vector<PocketEdit> edits =
+                    pocketEdits(model.surfaces[s], triangles, loop);
+                for (std::size_t e = 0; e < edits.size() && !changed; ++e) {
                     // A try that passes the shells costs a validity check: tick on each.
                     ++tries;
                     Progress step(progress, tries / (tries + 8.0), (tries + 1) / (tries + 9.0),
@@ -147,8 +195,7 @@ PocketRepair repairPockets(Model &model, ValidityReport &validity, Progress &pro
                     // vertex moves), which rejects most tries cheaply.
                     Surface &surface = model.surfaces[s];
                     const std::vector<Triangle> saved = surface.triangles;
-                    if (!retriangulate(surface, triangles, loop, way % loop.size(),
-                                       way < loop.size()))
+                    if (!applyEdit(surface, triangles, loop, edits[e]))
                         continue;
                     const RegionShells opened = analyseRegionShells(model);
                     if (opened.pockets.size() >= shells.pockets.size()
@@ -173,6 +220,8 @@ PocketRepair repairPockets(Model &model, ValidityReport &validity, Progress &pro
         }
         if (!changed)
             break;
+        // Tries that failed on the model before this change may succeed on the changed one.
+        tried.clear();
         shells = analyseRegionShells(model);
     }
     repair.opened = repair.pockets - static_cast<int>(shells.pockets.size());
