@@ -106,9 +106,9 @@ int runRemesh(CommandArgs &args)
     parts.comparison = &comparison;
     parts.inputValidity = &review.inputValidity;
     parts.outputValidity = &outValidity;
-    parts.facts = {result.initialSiteCount, result.siteCount,       result.refinementRounds,
-                   result.remainingTargets, result.timings,         result.energy,
-                   result.sizedSiteCount,   result.smallestCellSize};
+    parts.facts = {result.initialSiteCount, result.siteCount,        result.refinementRounds,
+                   result.remainingTargets, result.timings,          result.energy,
+                   result.sizedSiteCount,   result.smallestCellSize, result.pocketsOpened};
     const QJsonObject report = remeshReportJson(parts);
     if (reportPath)
         plan.writeText(reportPath->toStdString(), [&](std::ostream &o) {

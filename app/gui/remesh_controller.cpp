@@ -39,6 +39,9 @@ void runRemesh(QPromise<RemeshRun> &promise, std::shared_ptr<const Model> input,
         o.validity = result.validity;
         o.refinementRounds = result.refinementRounds;
         o.remainingTargets = result.remainingTargets;
+        o.sizedSiteCount = result.sizedSiteCount;
+        o.smallestCellSize = result.smallestCellSize;
+        o.pocketsOpened = result.pocketsOpened;
         o.timings = result.timings;
         o.energy = result.energy;
         o.params = params;

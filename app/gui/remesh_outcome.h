@@ -30,6 +30,9 @@ struct RemeshOutcome {
     // For the run's report in a project (the same report as the command line's).
     int refinementRounds = 0;
     int remainingTargets = 0;
+    int sizedSiteCount = 0;
+    double smallestCellSize = 0.0;
+    int pocketsOpened = 0;
     RemeshTimings timings;
     std::vector<double> energy;
 };

@@ -23,6 +23,9 @@ RemeshOutcome restoredOutcome(std::shared_ptr<const Model> input, const ProjectR
     o.initialSiteCount = refinement.value(QLatin1String("initial_sites")).toInt();
     o.refinementRounds = refinement.value(QLatin1String("rounds")).toInt();
     o.remainingTargets = refinement.value(QLatin1String("remaining_places")).toInt();
+    o.sizedSiteCount = refinement.value(QLatin1String("sized_sites")).toInt();
+    o.smallestCellSize = refinement.value(QLatin1String("smallest_size")).toDouble();
+    o.pocketsOpened = refinement.value(QLatin1String("pockets_opened")).toInt();
     o.validity = validityFromJson(report.value(QLatin1String("output"))
                                       .toObject()
                                       .value(QLatin1String("validity"))

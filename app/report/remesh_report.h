@@ -26,6 +26,7 @@ struct RemeshReportFacts {
     std::vector<double> energy;
     int sizedSiteCount = 0;        // the sites of the feature sizing field (0: not known)
     double smallestCellSize = 0.0; // its smallest size (0: not known)
+    int pocketsOpened = 0;         // closed pockets re-triangulated open (pocket_repair.h)
 };
 
 struct RemeshReportParts {

@@ -246,9 +246,10 @@ RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &s
                       params, ledger, progress);
     const std::size_t stripRecords = ledger.size();
     RemeshResult result = meshFromSites(collapsed, sites, params, std::move(ledger), progress);
+    // Opening pockets changes the output, so the ledger is reconciled with the opened model.
+    checkAndOpenPockets(result, Progress::none());
     reconcileLedger(input, result.model, result.ledger,
                     2.0 * edgeLengthForSites(modelArea(input), result.siteCount), stripRecords);
-    checkAndOpenPockets(result, Progress::none());
     return result;
 }
 

@@ -194,6 +194,7 @@ private slots:
         const QJsonObject refinement = again[QStringLiteral("refinement")].toObject();
         QCOMPARE(refinement[QStringLiteral("initial_sites")].toInt(), 1000);
         QVERIFY(refinement[QStringLiteral("final_sites")].toInt() > 1000);
+        QVERIFY(refinement[QStringLiteral("pockets_opened")].toInt(-1) >= 0);
         const QJsonObject edits = again[QStringLiteral("topology_edits")].toObject();
         int sum = 0;
         for (const char *k :

@@ -84,6 +84,8 @@ struct Figures {
     bool valid;
     double hausdorff, meanQ;
     int paramSites, iterations;
+    int sizedSites, pocketsOpened;
+    double smallestSize;
 };
 
 Figures figuresOf(const ProjectWorkflow::Run &run)
@@ -97,7 +99,10 @@ Figures figuresOf(const ProjectWorkflow::Run &run)
             o.comparison.hausdorff.symmetricPctBbox,
             o.comparison.output.mesh.meanQuality,
             o.params.sites,
-            o.params.iterations};
+            o.params.iterations,
+            o.sizedSiteCount,
+            o.pocketsOpened,
+            o.smallestCellSize};
 }
 
 } // namespace
@@ -278,6 +283,11 @@ private slots:
             QCOMPARE(after.meanQ, before[i].meanQ);
             QCOMPARE(after.paramSites, before[i].paramSites);
             QCOMPARE(after.iterations, before[i].iterations);
+            // The sizing field's figures come back from the report, not as zeros.
+            QVERIFY(before[i].sizedSites > 0 && before[i].smallestSize > 0.0);
+            QCOMPARE(after.sizedSites, before[i].sizedSites);
+            QCOMPARE(after.smallestSize, before[i].smallestSize);
+            QCOMPARE(after.pocketsOpened, before[i].pocketsOpened);
         }
         QCOMPARE(again->runs()[1].decisions, decisions);
         QVERIFY(again->runs()[0].decisions.isEmpty());
