@@ -75,6 +75,26 @@ int surfaceNamed(const Model &model, const std::string &name)
     return -1;
 }
 
+// Counts the pointer events the window system itself delivers to a widget (not those a test
+// sends): they move the pointer, and so may start a hover, whatever the test does.
+class WindowSystemPointer : public QObject {
+public:
+    explicit WindowSystemPointer(QWidget *widget) { widget->installEventFilter(this); }
+    int events() const { return m_events; }
+
+protected:
+    bool eventFilter(QObject *, QEvent *event) override
+    {
+        if (event->spontaneous()
+            && (event->type() == QEvent::MouseMove || event->type() == QEvent::Enter))
+            ++m_events;
+        return false;
+    }
+
+private:
+    int m_events = 0;
+};
+
 } // namespace
 
 class TestGuiModelTree : public QObject {
@@ -331,12 +351,18 @@ private slots:
         QVERIFY(hovered.wait(5 * VtkViewWidget::kHoverDelayMs));
         const int rests = int(hovered.count());
         ended.clear();
+        const WindowSystemPointer pointer(view);
         QEvent leave(QEvent::Leave);
         QApplication::sendEvent(view, &leave);
         QCOMPARE(ended.count(), 1);
         QTRY_VERIFY(!QToolTip::isVisible());
         QTest::qWait(2 * VtkViewWidget::kHoverDelayMs);
-        QCOMPARE(int(hovered.count()), rests); // gone from the view, the pointer describes nothing
+        // Gone from the view, the pointer describes nothing, unless the window system moved it
+        // back in meanwhile.
+        if (pointer.events() == 0)
+            QCOMPARE(int(hovered.count()), rests);
+        else
+            qInfo("%d pointer events from the window system after the leave", pointer.events());
 
         m_tree->applySurfacesVisible({}, true); // the output follows the tree again
         for (int i = 0; i < int(output->surfaces.size()); ++i)
