@@ -91,6 +91,10 @@ public:
     }
 
     const CvtEvaluation &last() const { return m_last; }
+    bool fixed(std::size_t i) const
+    {
+        return i < m_params.fixedSites.size() && m_params.fixedSites[i] != 0;
+    }
 
     static int emptyCells(const CvtEvaluation &e)
     {
@@ -111,7 +115,7 @@ public:
         const CvtEvaluation &e = m_last;
         grad.resize(x.size());
         for (std::size_t i = 0; i < e.gradient.size(); ++i)
-            grad.segment<3>(3 * i) = m_scale * e.gradient[i];
+            grad.segment<3>(3 * i) = fixed(i) ? Vec3::Zero().eval() : Vec3(m_scale * e.gradient[i]);
         return e.energy;
     }
 
@@ -281,7 +285,7 @@ void runLloyd(Objective &objective, const std::vector<Vec3> &initial, const CvtP
     result.stopReason = "iterations";
     for (int k = 1; k <= params.iterations; ++k) {
         for (std::size_t i = 0; i < sites.size(); ++i)
-            if (e.cells.mass[i] > 0)
+            if (e.cells.mass[i] > 0 && !objective.fixed(i))
                 sites[i] += e.cells.moment[i] / e.cells.mass[i]; // to the centroid g_i
         e = objective.evaluate(sites);
         if (Objective::emptyCells(e) > 0) {

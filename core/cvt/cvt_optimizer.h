@@ -31,6 +31,9 @@ struct CvtParams {
     // triangulation; the diagram is the same, the k nearest are found 4 times faster on
     // modelA5 at 5000 sites (voronoi_neighbours.h).
     NeighbourSearch neighbourSearch = NeighbourSearch::NearestNeighbours;
+    // Sites that keep their place (non-zero entries, same indices as the sites; empty: none):
+    // their gradient is taken as zero, so L-BFGS and Lloyd leave them where they are.
+    std::vector<char> fixedSites;
     // Called after each iteration (from the calling thread); Progress::tick follows it, so a
     // cancel requested there stops the run with Cancelled.
     std::function<void(const CvtIterationReport &)> onIteration;

@@ -95,6 +95,33 @@ private slots:
         verifyDecreasing(r);
     }
 
+    // Fixed sites keep their place (to rounding: L-BFGS works on scaled coordinates) under L-BFGS
+    // and Lloyd; the others still move and the energy still decreases.
+    void fixedSitesStayWhereTheyAre()
+    {
+        const RestrictionDomain d = test::sphereDomain(3);
+        const std::vector<Vec3> initial = sampleSurfaces(d, 80, 11);
+        for (const bool lloyd : {false, true}) {
+            CvtParams params;
+            params.iterations = 20;
+            params.lloyd = lloyd;
+            params.fixedSites.assign(initial.size(), 0);
+            for (std::size_t i = 0; i < initial.size(); i += 4)
+                params.fixedSites[i] = 1;
+            const CvtResult r = optimizeCvt(d, initial, params);
+            verifyDecreasing(r);
+            int moved = 0;
+            for (std::size_t i = 0; i < initial.size(); ++i) {
+                if (params.fixedSites[i])
+                    QVERIFY2((r.sites[i] - initial[i]).norm() < 1e-12,
+                             qPrintable(QString("site %1").arg(i)));
+                else
+                    moved += (r.sites[i] - initial[i]).norm() > 1e-3;
+            }
+            QVERIFY2(moved >= 50, qPrintable(QString::number(moved))); // of the 60 free ones
+        }
+    }
+
     void sameSeedSameSitesWhateverTheThreads()
     {
         const RestrictionDomain d = test::squareDomain(30);
