@@ -2033,6 +2033,14 @@ Click to show it in the views</source>
         <source>Near two features that do not meet (the two lines of a small fault throw, close corners), cells are at most this times their distance, so that both are kept without needles; the sites grow accordingly, to at most 4 times those asked. Use it with the strip factor at 0 to keep small throws rather than remove them; 0 turns it off.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Pin sites on close features</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refinement rounds put sites on the corners and lines around each topology change, as close as the nearest other feature, and grade the surfaces around them: more features are kept, with up to 4 times the sites asked and more triangles under 30°.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ProjectWorkflow</name>

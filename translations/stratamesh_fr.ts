@@ -2036,6 +2036,14 @@ Cliquer pour le montrer dans les vues</translation>
         <source>Near two features that do not meet (the two lines of a small fault throw, close corners), cells are at most this times their distance, so that both are kept without needles; the sites grow accordingly, to at most 4 times those asked. Use it with the strip factor at 0 to keep small throws rather than remove them; 0 turns it off.</source>
         <translation>Près de deux objets qui ne se touchent pas (les deux lignes d&apos;un petit rejet de faille, des coins proches), les cellules mesurent au plus ce facteur fois leur distance, pour garder les deux sans aiguilles ; les sites augmentent d&apos;autant, jusqu&apos;à 4 fois ceux demandés. À utiliser avec le facteur de bandes à 0 pour garder les petits rejets plutôt que de les supprimer ; 0 le désactive.</translation>
     </message>
+    <message>
+        <source>&amp;Pin sites on close features</source>
+        <translation>&amp;Fixer des sites sur les éléments proches</translation>
+    </message>
+    <message>
+        <source>Refinement rounds put sites on the corners and lines around each topology change, as close as the nearest other feature, and grade the surfaces around them: more features are kept, with up to 4 times the sites asked and more triangles under 30°.</source>
+        <translation>Les passes de raffinement placent des sites sur les coins et les lignes autour de chaque changement de topologie, aussi près que l&apos;élément voisin le plus proche, et graduent les surfaces autour : plus d&apos;éléments sont gardés, avec jusqu&apos;à 4 fois les sites demandés et plus de triangles sous 30°.</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ProjectWorkflow</name>

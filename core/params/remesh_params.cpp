@@ -101,6 +101,18 @@ ParamTable<RemeshParams> makeTable()
     t.add(memberParam(&P::refinementRounds, i));
 
     i = {};
+    i.key = "pin_features", i.flag = "--pin-features", i.jsonKey = "pin_features";
+    i.type = ParamType::Flag;
+    i.thesis = "§4.6.2";
+    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "&Pin sites on close features");
+    i.help = QT_TRANSLATE_NOOP(
+        "stratamesh::Params",
+        "Refinement rounds put sites on the corners and lines around each topology change, as "
+        "close as the nearest other feature, and grade the surfaces around them: more features "
+        "are kept, with up to 4 times the sites asked and more triangles under 30°.");
+    t.add(memberParam(&P::refinementPinsFeatures, i));
+
+    i = {};
     i.key = "adaptive", i.flag = "--adaptive", i.jsonKey = "adaptive", i.type = ParamType::Flag;
     i.thesis = "Fig. 4.19";
     i.label =

@@ -19,6 +19,7 @@
 #include "remesh/output_model_builder.h"
 #include "remesh/output_points.h"
 #include "remesh/pocket_repair.h"
+#include "remesh/sizing_refinement.h"
 #include "remesh/strip_collapse.h"
 #include "remesh/topology_refinement.h"
 #include "voronoi/restricted_voronoi.h"
@@ -336,6 +337,13 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     result.refinementRounds = 0;
     RemeshResult best = result;
     const double baseSlivers = computeMeshStatistics(result.model).pctTrianglesAngleBelow30;
+    // Sites pinned on the features near wrong places (featureSitesNearTargets), and the size
+    // field they follow, computed the first time a round needs it.
+    std::vector<char> pinned(sites.size(), 0);
+    std::vector<Vec3> allTargets;
+    SizedModel sized_;
+    std::vector<double> fineDensity;
+    StripCollapse fineCollapse;
     for (;;) {
         const double spacing =
             edgeLengthForSites(area, static_cast<int>(sites.size())) * std::sqrt(sized / double(n));
@@ -352,14 +360,52 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         if (result.remainingTargets == 0 || params.refinementRounds == 0
             || rounds >= params.refinementRounds + (invalid.empty() ? 0 : 4))
             break;
-        const int room = static_cast<int>(std::lround(params.refinementMaxGrowth * n))
-                         - (static_cast<int>(sites.size()) - sized);
+        // Pinning the features may take the sites up to sizingMaxGrowth times those asked.
+        const int room = params.refinementPinsFeatures
+                             ? static_cast<int>(std::lround(params.sizingMaxGrowth * n))
+                                   - static_cast<int>(sites.size())
+                             : static_cast<int>(std::lround(params.refinementMaxGrowth * n))
+                                   - (static_cast<int>(sites.size()) - sized);
         std::vector<Vec3> targets = invalid;
         if (room > 0 && rounds < params.refinementRounds)
             targets.insert(targets.end(), topology.begin(), topology.end());
         if (targets.empty())
             break;
         const double radius = 1.5 * spacing;
+        std::vector<Vec3> pins, graded;
+        const double pinRadius = 0.6 * spacing; // about the cell of the place
+        if (params.refinementPinsFeatures) {
+            // The model is split finer than the feature size around every place so far (so
+            // that the domain carries the size field), pins go on its features near this
+            // round's places and graded free sites around them.
+            allTargets.insert(allTargets.end(), targets.begin(), targets.end());
+            FeatureSizingParams sp;
+            sp.edgeLength = h0;
+            sp.lfsFactor = 1.0;
+            sp.gradation = params.sizingGradation;
+            sp.minEdgeLength = h0 / 64.0;
+            sp.dResolution = params.dResolution;
+            sized_ = refineToSize(simplified, sp, allTargets, radius, 6);
+            const double coarse = 0.9 * spacing;
+            for (const Vec3 &p :
+                 featureSitesNearTargets(sized_.model, sized_.size, targets, pinRadius, coarse)) {
+                bool known = false;
+                for (std::size_t i = 0; i < sites.size() && !known; ++i)
+                    known = pinned[i] && (sites[i] - p).squaredNorm() <= 1e-12 * h0 * h0;
+                if (!known)
+                    pins.push_back(p);
+            }
+            fineDensity.clear();
+            if (!pins.empty()) {
+                std::vector<double> base = density;
+                if (base.empty())
+                    base.assign(simplified.vertices.size(), 1.0);
+                fineDensity = extendToAdded(sized_, base);
+                const RestrictionDomain fine = makeRestrictionDomain(sized_.model);
+                graded = gradedSitesNearTargets(fine, sized_.size, targets, radius, coarse,
+                                                params.seed + 104729u * (rounds + 1), fineDensity);
+            }
+        }
         raiseDensity(domain, targets, radius, params.refinementDensityFactor, density);
         const int near = std::max(4, sitesNearTargets(sites, targets, radius));
         int extra = static_cast<int>(std::lround((params.refinementDensityFactor - 1.0) * near));
@@ -367,30 +413,60 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         // sites again (an 8-fault network doubled its sites every round to 15 GB without it).
         extra = std::min(extra, std::max(room, 0) + (invalid.empty() ? 0 : n));
         extra = std::min(extra, sized + 2 * n - static_cast<int>(sites.size()));
-        if (extra <= 0)
+        if (params.refinementPinsFeatures) {
+            extra = std::min(extra, std::max(room, 0));
+            const int left = std::max(0, room - extra - static_cast<int>(pins.size()));
+            if (static_cast<int>(graded.size()) > left)
+                graded.resize(left); // random order: a uniform thinning
+        }
+        if (extra <= 0 && pins.empty())
             break;
-        const std::vector<Vec3> added =
-            sampleNearTargets(domain, targets, radius, extra, params.seed + 7919u * (rounds + 1));
-        if (added.empty())
+        const std::vector<Vec3> added = sampleNearTargets(
+            domain, targets, radius, std::max(extra, 0), params.seed + 7919u * (rounds + 1));
+        if (added.empty() && pins.empty())
             break;
         sites.insert(sites.end(), added.begin(), added.end());
+        sites.insert(sites.end(), graded.begin(), graded.end());
+        sites.insert(sites.end(), pins.begin(), pins.end());
+        pinned.resize(sites.size() - pins.size(), 0);
+        pinned.resize(sites.size(), 1);
         ++rounds;
         Progress round(progress, at, at + 0.5 * (1.0 - at),
                        "Refinement round " + std::to_string(rounds));
         at += 0.5 * (1.0 - at);
         ProgressSteps roundSteps(round, {4, 5, 1});
-        RestrictionDomain refined = domain;
-        refined.density = density;
+        const bool fine = !fineDensity.empty();
+        if (fine) {
+            fineCollapse = collapsed;
+            fineCollapse.model = sized_.model;
+        }
+        RestrictionDomain refined =
+            fine ? makeRestrictionDomain(sized_.model, fineDensity) : domain;
+        if (!fine)
+            refined.density = density;
         CvtParams local = cvt;
         local.iterations = params.refinementIterations;
+        local.fixedSites = pinned;
+        if (fine) {
+            // Graded random sites need many more iterations than a few added ones, and Lloyd
+            // spaces them where L-BFGS, facing densities 64⁴ times apart, leaves them random
+            // (modelA5 at 5000 sites: 5.1 % of triangles under 30° instead of 6.8 %, in 0.7 times
+            // the time).
+            local.lloyd = true;
+            local.alpha = 0.0;
+            local.iterations *= 5;
+        }
         if (local.iterations > 0) {
             Progress step = roundSteps.step(0, "CVT");
-            sites = optimizeCvt(refined, sites, local, step).sites;
+            std::vector<Vec3> moved = optimizeCvt(refined, sites, local, step).sites;
+            for (std::size_t i = 0; i < sites.size(); ++i)
+                if (!pinned[i]) // a pinned site whose cell emptied may have been relocated
+                    sites[i] = moved[i];
         }
         RemeshResult again;
         {
             Progress step = roundSteps.step(1, "Mesh building");
-            again = meshFromSites(collapsed, sites, params, ledger, step);
+            again = meshFromSites(fine ? fineCollapse : collapsed, sites, params, ledger, step);
         }
         {
             Progress step = roundSteps.step(2, "Validity");
@@ -401,7 +477,8 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         const bool fixesValidity = again.validity.problems.size() < best.validity.problems.size();
         const bool keepsQuality = computeMeshStatistics(again.model).pctTrianglesAngleBelow30
                                   <= baseSlivers + params.refinementMaxQualityLoss;
-        const bool improved = score(again) < score(best) && (fixesValidity || keepsQuality);
+        const bool improved = score(again) < score(best)
+                              && (fixesValidity || keepsQuality || params.refinementPinsFeatures);
         if (improved) {
             best = again;
             best.siteCount = static_cast<int>(sites.size());

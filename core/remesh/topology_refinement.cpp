@@ -165,6 +165,116 @@ std::vector<Vec3> sampleNearTargets(const RestrictionDomain &domain,
     return points;
 }
 
+std::vector<Vec3> featureSitesNearTargets(const Model &model, const std::vector<double> &size,
+                                          const std::vector<Vec3> &targets, double radius,
+                                          double coarse)
+{
+    std::vector<Vec3> out;
+    const double r2 = radius * radius;
+    auto sizeAt = [&](int v) {
+        return v >= 0 && v < static_cast<int>(size.size()) && size[v] > 0.0 ? size[v] : coarse;
+    };
+    for (const Corner &c : model.corners)
+        if (c.vertex >= 0 && nearAny(model.vertices[c.vertex], targets, r2))
+            out.push_back(model.vertices[c.vertex]);
+    for (const Line &line : model.lines) {
+        const std::size_t n = line.vertices.size();
+        if (n < 2)
+            continue;
+        // Walk the polyline, one site each time the length since the last reaches the size
+        // there (interpolated along a segment); the start is a corner or, on a closed line,
+        // an arbitrary vertex.
+        double run = 0.0;
+        const std::size_t segments = line.closed ? n : n - 1;
+        for (std::size_t i = 0; i < segments; ++i) {
+            const int va = line.vertices[i], vb = line.vertices[(i + 1) % n];
+            const Vec3 &a = model.vertices[va], &b = model.vertices[vb];
+            const double length = (b - a).norm();
+            const double ha = sizeAt(va), hb = sizeAt(vb);
+            double t = 0.0; // length walked along this segment
+            for (;;) {
+                const double h =
+                    std::max(1e-9 * coarse, ha + (hb - ha) * (t / std::max(length, 1e-300)));
+                const double step = h - run;
+                if (t + step > length)
+                    break;
+                t += step;
+                run = 0.0;
+                const Vec3 p = a + (b - a) * (t / length);
+                if (h < coarse && nearAny(p, targets, r2)
+                    && !(line.corners[1] >= 0 && i + 1 == segments && (p - b).norm() < 0.5 * hb))
+                    out.push_back(p);
+            }
+            run += length - t;
+        }
+    }
+    return out;
+}
+
+std::vector<Vec3> gradedSitesNearTargets(const RestrictionDomain &domain,
+                                         const std::vector<double> &size,
+                                         const std::vector<Vec3> &targets, double radius,
+                                         double coarse, std::uint64_t seed,
+                                         std::vector<double> &density)
+{
+    if (density.empty())
+        density.assign(domain.points.size(), 1.0);
+    const double r2 = radius * radius;
+    auto sizeAt = [&](int v) {
+        return v >= 0 && v < static_cast<int>(size.size()) && size[v] > 0.0
+                   ? std::min(size[v], coarse)
+                   : coarse;
+    };
+    for (std::size_t v = 0; v < domain.points.size(); ++v) {
+        const double h = sizeAt(static_cast<int>(v));
+        if (h < coarse && nearAny(domain.points[v], targets, r2))
+            density[v] = std::max(density[v], std::pow(coarse / h, 4.0));
+    }
+    const double cell = std::sqrt(3.0) / 2.0 * coarse * coarse;
+    std::vector<int> chosen;
+    std::vector<double> cumulative;
+    double total = 0.0;
+    for (std::size_t t = 0; t < domain.triangles.size(); ++t) {
+        const Triangle &tri = domain.triangles[t];
+        const double h = (sizeAt(tri[0]) + sizeAt(tri[1]) + sizeAt(tri[2])) / 3.0;
+        if (!(h < coarse))
+            continue;
+        const Vec3 &a = domain.points[tri[0]], &b = domain.points[tri[1]],
+                   &c = domain.points[tri[2]];
+        if (!nearAny((a + b + c) / 3.0, targets, r2))
+            continue;
+        const double w = 0.5 * (b - a).cross(c - a).norm() * ((coarse / h) * (coarse / h) - 1.0);
+        if (!(w > 0.0))
+            continue;
+        total += w;
+        chosen.push_back(static_cast<int>(t));
+        cumulative.push_back(total);
+    }
+    std::vector<Vec3> points;
+    const int count = static_cast<int>(std::lround(total / cell));
+    if (chosen.empty() || count <= 0)
+        return points;
+    std::mt19937_64 random(seed);
+    auto uniform = [&random] { return static_cast<double>(random() >> 11) * 0x1.0p-53; };
+    points.reserve(count);
+    for (int i = 0; i < count; ++i) {
+        const std::size_t k = std::min<std::size_t>(
+            std::lower_bound(cumulative.begin(), cumulative.end(), uniform() * total)
+                - cumulative.begin(),
+            chosen.size() - 1);
+        const Triangle &tri = domain.triangles[chosen[k]];
+        double u = uniform(), w = uniform();
+        if (u + w > 1.0) {
+            u = 1.0 - u;
+            w = 1.0 - w;
+        }
+        const Vec3 &a = domain.points[tri[0]], &b = domain.points[tri[1]],
+                   &c = domain.points[tri[2]];
+        points.push_back(a + u * (b - a) + w * (c - a));
+    }
+    return points;
+}
+
 int sitesNearTargets(const std::vector<Vec3> &sites, const std::vector<Vec3> &targets,
                      double radius)
 {

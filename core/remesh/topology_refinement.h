@@ -41,6 +41,27 @@ std::vector<Vec3> sampleNearTargets(const RestrictionDomain &domain,
                                     const std::vector<Vec3> &targets, double radius, int count,
                                     std::uint64_t seed);
 
+// Sites that pin the features near the targets (Cheng, Dey & Ramos 2007 protect the features of a
+// piecewise smooth complex the same way, before the surfaces): one on every corner of `model`
+// within `radius` of a target, and along every line, within that radius, one every size[v] of
+// length, where `size` (per model vertex) is the graded local feature size. A cell around a site
+// on a corner holds no other corner, and line sites as close as the nearest other feature keep
+// each line in cells of its own, whatever the site spacing elsewhere. Only where size < coarse.
+std::vector<Vec3> featureSitesNearTargets(const Model &model, const std::vector<double> &size,
+                                          const std::vector<Vec3> &targets, double radius,
+                                          double coarse);
+
+// Free sites that grade the surfaces around the pinned features: on the domain triangles within
+// `radius` of a target whose size (mean of `size` at its corners, per domain point) is below
+// `coarse`, as many as the size field asks beyond a uniform `coarse` spacing, (coarse/h)² − 1
+// per hexagonal cell of side `coarse`, placed with that weight (deterministic for a seed). The
+// density of those points is raised to (coarse/h)⁴ so that the CVT keeps them graded.
+std::vector<Vec3> gradedSitesNearTargets(const RestrictionDomain &domain,
+                                         const std::vector<double> &size,
+                                         const std::vector<Vec3> &targets, double radius,
+                                         double coarse, std::uint64_t seed,
+                                         std::vector<double> &density);
+
 // Number of `sites` within `radius` of a target.
 int sitesNearTargets(const std::vector<Vec3> &sites, const std::vector<Vec3> &targets,
                      double radius);

@@ -32,6 +32,7 @@
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QCheckBox>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -233,6 +234,12 @@ private slots:
         QVERIFY(qAbs(at4000 - edgeLengthForSites(modelArea(*model), 4000)) <= 0.01 * at4000);
         QVERIFY(!length->suffix().trimmed().isEmpty());
         QVERIFY(!dResolution->suffix().trimmed().isEmpty());
+        // Every flag of the table is offered, the pinned refinement off by default.
+        auto *pins = dialog.findChild<QCheckBox *>(QStringLiteral("pin_features"));
+        QVERIFY(pins && !pins->isChecked());
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QVERIFY(dialog.grab().save(kShots + "/remesh_dialog.png"));
     }
 
     // About lists the Mesh and Analyse actions: nothing that no menu offers.

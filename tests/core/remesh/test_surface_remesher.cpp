@@ -337,6 +337,29 @@ private slots:
         QVERIFY(checkValidity(merged.model).valid);
     }
 
+    // A fault network whose strips (throws of 6 to 50 m) are far narrower than the edges (about
+    // 110 m at 400 sites): refinement rounds that pin sites on the features around each change
+    // keep most of the topology the plain rounds lose, within the growth cap, and stay valid.
+    void pinnedFeaturesKeepMoreOfTheTopology()
+    {
+        const Model input = recoverTopology(faultNetworkBox(3, 20, 2, 20, 60));
+        RemeshParams params;
+        params.sites = 400;
+        params.stripWidthFactor = 0; // keep every strip
+        const RemeshResult plain = remeshModel(input, params);
+        params.refinementPinsFeatures = true;
+        const RemeshResult pinned = remeshModel(input, params);
+        const int before = countTopologyEdits(plain.ledger).total();
+        const int after = countTopologyEdits(pinned.ledger).total();
+        qInfo("network of 3 faults, 400 sites: %d topology edits with %d sites, %d with %d pinned",
+              before, plain.siteCount, after, pinned.siteCount);
+        QVERIFY(before >= 20);
+        QVERIFY2(after * 4 <= before, qPrintable(QString("%1 → %2").arg(before).arg(after)));
+        QVERIFY(pinned.siteCount <= static_cast<int>(params.sizingMaxGrowth * params.sites) + 500);
+        QVERIFY(pinned.validity.valid);
+        QVERIFY(checkValidity(pinned.model).valid);
+    }
+
     // Four sheets around one line (a folded horizon crossing a 45° fault with no throw): the
     // dual gave fins along the line, duplicated in two sheets (line_fins.h). Without their
     // removal none of these runs was valid.
