@@ -22,6 +22,7 @@
 #include "remesh/ledger_reconciliation.h"
 #include "remesh/remesh_review.h"
 #include "remesh/surface_remesher.h"
+#include "remesh/topology_refinement.h"
 #include "remesh_report.h"
 
 #include <QElapsedTimer>
@@ -129,6 +130,27 @@ int runRemesh(CommandArgs &args)
       << " topology edits, " << (outValidity.valid ? "valid" : "NOT valid") << '\n'
       << "  time: sampling " << QString::number(result.timings.samplingSeconds, 'f', 2)
       << " s, mesh " << QString::number(result.timings.meshSeconds, 'f', 2) << " s\n";
+    if (edits.total() > 0) {
+        // Name what changed, so that a run stopped by the refinement caps says which features
+        // it simplified without opening the ledger.
+        std::vector<std::string> names;
+        for (const LedgerRecord &r : result.ledger)
+            if (isTopologyEdit(r.kind))
+                for (const EntityRef &e : r.inputs)
+                    if (std::find(names.begin(), names.end(), e.name) == names.end())
+                        names.push_back(e.name);
+        QStringList shown;
+        for (std::size_t i = 0; i < names.size() && i < 8; ++i)
+            shown << QString::fromStdString(names[i]);
+        o << "  topology changed";
+        if (result.remainingTargets > 0)
+            o << " where refinement stopped (" << result.refinementRounds << " of "
+              << params.refinementRounds << " rounds, " << result.siteCount << " sites)";
+        o << ", input entities involved: " << shown.join(QStringLiteral(", "));
+        if (names.size() > 8)
+            o << ", … (" << names.size() << " in all)";
+        o << "; the ledger has a record for each\n";
+    }
     return 0;
 }
 
