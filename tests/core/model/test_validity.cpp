@@ -62,6 +62,13 @@ Model withoutSurface(Model m, int s)
     return m;
 }
 
+// A tetrahedron with outward normals, its right angle at o.
+Surface tetrahedron(const std::string &name, double size, const Vec3 &o)
+{
+    return makeSurface(name, {o, o + Vec3(size, 0, 0), o + Vec3(0, size, 0), o + Vec3(0, 0, size)},
+                       {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
+}
+
 } // namespace
 
 class TestValidity : public QObject {
@@ -337,15 +344,25 @@ private slots:
         QCOMPARE(r.problems.front().entities.size(), std::size_t(3));
     }
 
+    // The same with a pocket of 1.3 m³ in a model 35 km across: a remesh of modelA5 left one of
+    // 5.1 m³ that TetGen meshed as a region without a seed, below the old limit of 1e-12 ×
+    // diagonal³ (42 m³ here). Each shell is measured against its own size.
+    void tinyPocketInALargeModel()
+    {
+        Model m = modelOf({tetrahedron("big", 20000.0, Vec3::Zero()),
+                           tetrahedron("small", 2.0, Vec3(20000.0, 5000.0, 0.0))});
+        m.regions = {{"inside", {{0, false}, {1, false}}}};
+        m.universe = {{0, true}, {1, true}};
+        const ValidityReport r = checkValidity(m);
+        QCOMPARE(r.count(check::regionPocket), std::size_t(1));
+        QVERIFY2(r.problems.front().message.find("1.33") != std::string::npos,
+                 r.problems.front().message.c_str());
+    }
+
     // One region on the inside of two tetrahedra: every side closed, balanced and of positive
     // volume, yet the region is in two pieces and one seed would leave the smaller one empty.
     void regionInTwoPiecesHasAPocket()
     {
-        auto tetrahedron = [](const std::string &name, double size, const Vec3 &o) {
-            return makeSurface(
-                name, {o, o + Vec3(size, 0, 0), o + Vec3(0, size, 0), o + Vec3(0, 0, size)},
-                {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
-        };
         Model m = modelOf({tetrahedron("big", 1.0, Vec3::Zero()),
                            tetrahedron("small", 0.5, Vec3(5.0, 0.0, 0.0))});
         m.regions = {{"inside", {{0, false}, {1, false}}}};
