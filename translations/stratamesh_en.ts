@@ -2425,6 +2425,27 @@ Click to show it in the views</source>
         <source>no remesh is running</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source>… (%n in all)</source>
+        <translation>
+            <numerusform>… (%n in all)</numerusform>
+            <numerusform>… (%n in all)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n topology change(s) left where refinement stopped (%1 of %2 rounds, %3 sites), involving %4 — see Review</source>
+        <translation>
+            <numerusform>%n topology change left where refinement stopped (%1 of %2 rounds, %3 sites), involving %4 — see Review</numerusform>
+            <numerusform>%n topology changes left where refinement stopped (%1 of %2 rounds, %3 sites), involving %4 — see Review</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n topology change(s), involving %1 — see Review</source>
+        <translation>
+            <numerusform>%n topology change, involving %1 — see Review</numerusform>
+            <numerusform>%n topology changes, involving %1 — see Review</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ReviewPanel</name>

@@ -2428,6 +2428,27 @@ Cliquer pour le montrer dans les vues</translation>
         <source>no remesh is running</source>
         <translation>aucun remaillage n&apos;est en cours</translation>
     </message>
+    <message numerus="yes">
+        <source>… (%n in all)</source>
+        <translation>
+            <numerusform>… (%n en tout)</numerusform>
+            <numerusform>… (%n en tout)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n topology change(s) left where refinement stopped (%1 of %2 rounds, %3 sites), involving %4 — see Review</source>
+        <translation>
+            <numerusform>%n changement de topologie restant là où le raffinement s&apos;est arrêté (%1 passes sur %2, %3 sites), concernant %4 — voir Contrôle</numerusform>
+            <numerusform>%n changements de topologie restants là où le raffinement s&apos;est arrêté (%1 passes sur %2, %3 sites), concernant %4 — voir Contrôle</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n topology change(s), involving %1 — see Review</source>
+        <translation>
+            <numerusform>%n changement de topologie, concernant %1 — voir Contrôle</numerusform>
+            <numerusform>%n changements de topologie, concernant %1 — voir Contrôle</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ReviewPanel</name>

@@ -133,12 +133,7 @@ int runRemesh(CommandArgs &args)
     if (edits.total() > 0) {
         // Name what changed, so that a run stopped by the refinement caps says which features
         // it simplified without opening the ledger.
-        std::vector<std::string> names;
-        for (const LedgerRecord &r : result.ledger)
-            if (isTopologyEdit(r.kind))
-                for (const EntityRef &e : r.inputs)
-                    if (std::find(names.begin(), names.end(), e.name) == names.end())
-                        names.push_back(e.name);
+        const std::vector<std::string> names = topologyEditEntities(result.ledger);
         QStringList shown;
         for (std::size_t i = 0; i < names.size() && i < 8; ++i)
             shown << QString::fromStdString(names[i]);

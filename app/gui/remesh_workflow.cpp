@@ -19,6 +19,8 @@
 #include "io/formats.h"
 #include "io/mesh_writer.h"
 #include "io/output_plan.h"
+#include "remesh/surface_remesher.h"
+#include "remesh/topology_refinement.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -246,6 +248,32 @@ void RemeshWorkflow::onRemeshed(const RemeshOutcome &outcome)
                          QLocale().toString(outcome.milliseconds / 1000.0, 'f', 2),
                          QLocale().toString(qulonglong(outcome.output->triangleCount())));
     m_bench.addMessage(done);
+    const int edits = countTopologyEdits(*outcome.ledger).total();
+    if (edits > 0) {
+        // Which features were not kept, without opening the Review: a warning when refinement
+        // stopped at its caps with places still changed.
+        const std::vector<std::string> names = topologyEditEntities(*outcome.ledger);
+        QStringList shown;
+        for (std::size_t i = 0; i < names.size() && i < 8; ++i)
+            shown << QString::fromStdString(names[i]);
+        if (names.size() > 8)
+            shown << tr("… (%n in all)", nullptr, int(names.size()));
+        const QString list = shown.join(QStringLiteral(", "));
+        Message changed;
+        if (outcome.remainingTargets > 0) {
+            changed.severity = Message::Severity::Warning;
+            changed.text = tr("%n topology change(s) left where refinement stopped (%1 of %2 "
+                              "rounds, %3 sites), involving %4 — see Review",
+                              nullptr, edits)
+                               .arg(outcome.refinementRounds)
+                               .arg(outcome.params.refinementRounds)
+                               .arg(QLocale().toString(outcome.siteCount), list);
+        } else {
+            changed.text =
+                tr("%n topology change(s), involving %1 — see Review", nullptr, edits).arg(list);
+        }
+        m_bench.addMessage(changed);
+    }
     if (!outcome.validity.valid) {
         // Never announced as a plain success: a volume mesher would fail on it.
         Message invalid;

@@ -64,6 +64,17 @@ bool isTopologyEdit(LedgerKind kind)
     }
 }
 
+std::vector<std::string> topologyEditEntities(const SimplificationLedger &ledger)
+{
+    std::vector<std::string> names;
+    for (const LedgerRecord &r : ledger)
+        if (isTopologyEdit(r.kind))
+            for (const EntityRef &e : r.inputs)
+                if (std::find(names.begin(), names.end(), e.name) == names.end())
+                    names.push_back(e.name);
+    return names;
+}
+
 std::vector<Vec3> refinementTargets(const Model &input, const Model &output,
                                     const SimplificationLedger &ledger, std::size_t firstRecord,
                                     const ValidityReport &validity, double dResolution,

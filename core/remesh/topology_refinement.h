@@ -13,12 +13,17 @@
 #include "voronoi/restriction_domain.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace stratamesh {
 
 // True for the records that change the topology (surfaces, lines and corners lost or created).
 bool isTopologyEdit(LedgerKind kind);
+
+// Names of the input entities involved in the topology edits of `ledger`, each once, in the
+// order of the records (what a run that could not keep the topology tells its user).
+std::vector<std::string> topologyEditEntities(const SimplificationLedger &ledger);
 
 // Points of the input around which the output is wrong: the records of `ledger` from
 // `firstRecord` on whose change is not a requested simplification (a change is requested when

@@ -17,6 +17,7 @@
 #include "open_workflow.h"
 #include "position_marker.h"
 #include "progress_strip.h"
+#include "remesh/topology_refinement.h"
 #include "remesh_controller.h"
 #include "remesh_dialog.h"
 #include "remesh_workflow.h"
@@ -207,6 +208,20 @@ private slots:
         qInfo("%zu output triangles, %zu ledger records, %d saturated output pixels",
               outcome->output->triangleCount(), outcome->ledger->size(), drawn);
         QVERIFY2(drawn > output.width() * output.height() / 20, qPrintable(QString::number(drawn)));
+
+        // The features not kept are named in Messages (300 sites on the sample change its
+        // topology), after the line that announces the result.
+        const std::vector<std::string> changed = topologyEditEntities(*outcome->ledger);
+        QVERIFY(!changed.empty());
+        MessagePanel *messages = m_window->messagePanel();
+        bool named = false;
+        for (int row = 0; row < messages->count(); ++row) {
+            const QString text = messages->message(row).text;
+            named = named
+                    || (text.contains(QStringLiteral("topology change"))
+                        && text.contains(QString::fromStdString(changed.front())));
+        }
+        QVERIFY(named);
 
         // One row per ledger record, the summary names every kind present.
         LedgerPanel *ledger = m_window->remeshWorkflow()->ledgerPanel();
