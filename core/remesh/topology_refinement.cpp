@@ -45,6 +45,37 @@ bool requested(const LedgerRecord &r, double dResolution)
     return size < dResolution;
 }
 
+// `count` points on the `chosen` domain triangles, each picked with the weight its entry adds to
+// `cumulative`, uniformly inside it (deterministic for a seed).
+std::vector<Vec3> sampleByWeight(const RestrictionDomain &domain, const std::vector<int> &chosen,
+                                 const std::vector<double> &cumulative, int count,
+                                 std::uint64_t seed)
+{
+    std::vector<Vec3> points;
+    if (chosen.empty() || count <= 0)
+        return points;
+    const double total = cumulative.back();
+    std::mt19937_64 random(seed);
+    auto uniform = [&random] { return static_cast<double>(random() >> 11) * 0x1.0p-53; };
+    points.reserve(count);
+    for (int i = 0; i < count; ++i) {
+        const double pick = uniform() * total;
+        const std::size_t k = std::min<std::size_t>(
+            std::lower_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin(),
+            chosen.size() - 1);
+        const Triangle &tri = domain.triangles[chosen[k]];
+        double u = uniform(), w = uniform();
+        if (u + w > 1.0) {
+            u = 1.0 - u;
+            w = 1.0 - w;
+        }
+        const Vec3 &a = domain.points[tri[0]], &b = domain.points[tri[1]],
+                   &c = domain.points[tri[2]];
+        points.push_back(a + u * (b - a) + w * (c - a));
+    }
+    return points;
+}
+
 } // namespace
 
 bool isTopologyEdit(LedgerKind kind)
@@ -152,28 +183,7 @@ std::vector<Vec3> sampleNearTargets(const RestrictionDomain &domain,
         chosen.push_back(static_cast<int>(t));
         cumulative.push_back(total);
     }
-    std::vector<Vec3> points;
-    if (chosen.empty() || count <= 0)
-        return points;
-    std::mt19937_64 random(seed);
-    auto uniform = [&random] { return static_cast<double>(random() >> 11) * 0x1.0p-53; };
-    points.reserve(count);
-    for (int i = 0; i < count; ++i) {
-        const double pick = uniform() * total;
-        const std::size_t k = std::min<std::size_t>(
-            std::lower_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin(),
-            chosen.size() - 1);
-        const Triangle &tri = domain.triangles[chosen[k]];
-        double u = uniform(), w = uniform();
-        if (u + w > 1.0) {
-            u = 1.0 - u;
-            w = 1.0 - w;
-        }
-        const Vec3 &a = domain.points[tri[0]], &b = domain.points[tri[1]],
-                   &c = domain.points[tri[2]];
-        points.push_back(a + u * (b - a) + w * (c - a));
-    }
-    return points;
+    return sampleByWeight(domain, chosen, cumulative, count, seed);
 }
 
 std::vector<Vec3> featureSitesNearTargets(const Model &model, const std::vector<double> &size,
@@ -261,29 +271,8 @@ std::vector<Vec3> gradedSitesNearTargets(const RestrictionDomain &domain,
         chosen.push_back(static_cast<int>(t));
         cumulative.push_back(total);
     }
-    std::vector<Vec3> points;
-    const int count = static_cast<int>(std::lround(total / cell));
-    if (chosen.empty() || count <= 0)
-        return points;
-    std::mt19937_64 random(seed);
-    auto uniform = [&random] { return static_cast<double>(random() >> 11) * 0x1.0p-53; };
-    points.reserve(count);
-    for (int i = 0; i < count; ++i) {
-        const std::size_t k = std::min<std::size_t>(
-            std::lower_bound(cumulative.begin(), cumulative.end(), uniform() * total)
-                - cumulative.begin(),
-            chosen.size() - 1);
-        const Triangle &tri = domain.triangles[chosen[k]];
-        double u = uniform(), w = uniform();
-        if (u + w > 1.0) {
-            u = 1.0 - u;
-            w = 1.0 - w;
-        }
-        const Vec3 &a = domain.points[tri[0]], &b = domain.points[tri[1]],
-                   &c = domain.points[tri[2]];
-        points.push_back(a + u * (b - a) + w * (c - a));
-    }
-    return points;
+    return sampleByWeight(domain, chosen, cumulative, static_cast<int>(std::lround(total / cell)),
+                          seed);
 }
 
 int sitesNearTargets(const std::vector<Vec3> &sites, const std::vector<Vec3> &targets,
