@@ -337,8 +337,8 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     result.refinementRounds = 0;
     RemeshResult best = result;
     const double baseSlivers = computeMeshStatistics(result.model).pctTrianglesAngleBelow30;
-    // Sites pinned on the features near wrong places (featureSitesNearTargets), and the size
-    // field they follow, computed the first time a round needs it.
+    // Sites pinned on the features near wrong places (featureSitesNearTargets), and the split
+    // model with the size field they follow, made again each round for all places so far.
     std::vector<char> pinned(sites.size(), 0);
     std::vector<Vec3> allTargets;
     SizedModel sized_;
