@@ -238,11 +238,39 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Min angle (% of triangles)</source>
+        <source>Min angle</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Quality Q (% of triangles)</source>
+        <source>Smallest angle of each triangle, in % of the triangles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quality Q of each triangle (1: equilateral), in % of the triangles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Min dihedral</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Smallest dihedral angle of each tetrahedron, in % of the tets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radius ratio</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radius ratio 3r/R of each tetrahedron (1: regular, 0: flat), in % of the tets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remesh</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2286,14 +2314,6 @@ Click to show it in the views</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Input vs Output</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Input vs Output</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Remeshing %1…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2445,6 +2465,14 @@ Click to show it in the views</source>
             <numerusform>%n topology change, involving %1 — see Review</numerusform>
             <numerusform>%n topology changes, involving %1 — see Review</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Quality</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Quality</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2930,14 +2958,6 @@ Click to show it in the views</source>
         <source>TetGen time (s)</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <source>Min dihedral (% of tets)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Radius ratio 3r/R (% of tets)</source>
-        <translation type="unfinished"></translation>
-    </message>
 </context>
 <context>
     <name>stratamesh::TetmeshWorkflow</name>
@@ -2987,10 +3007,6 @@ angle (°)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Tetrahedralised — see Tetrahedra</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>TetGen failed on a model — see Tetrahedra</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3020,6 +3036,10 @@ angle (°)</source>
     </message>
     <message>
         <source>TetGen is not running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tetrahedralised — see Tetrahedra and Quality</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -238,12 +238,40 @@
         <translation>Comme la table 4.2 de la thèse : entités comptées sans la boîte ; Q vaut 1 pour un triangle équilatéral.</translation>
     </message>
     <message>
-        <source>Min angle (% of triangles)</source>
-        <translation>Angle min. (% des triangles)</translation>
+        <source>Min angle</source>
+        <translation>Angle min.</translation>
     </message>
     <message>
-        <source>Quality Q (% of triangles)</source>
-        <translation>Qualité Q (% des triangles)</translation>
+        <source>Smallest angle of each triangle, in % of the triangles</source>
+        <translation>Plus petit angle de chaque triangle, en % des triangles</translation>
+    </message>
+    <message>
+        <source>Q</source>
+        <translation>Q</translation>
+    </message>
+    <message>
+        <source>Quality Q of each triangle (1: equilateral), in % of the triangles</source>
+        <translation>Qualité Q de chaque triangle (1 : équilatéral), en % des triangles</translation>
+    </message>
+    <message>
+        <source>Min dihedral</source>
+        <translation>Dièdre min.</translation>
+    </message>
+    <message>
+        <source>Smallest dihedral angle of each tetrahedron, in % of the tets</source>
+        <translation>Plus petit angle dièdre de chaque tétraèdre, en % des tétraèdres</translation>
+    </message>
+    <message>
+        <source>Radius ratio</source>
+        <translation>Rapport des rayons</translation>
+    </message>
+    <message>
+        <source>Radius ratio 3r/R of each tetrahedron (1: regular, 0: flat), in % of the tets</source>
+        <translation>Rapport des rayons 3r/R de chaque tétraèdre (1 : régulier, 0 : plat), en % des tétraèdres</translation>
+    </message>
+    <message>
+        <source>Remesh</source>
+        <translation>Remaillage</translation>
     </message>
 </context>
 <context>
@@ -2289,14 +2317,6 @@ Cliquer pour le montrer dans les vues</translation>
         <translation>Écrire le modèle remaillé dans un fichier Gocad, RINGMesh, Gmsh ou VTK</translation>
     </message>
     <message>
-        <source>Input vs Output</source>
-        <translation>Entrée et sortie</translation>
-    </message>
-    <message>
-        <source>&amp;Input vs Output</source>
-        <translation>&amp;Entrée et sortie</translation>
-    </message>
-    <message>
         <source>Remeshing %1…</source>
         <translation>Remaillage de %1…</translation>
     </message>
@@ -2448,6 +2468,14 @@ Cliquer pour le montrer dans les vues</translation>
             <numerusform>%n changement de topologie, concernant %1 — voir Contrôle</numerusform>
             <numerusform>%n changements de topologie, concernant %1 — voir Contrôle</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Quality</source>
+        <translation>Qualité</translation>
+    </message>
+    <message>
+        <source>&amp;Quality</source>
+        <translation>&amp;Qualité</translation>
     </message>
 </context>
 <context>
@@ -2933,14 +2961,6 @@ Cliquer pour le montrer dans les vues</translation>
         <source>TetGen time (s)</source>
         <translation>Temps TetGen (s)</translation>
     </message>
-    <message>
-        <source>Min dihedral (% of tets)</source>
-        <translation>Dièdre min. (% des tétraèdres)</translation>
-    </message>
-    <message>
-        <source>Radius ratio 3r/R (% of tets)</source>
-        <translation>Rapport des rayons 3r/R (% des tétraèdres)</translation>
-    </message>
 </context>
 <context>
     <name>stratamesh::TetmeshWorkflow</name>
@@ -2991,10 +3011,6 @@ min. (°)</translation>
         <translation>Remaillage : %1 tétraèdres, %2 tétraèdres plats, angle dièdre min. %3° en %4 s</translation>
     </message>
     <message>
-        <source>Tetrahedralised — see Tetrahedra</source>
-        <translation>Tétraédrisé — voir Tétraèdres</translation>
-    </message>
-    <message>
         <source>TetGen failed on a model — see Tetrahedra</source>
         <translation>Échec de TetGen sur un modèle — voir Tétraèdres</translation>
     </message>
@@ -3025,6 +3041,10 @@ min. (°)</translation>
     <message>
         <source>TetGen is not running</source>
         <translation>TetGen n&apos;est pas en cours</translation>
+    </message>
+    <message>
+        <source>Tetrahedralised — see Tetrahedra and Quality</source>
+        <translation>Tétraédrisé — voir Tétraèdres et Qualité</translation>
     </message>
 </context>
 <context>

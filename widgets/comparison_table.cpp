@@ -15,7 +15,8 @@ namespace stratamesh {
 ComparisonTable::ComparisonTable(QWidget *parent)
     : QWidget(parent), m_table(new QTableWidget(RowCount, ColumnCount, this)),
       m_caption(new QLabel(this)), m_charts(new QTabWidget(this)),
-      m_minAngle(new HistogramChart(this)), m_quality(new HistogramChart(this))
+      m_minAngle(new HistogramChart(this)), m_quality(new HistogramChart(this)),
+      m_minDihedral(new HistogramChart(this)), m_radiusRatio(new HistogramChart(this))
 {
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
@@ -30,6 +31,9 @@ ComparisonTable::ComparisonTable(QWidget *parent)
     layout->addWidget(m_caption);
     m_charts->addTab(m_minAngle, QString());
     m_charts->addTab(m_quality, QString());
+    // Tabs only while there are tets (setTetQuality).
+    m_minDihedral->hide();
+    m_radiusRatio->hide();
     layout->addWidget(m_charts, 1);
     for (int r = 0; r < RowCount; ++r)
         for (int c = 0; c < ColumnCount; ++c) {
@@ -80,11 +84,49 @@ void ComparisonTable::retranslate()
         {tr("Vertices"), tr("Triangles"), tr("Surfaces"), tr("Lines"), tr("Corners"),
          tr("Min angle (°)"), tr("Angle < 30° (% triangles)"), tr("Mean quality Q"),
          tr("Hausdorff (% bbox diagonal)"), tr("Sampling time (s)"), tr("Mesh building time (s)")});
-    m_charts->setTabText(0, tr("Min angle (% of triangles)"));
-    m_charts->setTabText(1, tr("Quality Q (% of triangles)"));
+    // Short tab names, so that the four fit a narrow dock; what the bars count is in the tooltip.
+    const auto name = [this](QWidget *chart, const QString &tab, const QString &tip) {
+        const int index = m_charts->indexOf(chart);
+        if (index < 0)
+            return;
+        m_charts->setTabText(index, tab);
+        m_charts->setTabToolTip(index, tip);
+    };
+    name(m_minAngle, tr("Min angle"), tr("Smallest angle of each triangle, in % of the triangles"));
+    name(m_quality, tr("Q"),
+         tr("Quality Q of each triangle (1: equilateral), in % of the triangles"));
+    name(m_minDihedral, tr("Min dihedral"),
+         tr("Smallest dihedral angle of each tetrahedron, in % of the tets"));
+    name(m_radiusRatio, tr("Radius ratio"),
+         tr("Radius ratio 3r/R of each tetrahedron (1: regular, 0: flat), in % of the tets"));
+    // TetGen meshed the input and the remesh, whichever runs the views compare.
+    m_minDihedral->setSeriesNames(tr("Input"), tr("Remesh"));
+    m_radiusRatio->setSeriesNames(tr("Input"), tr("Remesh"));
     m_caption->setText(tr("As thesis Table 4.2: entities counted without the box; Q is 1 for an "
                           "equilateral triangle."));
     fill();
+}
+
+void ComparisonTable::setTetQuality(const VolumeQualityStatistics *input,
+                                    const VolumeQualityStatistics *remesh)
+{
+    m_tetInput = input ? std::optional(*input) : std::nullopt;
+    m_tetRemesh = input && remesh ? std::optional(*remesh) : std::nullopt;
+    for (HistogramChart *chart : {m_minDihedral, m_radiusRatio}) {
+        const int tab = m_charts->indexOf(chart);
+        if (input && tab < 0)
+            m_charts->addTab(chart, QString());
+        else if (!input && tab >= 0)
+            m_charts->removeTab(tab);
+        chart->setVisible(input != nullptr);
+    }
+    retranslate();
+}
+
+void ComparisonTable::showTetQuality()
+{
+    if (hasTetQuality())
+        m_charts->setCurrentWidget(m_minDihedral);
 }
 
 void ComparisonTable::setColumnNames(const QString &first, const QString &second)
@@ -114,7 +156,22 @@ void ComparisonTable::fill()
         m_minAngle->setHistograms(QString(), std::nullopt, std::nullopt, 0);
         m_quality->setHistograms(QString(), std::nullopt, std::nullopt, 0);
     }
-    m_charts->setVisible(m_comparison.has_value());
+    // Shown once filled: the axes lay their labels out when the chart appears.
+    if (m_tetInput) {
+        std::optional<Histogram> remeshMin, remeshRatio;
+        if (m_tetRemesh) {
+            remeshMin = m_tetRemesh->minDihedral;
+            remeshRatio = m_tetRemesh->inverseRadiusRatio;
+        }
+        m_minDihedral->setHistograms(QString(), m_tetInput->minDihedral, remeshMin, 0);
+        m_radiusRatio->setHistograms(QString(), m_tetInput->inverseRadiusRatio, remeshRatio, 2);
+    } else {
+        m_minDihedral->setHistograms(QString(), std::nullopt, std::nullopt, 0);
+        m_radiusRatio->setHistograms(QString(), std::nullopt, std::nullopt, 0);
+    }
+    m_charts->setVisible(m_comparison.has_value() || hasTetQuality());
+    m_table->setVisible(m_comparison.has_value());
+    m_caption->setVisible(m_comparison.has_value());
     if (!m_comparison) {
         for (int r = 0; r < RowCount; ++r)
             for (int c = 0; c < ColumnCount; ++c)

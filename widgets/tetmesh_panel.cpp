@@ -2,15 +2,12 @@
 
 #include "clip_controls.h"
 
-#include "histogram_chart.h"
-
 #include <QComboBox>
 #include <QEvent>
 #include <QGridLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
-#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -31,9 +28,7 @@ QString secondsText(double seconds)
 TetmeshPanel::TetmeshPanel(QWidget *parent)
     : QWidget(parent), m_colourLabel(new QLabel(this)), m_colouring(new QComboBox(this)),
       m_clip(new ClipControls(QStringLiteral("Tet"), this)),
-      m_table(new QTableWidget(RowCount, ColumnCount, this)), m_notes(new QLabel(this)),
-      m_charts(new QTabWidget(this)), m_minDihedral(new HistogramChart(this)),
-      m_radiusRatio(new HistogramChart(this))
+      m_table(new QTableWidget(RowCount, ColumnCount, this)), m_notes(new QLabel(this))
 {
     m_colouring->setObjectName(QStringLiteral("TetColouring"));
     m_colouring->addItems({QString(), QString()});
@@ -54,9 +49,7 @@ TetmeshPanel::TetmeshPanel(QWidget *parent)
     layout->addLayout(controls);
     layout->addWidget(m_table);
     layout->addWidget(m_notes);
-    m_charts->addTab(m_minDihedral, QString());
-    m_charts->addTab(m_radiusRatio, QString());
-    layout->addWidget(m_charts, 1);
+    layout->addStretch(1);
 
     connect(m_colouring, &QComboBox::currentIndexChanged, this,
             [this] { emit colouringChanged(colouring()); });
@@ -173,10 +166,6 @@ void TetmeshPanel::retranslate()
     m_table->setVerticalHeaderLabels({tr("Outcome"), tr("Tetrahedra"), tr("Points"),
                                       tr("Slivers (min dihedral < 5°)"), tr("Min dihedral (°)"),
                                       tr("TetGen time (s)")});
-    m_charts->setTabText(0, tr("Min dihedral (% of tets)"));
-    m_charts->setTabText(1, tr("Radius ratio 3r/R (% of tets)"));
-    m_minDihedral->setSeriesNames(tr("Input"), tr("Remesh"));
-    m_radiusRatio->setSeriesNames(tr("Input"), tr("Remesh"));
     fill();
 }
 
@@ -213,22 +202,6 @@ void TetmeshPanel::fill()
     }
     m_notes->setText(notes.join(QLatin1Char('\n')));
     m_notes->setVisible(!notes.isEmpty());
-    if (!m_input) {
-        for (HistogramChart *chart : {m_minDihedral, m_radiusRatio})
-            chart->setHistograms(QString(), std::nullopt, std::nullopt, 0);
-        m_charts->hide();
-        return;
-    }
-    // A failed side has empty histograms in the same bins: its bars are all zero.
-    std::optional<Histogram> outMin, outRatio;
-    if (m_output) {
-        outMin = m_output->quality.minDihedral;
-        outRatio = m_output->quality.inverseRadiusRatio;
-    }
-    m_minDihedral->setHistograms(QString(), m_input->quality.minDihedral, outMin, 0);
-    m_radiusRatio->setHistograms(QString(), m_input->quality.inverseRadiusRatio, outRatio, 2);
-    // Shown once filled: the axes lay their labels out when the chart appears.
-    m_charts->show();
 }
 
 } // namespace stratamesh

@@ -1,7 +1,8 @@
 // The Tetrahedra dock: what TetGen made of the input model and of its remesh under the same
 // switches (thesis §5.2), as computed by the core (volume/tetgen_comparison.h): one column per
-// model (tets, points, slivers, min dihedral angle, time, outcome), the min dihedral and radius
-// ratio distributions of both overlaid, and the controls of the views (colouring, clip plane).
+// model (tets, points, slivers, min dihedral angle, time, outcome) and the controls of the views
+// (colouring, clip plane); the distributions of both are overlaid in the Quality tab
+// (ComparisonTable::setTetQuality).
 // A side TetGen failed on is a result like any other: its outcome and TetGen's message.
 #pragma once
 
@@ -14,14 +15,11 @@
 
 class QComboBox;
 class QLabel;
-class QTabWidget;
 class QTableWidget;
 
 namespace stratamesh {
 
 class ClipControls;
-
-class HistogramChart;
 
 class TetmeshPanel : public QWidget {
     Q_OBJECT
@@ -37,8 +35,6 @@ public:
     QString cellText(Row row, Column column) const;
     // One sentence per side TetGen failed on, empty when both are ok.
     QString notesText() const;
-    HistogramChart *minDihedralChart() const { return m_minDihedral; }
-    HistogramChart *radiusRatioChart() const { return m_radiusRatio; }
 
     TetColouring colouring() const;
     void setColouring(TetColouring colouring);
@@ -79,9 +75,6 @@ private:
     ClipControls *m_clip;
     QTableWidget *m_table;
     QLabel *m_notes;
-    QTabWidget *m_charts;
-    HistogramChart *m_minDihedral;
-    HistogramChart *m_radiusRatio;
 };
 
 } // namespace stratamesh

@@ -141,8 +141,8 @@ void RemeshWorkflow::retranslate()
         tr("Write every simplification with its decision and note as a CSV table"));
     m_ledgerDock->setWindowTitle(tr("Review"));
     m_ledgerDock->toggleViewAction()->setText(tr("&Review"));
-    m_comparisonDock->setWindowTitle(tr("Input vs Output"));
-    m_comparisonDock->toggleViewAction()->setText(tr("&Input vs Output"));
+    m_comparisonDock->setWindowTitle(tr("Quality"));
+    m_comparisonDock->toggleViewAction()->setText(tr("&Quality"));
     updateViewTitles();
 }
 

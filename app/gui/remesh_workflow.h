@@ -1,6 +1,6 @@
 // Mesh > Remesh…: the dialog, the run (RemeshController), and the result beside the input in the
 // output view with its Review tab (the ledger, a decision and a note per record, undoable) and its
-// Input vs Output comparison; File > Save Remeshed Model As… and File > Export Review as CSV….
+// Quality tab (input vs output); File > Save Remeshed Model As… and File > Export Review as CSV….
 #pragma once
 
 #include "remesh_outcome.h"
@@ -32,6 +32,8 @@ public:
     // The review panel's ledger table (kind filter, search, sorting).
     LedgerPanel *ledgerPanel() const;
     ComparisonTable *comparisonTable() const { return m_comparison; }
+    // The Quality tab: Table 4.2 and the histograms (the tets' too, once TetGen ran).
+    QDockWidget *comparisonDock() const { return m_comparisonDock; }
     // The record's mark in the output view (Workbench marks the input view too).
     PositionMarker *marker() const;
     // The review of the shown outcome's ledger (empty for a new remesh).

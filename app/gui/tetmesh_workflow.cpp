@@ -1,5 +1,6 @@
 #include "tetmesh_workflow.h"
 
+#include "comparison_table.h"
 #include "disabled_reason.h"
 #include "model_scene.h"
 #include "remesh_workflow.h"
@@ -63,7 +64,8 @@ QList<QAction *> TetmeshWorkflow::menuActions(Menu menu) const
     return {};
 }
 
-// Tabbed with Input vs Output: the histograms need the dock's whole height.
+// Tabbed with Quality, which shows the tets' histograms: stacked, neither would have the height
+// its table and charts need on a laptop screen.
 QList<Workflow::Dock> TetmeshWorkflow::docks() const
 {
     return {{m_dock, DockPlace::Review}};
@@ -92,6 +94,7 @@ void TetmeshWorkflow::clear()
     m_outcome.reset();
     m_scenes->clear();
     m_panel->setSides(nullptr, nullptr);
+    m_remesh.comparisonTable()->setTetQuality(nullptr, nullptr);
     m_dock->hide();
     m_bench.inputScene()->setVisible(true);
     m_bench.outputScene()->setVisible(true);
@@ -146,10 +149,17 @@ void TetmeshWorkflow::onTetmeshed(const TetmeshOutcome &outcome)
     m_bench.outputScene()->setVisible(!outputMesh);
     m_bench.updateLegend();
     applyTetView();
-    // Shown first: the charts lay their axis labels out for the size they are given.
     m_dock->show();
-    m_dock->raise();
     m_panel->setSides(outcome.inputSide.get(), outcome.outputSide.get());
+    // The distributions go to the Quality tab, overlaid as the triangles' are (a failed side has
+    // empty histograms in the same bins). Shown first: the charts lay their axis labels out for
+    // the size they are given.
+    m_remesh.comparisonDock()->show();
+    m_remesh.comparisonDock()->raise();
+    m_remesh.comparisonTable()->setTetQuality(
+        outcome.inputSide ? &outcome.inputSide->quality : nullptr,
+        outcome.outputSide ? &outcome.outputSide->quality : nullptr);
+    m_remesh.comparisonTable()->showTetQuality();
     m_bench.window()->resizeDocks({m_dock}, {m_panel->sizeHint().width()}, Qt::Horizontal);
     // The views were resized by the dock: frame the model for their final sizes.
     m_bench.window()->layout()->activate();
@@ -179,7 +189,7 @@ void TetmeshWorkflow::onTetmeshed(const TetmeshOutcome &outcome)
         m.text = describe(*side, side == outcome.inputSide.get());
         m_bench.addMessage(m);
     }
-    m_bench.setStatus(allOk ? tr("Tetrahedralised — see Tetrahedra")
+    m_bench.setStatus(allOk ? tr("Tetrahedralised — see Tetrahedra and Quality")
                             : tr("TetGen failed on a model — see Tetrahedra"));
 }
 

@@ -6,6 +6,7 @@
 // column alone.
 #include "widgets/image_compare.h"
 
+#include "comparison_table.h"
 #include "histogram_chart.h"
 #include "main_window.h"
 #include "message_panel.h"
@@ -25,9 +26,11 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
+#include <QTabWidget>
 #include <QtTest>
 
 #include <atomic>
@@ -126,7 +129,11 @@ private slots:
                  int(outcome->inputSide->quality.tets));
         QVERIFY(!m_window->tetmeshWorkflow()->scenes()->output().mesh());
         QVERIFY(!m_window->scene()->isVisible()); // the tets are drawn in place of the surfaces
-        QVERIFY(qAbs(percentSum(*panel->minDihedralChart(), true) - 100.0) < 1e-6);
+        // The input's distribution alone in the Quality tab, beside no triangle comparison.
+        ComparisonTable *quality = m_window->remeshWorkflow()->comparisonTable();
+        QVERIFY(quality->hasTetQuality());
+        QVERIFY(qAbs(percentSum(*quality->minDihedralChart(), true) - 100.0) < 1e-6);
+        QVERIFY(!quality->minDihedralChart()->outputHistogram());
     }
 
     void cancelLeavesNothing()
@@ -138,6 +145,10 @@ private slots:
         QVERIFY(!m_window->tetmeshWorkflow()->outcome());
         QVERIFY(!m_window->tetmeshWorkflow()->scenes()->hasMesh());
         QVERIFY(m_window->scene()->isVisible());
+        // The previous run's histograms left the Quality tab with it.
+        const ComparisonTable *quality = m_window->remeshWorkflow()->comparisonTable();
+        QVERIFY(!quality->hasTetQuality());
+        QVERIFY(quality->chartTabs()->indexOf(quality->minDihedralChart()) < 0);
         QVERIFY(m_window->tetmeshWorkflow()->tetmeshAction()->isEnabled());
         QCOMPARE(m_window->messagePanel()->count(Message::Severity::Error), 0);
     }
@@ -208,7 +219,12 @@ private slots:
               out.quality.minDihedralDeg, out.quality.slivers);
 
         // Both histograms, both sides, bin by bin in % of the tets.
-        HistogramChart *dihedral = panel->minDihedralChart(), *ratio = panel->radiusRatioChart();
+        // Both histograms, in the Quality tab beside the triangles' (thesis Table 4.2).
+        ComparisonTable *quality = m_window->remeshWorkflow()->comparisonTable();
+        QCOMPARE(quality->chartTabs()->count(), 4);
+        QVERIFY(m_window->remeshWorkflow()->comparisonDock()->isVisible());
+        HistogramChart *dihedral = quality->minDihedralChart(),
+                       *ratio = quality->radiusRatioChart();
         QCOMPARE(dihedral->binCount(), int(in.quality.minDihedral.binCount()));
         QCOMPARE(ratio->binCount(), int(in.quality.inverseRadiusRatio.binCount()));
         for (int bin = 0; bin < dihedral->binCount(); ++bin)
