@@ -1928,6 +1928,14 @@ per cell</source>
         <source>TetGen parameters must be finite and not negative</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>not a Gocad file: expected &apos;GOCAD &lt;type&gt;&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &apos;GOCAD &lt;type&gt;&apos; to start the next object</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ExaggerationWorkflow</name>

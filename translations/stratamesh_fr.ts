@@ -1929,6 +1929,14 @@ par cellule</translation>
         <source>TetGen parameters must be finite and not negative</source>
         <translation>les paramètres de TetGen doivent être finis et positifs ou nuls</translation>
     </message>
+    <message>
+        <source>not a Gocad file: expected &apos;GOCAD &lt;type&gt;&apos;</source>
+        <translation>pas un fichier Gocad : &apos;GOCAD &lt;type&gt;&apos; attendu</translation>
+    </message>
+    <message>
+        <source>expected &apos;GOCAD &lt;type&gt;&apos; to start the next object</source>
+        <translation>&apos;GOCAD &lt;type&gt;&apos; attendu pour commencer l&apos;objet suivant</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ExaggerationWorkflow</name>

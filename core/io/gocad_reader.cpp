@@ -24,8 +24,10 @@ Model readGocad(std::istream &in, const std::string &fileName)
     while (tok.next()) {
         GocadObjectInfo info;
         if (!readGocadObjectLine(tok, info))
-            tok.fail(first ? "not a Gocad file: expected 'GOCAD <type>'"
-                           : "expected 'GOCAD <type>' to start the next object");
+            tok.fail(first ? QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "not a Gocad file: expected 'GOCAD <type>'")
+                           : QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "expected 'GOCAD <type>' to start the next object"));
         if (gocadKeywordEquals(info.type, "Model3d")) {
             if (!first)
                 tok.fail(QT_TRANSLATE_NOOP("stratamesh::Core",
