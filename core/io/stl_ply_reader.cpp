@@ -290,7 +290,7 @@ VolumeMesh readStlOrPly(const std::string &path)
     try {
         validateMesh(m);
     } catch (const InputError &e) {
-        throw FileError(path, 0, e.what());
+        throw FileError(path, 0, causeOf(e));
     }
     return m;
 }

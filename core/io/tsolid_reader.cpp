@@ -335,7 +335,7 @@ private:
         try {
             validateMesh(mesh);
         } catch (const InputError &e) {
-            throw FileError(c.path(), 0, e.what());
+            throw FileError(c.path(), 0, causeOf(e));
         }
         return std::move(mesh);
     }

@@ -375,7 +375,7 @@ VolumeMesh readVtk(const std::string &path)
     try {
         validateMesh(mesh);
     } catch (const InputError &e) {
-        throw FileError(path, 0, e.what());
+        throw FileError(path, 0, causeOf(e));
     }
     return mesh;
 }
