@@ -680,6 +680,1290 @@ per cell</source>
         <source>region %1 is in more than one piece: a pocket of volume %2 between %3 at %4 is cut off from it</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>no file name given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write: it is a folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot create a file in folder %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>internal error: file committed twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write: %1 (nothing was written)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the temporary file %1 vanished: %2 (nothing was written)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot replace the file: %1 (nothing was written)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cells export: array &apos;%1&apos; has %2 values for %3 cells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot open: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot read the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 needs %2 bytes but only %3 are left at byte %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a Geogram file (first chunk is &apos;%1&apos;, expected &apos;HEAD&apos;) at byte %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>64-bit (GARGANTUA) Geogram files are not supported at byte %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a Geogram file (magic &apos;%1&apos;) at byte %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>chunk &apos;%1&apos; claims %2 bytes but only %3 are left at byte %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>chunk &apos;%1&apos; has %2 bytes more than its fields at byte %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>attribute set &apos;%1&apos; is defined twice at byte %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; belongs to the undefined set &apos;%2&apos; at byte %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; of set &apos;%2&apos; is defined twice at byte %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; of %2 items × %3 bytes is larger than its chunk (%4 bytes left) at byte %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; should hold %2 bytes (%3 items of &apos;%4&apos;) but its chunk holds %5 at byte %6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CMDL claims %1 strings in %2 bytes at byte %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; has elements of %2 bytes, expected %3 (%4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot initialise zlib</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (after %2 bytes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>decompresses to more than 4 GiB (a GeoFile indexes with 32 bits)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Geogram attribute &apos;%1&apos; holds %2 bytes, not %3 items of its set &apos;%4&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; of &apos;%2&apos; is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; has dimension %2, expected %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; entry %2 is vertex %3, but the mesh has %4 vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; of item %2 is out of order or beyond the %3 corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; does not start at corner 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 items of &apos;%2&apos; need %3 corners, the file has %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>facet %1 has %2 corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;GEO::Mesh::cells::cell_type&apos; is not one char per cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cell %1 has geogram type %2 (only tets 0, prisms 2 and pyramids 3 are supported)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cell %1 has %2 corners, its type needs %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unexpected text outside a section: &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file does not start with $MeshFormat: not a Gmsh mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no $MeshFormat section: not a Gmsh mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected %1, found &quot;%2&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>section $%1 has no %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;version file-type data-size&quot; in $MeshFormat</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MSH version %1 is not supported (use 4.1 or 2.2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>binary MSH files are not supported: save as ASCII</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;dim tag \&quot;name\&quot;&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>$Entities in an MSH 2 file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;numPoints numCurves numSurfaces numVolumes&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>entity line too short (missing %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>negative number of physical tags</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>negative number of bounding entities</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;x y z&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 is defined twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;tag x y z&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;numEntityBlocks numNodes minNodeTag maxNodeTag&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;entityDim entityTag parametric numNodesInBlock&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the $Nodes header declares %1 nodes, its blocks hold %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>element type %1 (%2) is not supported: StrataMesh exchanges points, lines, triangles, tetrahedra, pyramids and prisms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a %1 needs %2 nodes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>element uses node %1, which is not in $Nodes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 uses node %2 twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;tag type numTags tags... nodes...&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>element line too short for its tags</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;numEntityBlocks numElements minElementTag maxElementTag&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;entityDim entityTag elementType numElementsInBlock&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the $Elements header declares %1 elements, its blocks hold %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has %2 TFACEs but the Model3d header declares %3 for it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the key triangle of %1 is a triangle of several TFACEs of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot match %1 to a TFACE of %2: its key triangle is in no remaining TFACE and the TFACE at its position matches another one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missing %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 is not finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 is not an integer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>too few values, expected &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>list of ids of %1 is not ended by 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; in the list of %2 is not an integer id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file ends inside the list of ids of %1 (truncated file?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file ends inside the key triangle of TFACE %1 (truncated file?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TSURF &apos;%1&apos; is declared twice (first at line %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TFACE %1 is declared twice (first at line %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TFACE %1 names TSURF &apos;%2&apos;, which the header does not declare</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TSurf &apos;%1&apos; is not declared by a TSURF line of the Model3d header</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unnamed TSurf beyond the TSURFs declared by the Model3d header</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>second TSurf object for TSURF &apos;%1&apos; (first at line %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TSURF &apos;%1&apos; has no TSurf object in the file (truncated file?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>REGION &apos;%1&apos; names TFACE %2, which the header does not declare</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>REGION id %1 is used twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no TSurf object in the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 started at line %2 is not closed by &apos;}&apos; before %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file ends inside the HEADER block started at line %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZPOSITIVE must be Elevation or Depth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coordinate system block started at line %1 has no END_ORIGINAL_COORDINATE_SYSTEM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file ends inside the coordinate system block started at line %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file ends inside the { } block started at line %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file ends before %1 closing the block started at line %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GOCAD line without an object type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file ends before the END of %1 (truncated file?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missing END of %1 before the next GOCAD object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a Model3d object must come first in the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>empty file: no GOCAD object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot open the file (missing or not readable)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vertex id %1 is already defined at line %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ATOM %1 refers to vertex %2, which is not defined before it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TRGL refers to vertex %1, which is not defined in %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TRGL uses the same vertex id twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 refers to vertex %2, which is not defined in %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has no TFACE and no triangle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TFACE of %1 has no triangle (empty surface)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the model &apos;%1&apos; has no surface to write</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>surface &apos;%1&apos; has no triangle: Gocad cannot hold it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>surface &apos;%1&apos; has a triangle using vertex %2 of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>region &apos;%1&apos; is bounded by surface %2 of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>surface %1 does not exist (the model has %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown mesh file extension &apos;%1&apos; (use %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown output extension &apos;%1&apos; (use %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a TSolid holds tetrahedra: the surface model &apos;%1&apos; has none (build a volume mesh first)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown model file extension &apos;%1&apos; (expected %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot open the file (missing or not a regular file)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file holds no surface triangle (an empty model; volume cells alone give no surface)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>internal error: output planned after the commit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no file name given for the %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write the %1: it is a folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 would replace the input file %2: choose another file, or ask to overwrite it (stratamesh-cli: --overwrite); nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>named twice: as the %1 and as the %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write the %1: its folder %2 does not exist (nothing was written)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write the %1: %2 is not a folder (nothing was written)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write the %1 in folder %2: %3 (nothing was written)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>internal error: this output was not planned before the work</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>internal error: output written after the commit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write the %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write the %1: %2 (nothing was written)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>internal error: outputs committed twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>internal error: the %1 was never written (nothing was written)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>entry missing from the archive (mesh_entities.txt lists %1 %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no such entity: mesh_entities.txt says &apos;Nb %1 %2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file ends before the %1 line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected %1 (a non-negative integer), found &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;Version&apos; without a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown .gm version %1 (versions 0, 1 and 2 are known)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>only 3D GeoModels are supported (Dimension 3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;Nb&apos; line needs an entity type and a count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown mesh entity type &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nb %1 %2 is more than the file&apos;s %3 lines can describe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>second &apos;Nb %1&apos; line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 line has %2 fields, version %3 needs %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 is beyond &apos;Nb %1 %3&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 is defined twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a signed surface id like +3 or -3, found &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has %2 %3 as boundary, but &apos;Nb %2&apos; is %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;Nb %1 %2&apos; but %1 %3 is never described</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the GeoModel has no surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Universe has surface %1 as boundary, beyond &apos;Nb Surface&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>geological entity line needs a type, an id, a name and a feature</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 &apos;%2&apos; has %3 %4 as child, but mesh_entities.txt has %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a corner has one vertex, this one has %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a line is a chain of edges, this one has %1 vertices and %2 edges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>surface without facets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>compareRingMeshTopology needs the recovered topology (recoverTopology)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a line without vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>surface &apos;%1&apos; has no triangle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cell %1 has no region: a GeoModel stores cells per region</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bad element count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>element %1 declares %2 items, more than the file of %3 bytes can hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenMesh could not read this file as a surface mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>non-manifold faces: %1 vertices in the file, %2 after reading (save as ASCII PLY, which keeps them)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 face(s) could not be added (degenerate or non-manifold faces)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;element NAME COUNT&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>property before any element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;property TYPE NAME&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line too short for the properties of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line too short for its list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>face uses vertex %1 of %2 (numbered from 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vertices without x, y and z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a face needs three vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a PLY file: the first line is not &quot;ply&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown PLY format &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the PLY header has no end_header</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the PLY header has no format line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot open the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no triangle in the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an ASCII STL file starts with &quot;solid&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;%1&quot;, found &quot;%2&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>text after endsolid: &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;facet&quot; or &quot;endsolid&quot;, found &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>facet %1 has more than three vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;endloop&quot;, found &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>facet %1 has two equal corners (degenerate facet)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file ends before endsolid (truncated file?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>binary STL of %1 bytes, its header announces %2 facets (%3 bytes): truncated or not an STL file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>neither an ASCII STL (starting with &quot;solid&quot;) nor a binary STL (84 bytes or more)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a vertex needs three coordinates</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coordinate &apos;%1&apos; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>face vertex &apos;%1&apos; is not an index</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>face uses vertex %1 (numbered from 1, or back from -1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a face needs at least three vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>face uses vertex %1, the file defines %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>empty file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not an OFF file: the first word is not OFF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>only 3D OFF files are supported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>binary OFF files are not supported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file ends before the vertex and face counts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected the vertex and face counts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>invalid vertex and face counts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file ends after %1 of %2 vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file ends after %1 of %2 faces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a face of %1 vertices lists %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>face vertex &apos;%1&apos; is not an index from 0 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not an OBJ or OFF file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the face uses vertex %1 twice (a degenerate face)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>non-manifold faces: this face shares an edge with two other faces, or runs along it the same way as its neighbour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>surface &apos;%1&apos; is not manifold at triangle %2: OpenMesh cannot store it as STL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OpenMesh could not write the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown surface mesh extension &apos;%1&apos; (use .obj, .off, .stl or .ply)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an %1 file holds one surface and the model &apos;%2&apos; has %3: choose one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>surface &apos;%1&apos; has a non-finite coordinate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>surface &apos;%1&apos;: triangle %2 uses vertex %3 of %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unexpected end of file (expected %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is negative (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is %2, more than the remaining %3 bytes of the file can hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a Gocad file (expected &quot;GOCAD TSolid 1&quot;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a TSolid object, found &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>empty file: not a Gocad TSolid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HEADER without &apos;{&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HEADER block not closed by &apos;}&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>block not closed by &apos;}&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 needs an id and three coordinates</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vertex id %1 is used twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 needs an id and the id of the vertex it shares</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 refers to vertex %3, which is not defined before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vertex %1 is not defined</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TETRA needs four vertex ids</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TETRA uses the same vertex twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TRGL outside a MODEL TFACE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TRGL needs three vertex ids</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TRGL uses the same vertex twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a TSolid needs tetrahedra: the mesh &apos;%1&apos; has no cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a TSolid holds tetrahedra only: the mesh &apos;%1&apos; has %2 prisms and %3 pyramids (use .vtu or .msh)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, more than the file of %3 bytes can hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, the file ends after %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, &quot;%3&quot; comes after %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, the line holds more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 strings, more than the file of %3 bytes can hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 strings, the file ends after %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 data is cut short in string %2 of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is followed by &apos;%2&apos; on its line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file ends before %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 needs a count, found &quot;%2&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares a negative count %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has type &apos;%2&apos;, which is not a legacy VTK data type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has type &apos;%2&apos;: it must hold numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a legacy VTK file: the first line is not &quot;# vtk DataFile Version x.y&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file version &apos;%1&apos; is not x.y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file version %1.%2 is newer than the 5.1 StrataMesh reads</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file ends before its title line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected ASCII or BINARY after the title, found &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected DATASET after %1, found &quot;%2&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DATASET %1 is not read by StrataMesh (UNSTRUCTURED_GRID or POLYDATA only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a second %1 (the first is at line %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>found &quot;%1&quot; where a keyword belongs: the section before it holds more values than it declares</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>POINTS has type &apos;bit&apos;: it must hold coordinates</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>POINTS declares %1 points, more than the file of %2 bytes can hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of a version 5 file goes on with &quot;%2 vtktypeint64&quot; (or vtktypeint32), found &quot;%3&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 has type &apos;%3&apos; (vtktypeint64 or vtktypeint32 expected)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 cells in %3 values: a cell takes one at least</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, cell %3 (numbered from 0) runs past them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, its %3 cells use %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares no offsets but %2 connectivity values</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 OFFSETS and CONNECTIVITY have different types</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 OFFSETS start at %2, not 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 OFFSETS decrease at cell %2 (numbered from 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 OFFSETS end at %2, %3 connectivity values are declared</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the data set has no POINTS</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CELLS has no CELL_TYPES to go with it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CELL_TYPES has no CELLS to go with it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CELL_TYPES declares %1 values, CELLS at line %2 declares %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 comes after the data of the cells or points: the geometry goes first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 x %3 values, more than the file can hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has dimension &apos;%2&apos; (1, 2 or 3 expected)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has &apos;%2&apos; components (a number from 1 expected)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 goes on with &quot;LOOKUP_TABLE default&quot;, found &quot;%2&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 holds %2, not a colour from 0 to 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 colours, more than the file of %3 bytes can hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 components (from 1 to 1048576)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 x %3 values, more than the file of %4 bytes can hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 field data holds %2, not a byte of text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>VTK cannot read it: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cell %1 has %2 %3 (expected a whole number from 0 to 2147483647)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown VTK extension &apos;%1&apos; (use .vtu, .vtp or .vtk)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no triangle and no volume cell in the file (empty model)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the RegionSides field data names surface %1, which the file does not have</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the RegionSides field data does not match the regions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a .vtp file holds surfaces only: the mesh &apos;%1&apos; has %2 volume cells (use .vtu or .vtk)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the header of a compressed array is damaged or too large: %1 blocks of %2 bytes, the last of %3, in a file of %4 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a compressed array states no block but holds data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the header of a compressed array is cut short</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>block %1 of a compressed array states %2 compressed bytes, more than the file of %3 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not a whole number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is %2, more than the file of %3 bytes can hold even compressed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a DataArray has type &quot;%1&quot;, which is not a VTK type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a readable zip archive (missing file, or no zip central directory)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>corrupt zip directory after %1 entries: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>entry missing from the archive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>entry cannot be located in the archive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot open the entry: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot decompress the entry after %1 bytes: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>entry larger than %1 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot create the zip archive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot add the entry to the zip archive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write the entry (disk full?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot finish the entry</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot finish the zip archive (disk full?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>region %1 lists surface %2 which does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no point strictly inside region %1 was found (is its boundary closed and consistently oriented?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the model has no surface to tetrahedralise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>surface %1: triangle %2 has two corners at the same point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot create a work folder: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TetGen parameters must be finite and not negative</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a Gocad file: expected &apos;GOCAD &lt;type&gt;&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &apos;GOCAD &lt;type&gt;&apos; to start the next object</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ExaggerationWorkflow</name>

@@ -681,6 +681,1290 @@ par cellule</translation>
         <source>region %1 is in more than one piece: a pocket of volume %2 between %3 at %4 is cut off from it</source>
         <translation>la région %1 est en plusieurs morceaux : une poche de volume %2 entre %3 en %4 en est séparée</translation>
     </message>
+    <message>
+        <source>no file name given</source>
+        <translation>aucun nom de fichier donné</translation>
+    </message>
+    <message>
+        <source>cannot write: it is a folder</source>
+        <translation>écriture impossible : c&apos;est un dossier</translation>
+    </message>
+    <message>
+        <source>cannot create a file in folder %1: %2</source>
+        <translation>impossible de créer un fichier dans le dossier %1 : %2</translation>
+    </message>
+    <message>
+        <source>internal error: file committed twice</source>
+        <translation>erreur interne : fichier validé deux fois</translation>
+    </message>
+    <message>
+        <source>cannot write: %1 (nothing was written)</source>
+        <translation>écriture impossible : %1 (rien n&apos;a été écrit)</translation>
+    </message>
+    <message>
+        <source>the temporary file %1 vanished: %2 (nothing was written)</source>
+        <translation>le fichier temporaire %1 a disparu : %2 (rien n&apos;a été écrit)</translation>
+    </message>
+    <message>
+        <source>cannot replace the file: %1 (nothing was written)</source>
+        <translation>impossible de remplacer le fichier : %1 (rien n&apos;a été écrit)</translation>
+    </message>
+    <message>
+        <source>cells export: array &apos;%1&apos; has %2 values for %3 cells</source>
+        <translation>export des cellules : le tableau &apos;%1&apos; a %2 valeurs pour %3 cellules</translation>
+    </message>
+    <message>
+        <source>cannot write: %1</source>
+        <translation>écriture impossible : %1</translation>
+    </message>
+    <message>
+        <source>cannot open: %1</source>
+        <translation>ouverture impossible : %1</translation>
+    </message>
+    <message>
+        <source>cannot read the file</source>
+        <translation>impossible de lire le fichier</translation>
+    </message>
+    <message>
+        <source>%1 needs %2 bytes but only %3 are left at byte %4</source>
+        <translation>%1 demande %2 octets mais il n&apos;en reste que %3 à l&apos;octet %4</translation>
+    </message>
+    <message>
+        <source>not a Geogram file (first chunk is &apos;%1&apos;, expected &apos;HEAD&apos;) at byte %2</source>
+        <translation>pas un fichier Geogram (le premier bloc est &apos;%1&apos;, &apos;HEAD&apos; attendu) à l&apos;octet %2</translation>
+    </message>
+    <message>
+        <source>64-bit (GARGANTUA) Geogram files are not supported at byte %1</source>
+        <translation>les fichiers Geogram 64 bits (GARGANTUA) ne sont pas pris en charge à l&apos;octet %1</translation>
+    </message>
+    <message>
+        <source>not a Geogram file (magic &apos;%1&apos;) at byte %2</source>
+        <translation>pas un fichier Geogram (nombre magique &apos;%1&apos;) à l&apos;octet %2</translation>
+    </message>
+    <message>
+        <source>chunk &apos;%1&apos; claims %2 bytes but only %3 are left at byte %4</source>
+        <translation>le bloc &apos;%1&apos; annonce %2 octets mais il n&apos;en reste que %3 à l&apos;octet %4</translation>
+    </message>
+    <message>
+        <source>chunk &apos;%1&apos; has %2 bytes more than its fields at byte %3</source>
+        <translation>le bloc &apos;%1&apos; a %2 octets de plus que ses champs à l&apos;octet %3</translation>
+    </message>
+    <message>
+        <source>attribute set &apos;%1&apos; is defined twice at byte %2</source>
+        <translation>l&apos;ensemble d&apos;attributs &apos;%1&apos; est défini deux fois à l&apos;octet %2</translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; belongs to the undefined set &apos;%2&apos; at byte %3</source>
+        <translation>l&apos;attribut &apos;%1&apos; appartient à l&apos;ensemble non défini &apos;%2&apos; à l&apos;octet %3</translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; of set &apos;%2&apos; is defined twice at byte %3</source>
+        <translation>l&apos;attribut &apos;%1&apos; de l&apos;ensemble &apos;%2&apos; est défini deux fois à l&apos;octet %3</translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; of %2 items × %3 bytes is larger than its chunk (%4 bytes left) at byte %5</source>
+        <translation>l&apos;attribut &apos;%1&apos; de %2 éléments × %3 octets dépasse son bloc (%4 octets restants) à l&apos;octet %5</translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; should hold %2 bytes (%3 items of &apos;%4&apos;) but its chunk holds %5 at byte %6</source>
+        <translation>l&apos;attribut &apos;%1&apos; devrait contenir %2 octets (%3 éléments de &apos;%4&apos;) mais son bloc en contient %5 à l&apos;octet %6</translation>
+    </message>
+    <message>
+        <source>CMDL claims %1 strings in %2 bytes at byte %3</source>
+        <translation>CMDL annonce %1 chaînes dans %2 octets à l&apos;octet %3</translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; has elements of %2 bytes, expected %3 (%4)</source>
+        <translation>l&apos;attribut &apos;%1&apos; a des éléments de %2 octets, %3 attendus (%4)</translation>
+    </message>
+    <message>
+        <source>cannot initialise zlib</source>
+        <translation>impossible d&apos;initialiser zlib</translation>
+    </message>
+    <message>
+        <source>%1 (after %2 bytes)</source>
+        <translation>%1 (après %2 octets)</translation>
+    </message>
+    <message>
+        <source>decompresses to more than 4 GiB (a GeoFile indexes with 32 bits)</source>
+        <translation>se décompresse en plus de 4 Gio (un GeoFile indexe sur 32 bits)</translation>
+    </message>
+    <message>
+        <source>Geogram attribute &apos;%1&apos; holds %2 bytes, not %3 items of its set &apos;%4&apos;</source>
+        <translation>l&apos;attribut Geogram &apos;%1&apos; contient %2 octets, et non %3 éléments de son ensemble &apos;%4&apos;</translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; of &apos;%2&apos; is missing</source>
+        <translation>l&apos;attribut &apos;%1&apos; de &apos;%2&apos; est absent</translation>
+    </message>
+    <message>
+        <source>attribute &apos;%1&apos; has dimension %2, expected %3</source>
+        <translation>l&apos;attribut &apos;%1&apos; est de dimension %2, %3 attendue</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; entry %2 is vertex %3, but the mesh has %4 vertices</source>
+        <translation>l&apos;entrée %2 de &apos;%1&apos; est le sommet %3, mais le maillage a %4 sommets</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; of item %2 is out of order or beyond the %3 corners</source>
+        <translation>&apos;%1&apos; de l&apos;élément %2 est hors d&apos;ordre ou au-delà des %3 coins</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; does not start at corner 0</source>
+        <translation>&apos;%1&apos; ne commence pas au coin 0</translation>
+    </message>
+    <message>
+        <source>%1 items of &apos;%2&apos; need %3 corners, the file has %4</source>
+        <translation>%1 éléments de &apos;%2&apos; demandent %3 coins, le fichier en a %4</translation>
+    </message>
+    <message>
+        <source>facet %1 has %2 corners</source>
+        <translation>la facette %1 a %2 coins</translation>
+    </message>
+    <message>
+        <source>&apos;GEO::Mesh::cells::cell_type&apos; is not one char per cell</source>
+        <translation>&apos;GEO::Mesh::cells::cell_type&apos; n&apos;a pas un caractère par cellule</translation>
+    </message>
+    <message>
+        <source>cell %1 has geogram type %2 (only tets 0, prisms 2 and pyramids 3 are supported)</source>
+        <translation>la cellule %1 est de type geogram %2 (seuls les tétraèdres 0, les prismes 2 et les pyramides 3 sont pris en charge)</translation>
+    </message>
+    <message>
+        <source>cell %1 has %2 corners, its type needs %3</source>
+        <translation>la cellule %1 a %2 coins, son type en demande %3</translation>
+    </message>
+    <message>
+        <source>unexpected text outside a section: &quot;%1&quot;</source>
+        <translation>texte inattendu hors d&apos;une section : &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>the file does not start with $MeshFormat: not a Gmsh mesh</source>
+        <translation>le fichier ne commence pas par $MeshFormat : ce n&apos;est pas un maillage Gmsh</translation>
+    </message>
+    <message>
+        <source>no $MeshFormat section: not a Gmsh mesh</source>
+        <translation>pas de section $MeshFormat : ce n&apos;est pas un maillage Gmsh</translation>
+    </message>
+    <message>
+        <source>expected %1, found &quot;%2&quot;</source>
+        <translation>%1 attendu, trouvé &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>section $%1 has no %2</source>
+        <translation>la section $%1 n&apos;a pas de %2</translation>
+    </message>
+    <message>
+        <source>expected &quot;version file-type data-size&quot; in $MeshFormat</source>
+        <translation>&quot;version file-type data-size&quot; attendu dans $MeshFormat</translation>
+    </message>
+    <message>
+        <source>MSH version %1 is not supported (use 4.1 or 2.2)</source>
+        <translation>la version MSH %1 n&apos;est pas prise en charge (utilisez 4.1 ou 2.2)</translation>
+    </message>
+    <message>
+        <source>binary MSH files are not supported: save as ASCII</source>
+        <translation>les fichiers MSH binaires ne sont pas pris en charge : enregistrez-les en ASCII</translation>
+    </message>
+    <message>
+        <source>expected &quot;dim tag \&quot;name\&quot;&quot;</source>
+        <translation>&quot;dim tag \&quot;name\&quot;&quot; attendu</translation>
+    </message>
+    <message>
+        <source>$Entities in an MSH 2 file</source>
+        <translation>$Entities dans un fichier MSH 2</translation>
+    </message>
+    <message>
+        <source>expected &quot;numPoints numCurves numSurfaces numVolumes&quot;</source>
+        <translation>&quot;numPoints numCurves numSurfaces numVolumes&quot; attendu</translation>
+    </message>
+    <message>
+        <source>entity line too short (missing %1)</source>
+        <translation>ligne d&apos;entité trop courte (il manque %1)</translation>
+    </message>
+    <message>
+        <source>negative number of physical tags</source>
+        <translation>nombre négatif d&apos;étiquettes physiques</translation>
+    </message>
+    <message>
+        <source>negative number of bounding entities</source>
+        <translation>nombre négatif d&apos;entités de bord</translation>
+    </message>
+    <message>
+        <source>expected &quot;x y z&quot;</source>
+        <translation>&quot;x y z&quot; attendu</translation>
+    </message>
+    <message>
+        <source>node %1 is defined twice</source>
+        <translation>le nœud %1 est défini deux fois</translation>
+    </message>
+    <message>
+        <source>expected &quot;tag x y z&quot;</source>
+        <translation>&quot;tag x y z&quot; attendu</translation>
+    </message>
+    <message>
+        <source>expected &quot;numEntityBlocks numNodes minNodeTag maxNodeTag&quot;</source>
+        <translation>&quot;numEntityBlocks numNodes minNodeTag maxNodeTag&quot; attendu</translation>
+    </message>
+    <message>
+        <source>expected &quot;entityDim entityTag parametric numNodesInBlock&quot;</source>
+        <translation>&quot;entityDim entityTag parametric numNodesInBlock&quot; attendu</translation>
+    </message>
+    <message>
+        <source>the $Nodes header declares %1 nodes, its blocks hold %2</source>
+        <translation>l&apos;en-tête de $Nodes déclare %1 nœuds, ses blocs en contiennent %2</translation>
+    </message>
+    <message>
+        <source>element type %1 (%2) is not supported: StrataMesh exchanges points, lines, triangles, tetrahedra, pyramids and prisms</source>
+        <translation>le type d&apos;élément %1 (%2) n&apos;est pas pris en charge : StrataMesh échange des points, des lignes, des triangles, des tétraèdres, des pyramides et des prismes</translation>
+    </message>
+    <message>
+        <source>a %1 needs %2 nodes</source>
+        <translation>un %1 demande %2 nœuds</translation>
+    </message>
+    <message>
+        <source>element uses node %1, which is not in $Nodes</source>
+        <translation>un élément utilise le nœud %1, absent de $Nodes</translation>
+    </message>
+    <message>
+        <source>the %1 uses node %2 twice</source>
+        <translation>le %1 utilise deux fois le nœud %2</translation>
+    </message>
+    <message>
+        <source>expected &quot;tag type numTags tags... nodes...&quot;</source>
+        <translation>&quot;tag type numTags tags... nodes...&quot; attendu</translation>
+    </message>
+    <message>
+        <source>element line too short for its tags</source>
+        <translation>ligne d&apos;élément trop courte pour ses étiquettes</translation>
+    </message>
+    <message>
+        <source>expected &quot;numEntityBlocks numElements minElementTag maxElementTag&quot;</source>
+        <translation>&quot;numEntityBlocks numElements minElementTag maxElementTag&quot; attendu</translation>
+    </message>
+    <message>
+        <source>expected &quot;entityDim entityTag elementType numElementsInBlock&quot;</source>
+        <translation>&quot;entityDim entityTag elementType numElementsInBlock&quot; attendu</translation>
+    </message>
+    <message>
+        <source>the $Elements header declares %1 elements, its blocks hold %2</source>
+        <translation>l&apos;en-tête de $Elements déclare %1 éléments, ses blocs en contiennent %2</translation>
+    </message>
+    <message>
+        <source>%1 has %2 TFACEs but the Model3d header declares %3 for it</source>
+        <translation>%1 a %2 TFACE mais l&apos;en-tête Model3d lui en déclare %3</translation>
+    </message>
+    <message>
+        <source>the key triangle of %1 is a triangle of several TFACEs of %2</source>
+        <translation>le triangle clé de %1 est un triangle de plusieurs TFACE de %2</translation>
+    </message>
+    <message>
+        <source>cannot match %1 to a TFACE of %2: its key triangle is in no remaining TFACE and the TFACE at its position matches another one</source>
+        <translation>impossible d&apos;associer %1 à une TFACE de %2 : son triangle clé n&apos;est dans aucune TFACE restante et la TFACE à sa position correspond à une autre</translation>
+    </message>
+    <message>
+        <source>missing %1</source>
+        <translation>%1 manquant</translation>
+    </message>
+    <message>
+        <source>%1 %2 is not a number</source>
+        <translation>%1 %2 n&apos;est pas un nombre</translation>
+    </message>
+    <message>
+        <source>%1 %2 is not finite</source>
+        <translation>%1 %2 n&apos;est pas fini</translation>
+    </message>
+    <message>
+        <source>%1 %2 is not an integer</source>
+        <translation>%1 %2 n&apos;est pas un entier</translation>
+    </message>
+    <message>
+        <source>too few values, expected &apos;%1&apos;</source>
+        <translation>trop peu de valeurs, &apos;%1&apos; attendu</translation>
+    </message>
+    <message>
+        <source>list of ids of %1 is not ended by 0</source>
+        <translation>la liste des identifiants de %1 ne se termine pas par 0</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; in the list of %2 is not an integer id</source>
+        <translation>&apos;%1&apos; dans la liste de %2 n&apos;est pas un identifiant entier</translation>
+    </message>
+    <message>
+        <source>file ends inside the list of ids of %1 (truncated file?)</source>
+        <translation>le fichier se termine dans la liste des identifiants de %1 (fichier tronqué ?)</translation>
+    </message>
+    <message>
+        <source>file ends inside the key triangle of TFACE %1 (truncated file?)</source>
+        <translation>le fichier se termine dans le triangle clé de la TFACE %1 (fichier tronqué ?)</translation>
+    </message>
+    <message>
+        <source>TSURF &apos;%1&apos; is declared twice (first at line %2)</source>
+        <translation>TSURF &apos;%1&apos; est déclarée deux fois (d&apos;abord à la ligne %2)</translation>
+    </message>
+    <message>
+        <source>TFACE %1 is declared twice (first at line %2)</source>
+        <translation>TFACE %1 est déclarée deux fois (d&apos;abord à la ligne %2)</translation>
+    </message>
+    <message>
+        <source>TFACE %1 names TSURF &apos;%2&apos;, which the header does not declare</source>
+        <translation>TFACE %1 nomme la TSURF &apos;%2&apos;, que l&apos;en-tête ne déclare pas</translation>
+    </message>
+    <message>
+        <source>TSurf &apos;%1&apos; is not declared by a TSURF line of the Model3d header</source>
+        <translation>la TSurf &apos;%1&apos; n&apos;est déclarée par aucune ligne TSURF de l&apos;en-tête Model3d</translation>
+    </message>
+    <message>
+        <source>unnamed TSurf beyond the TSURFs declared by the Model3d header</source>
+        <translation>TSurf sans nom au-delà des TSURF déclarées par l&apos;en-tête Model3d</translation>
+    </message>
+    <message>
+        <source>second TSurf object for TSURF &apos;%1&apos; (first at line %2)</source>
+        <translation>second objet TSurf pour la TSURF &apos;%1&apos; (le premier à la ligne %2)</translation>
+    </message>
+    <message>
+        <source>TSURF &apos;%1&apos; has no TSurf object in the file (truncated file?)</source>
+        <translation>la TSURF &apos;%1&apos; n&apos;a pas d&apos;objet TSurf dans le fichier (fichier tronqué ?)</translation>
+    </message>
+    <message>
+        <source>REGION &apos;%1&apos; names TFACE %2, which the header does not declare</source>
+        <translation>REGION &apos;%1&apos; nomme la TFACE %2, que l&apos;en-tête ne déclare pas</translation>
+    </message>
+    <message>
+        <source>REGION id %1 is used twice</source>
+        <translation>l&apos;identifiant de REGION %1 est utilisé deux fois</translation>
+    </message>
+    <message>
+        <source>no TSurf object in the file</source>
+        <translation>aucun objet TSurf dans le fichier</translation>
+    </message>
+    <message>
+        <source>%1 started at line %2 is not closed by &apos;}&apos; before %3</source>
+        <translation>%1 commencé à la ligne %2 n&apos;est pas fermé par &apos;}&apos; avant %3</translation>
+    </message>
+    <message>
+        <source>file ends inside the HEADER block started at line %1</source>
+        <translation>le fichier se termine dans le bloc HEADER commencé à la ligne %1</translation>
+    </message>
+    <message>
+        <source>ZPOSITIVE must be Elevation or Depth</source>
+        <translation>ZPOSITIVE doit valoir Elevation ou Depth</translation>
+    </message>
+    <message>
+        <source>coordinate system block started at line %1 has no END_ORIGINAL_COORDINATE_SYSTEM</source>
+        <translation>le bloc de système de coordonnées commencé à la ligne %1 n&apos;a pas de END_ORIGINAL_COORDINATE_SYSTEM</translation>
+    </message>
+    <message>
+        <source>file ends inside the coordinate system block started at line %1</source>
+        <translation>le fichier se termine dans le bloc de système de coordonnées commencé à la ligne %1</translation>
+    </message>
+    <message>
+        <source>file ends inside the { } block started at line %1</source>
+        <translation>le fichier se termine dans le bloc { } commencé à la ligne %1</translation>
+    </message>
+    <message>
+        <source>file ends before %1 closing the block started at line %2</source>
+        <translation>le fichier se termine avant le %1 qui ferme le bloc commencé à la ligne %2</translation>
+    </message>
+    <message>
+        <source>GOCAD line without an object type</source>
+        <translation>ligne GOCAD sans type d&apos;objet</translation>
+    </message>
+    <message>
+        <source>file ends before the END of %1 (truncated file?)</source>
+        <translation>le fichier se termine avant le END de %1 (fichier tronqué ?)</translation>
+    </message>
+    <message>
+        <source>missing END of %1 before the next GOCAD object</source>
+        <translation>END de %1 manquant avant l&apos;objet GOCAD suivant</translation>
+    </message>
+    <message>
+        <source>a Model3d object must come first in the file</source>
+        <translation>un objet Model3d doit venir en premier dans le fichier</translation>
+    </message>
+    <message>
+        <source>empty file: no GOCAD object</source>
+        <translation>fichier vide : aucun objet GOCAD</translation>
+    </message>
+    <message>
+        <source>cannot open the file (missing or not readable)</source>
+        <translation>impossible d&apos;ouvrir le fichier (absent ou illisible)</translation>
+    </message>
+    <message>
+        <source>read error</source>
+        <translation>erreur de lecture</translation>
+    </message>
+    <message>
+        <source>vertex id %1 is already defined at line %2</source>
+        <translation>l&apos;identifiant de sommet %1 est déjà défini à la ligne %2</translation>
+    </message>
+    <message>
+        <source>ATOM %1 refers to vertex %2, which is not defined before it</source>
+        <translation>ATOM %1 renvoie au sommet %2, qui n&apos;est pas défini avant lui</translation>
+    </message>
+    <message>
+        <source>TRGL refers to vertex %1, which is not defined in %2</source>
+        <translation>TRGL renvoie au sommet %1, qui n&apos;est pas défini dans %2</translation>
+    </message>
+    <message>
+        <source>TRGL uses the same vertex id twice</source>
+        <translation>TRGL utilise deux fois le même identifiant de sommet</translation>
+    </message>
+    <message>
+        <source>%1 refers to vertex %2, which is not defined in %3</source>
+        <translation>%1 renvoie au sommet %2, qui n&apos;est pas défini dans %3</translation>
+    </message>
+    <message>
+        <source>%1 has no TFACE and no triangle</source>
+        <translation>%1 n&apos;a ni TFACE ni triangle</translation>
+    </message>
+    <message>
+        <source>TFACE of %1 has no triangle (empty surface)</source>
+        <translation>la TFACE de %1 n&apos;a aucun triangle (surface vide)</translation>
+    </message>
+    <message>
+        <source>the model &apos;%1&apos; has no surface to write</source>
+        <translation>le modèle &apos;%1&apos; n&apos;a aucune surface à écrire</translation>
+    </message>
+    <message>
+        <source>surface &apos;%1&apos; has no triangle: Gocad cannot hold it</source>
+        <translation>la surface &apos;%1&apos; n&apos;a aucun triangle : Gocad ne peut pas la contenir</translation>
+    </message>
+    <message>
+        <source>surface &apos;%1&apos; has a triangle using vertex %2 of %3</source>
+        <translation>la surface &apos;%1&apos; a un triangle qui utilise le sommet %2 sur %3</translation>
+    </message>
+    <message>
+        <source>region &apos;%1&apos; is bounded by surface %2 of %3</source>
+        <translation>la région &apos;%1&apos; est bordée par la surface %2 sur %3</translation>
+    </message>
+    <message>
+        <source>surface %1 does not exist (the model has %2)</source>
+        <translation>la surface %1 n&apos;existe pas (le modèle en a %2)</translation>
+    </message>
+    <message>
+        <source>unknown mesh file extension &apos;%1&apos; (use %2)</source>
+        <translation>extension de fichier de maillage inconnue &apos;%1&apos; (utilisez %2)</translation>
+    </message>
+    <message>
+        <source>unknown output extension &apos;%1&apos; (use %2)</source>
+        <translation>extension de sortie inconnue &apos;%1&apos; (utilisez %2)</translation>
+    </message>
+    <message>
+        <source>a TSolid holds tetrahedra: the surface model &apos;%1&apos; has none (build a volume mesh first)</source>
+        <translation>un TSolid contient des tétraèdres : le modèle de surfaces &apos;%1&apos; n&apos;en a aucun (construisez d&apos;abord un maillage volumique)</translation>
+    </message>
+    <message>
+        <source>unknown model file extension &apos;%1&apos; (expected %2)</source>
+        <translation>extension de fichier de modèle inconnue &apos;%1&apos; (%2 attendu)</translation>
+    </message>
+    <message>
+        <source>cannot open the file (missing or not a regular file)</source>
+        <translation>impossible d&apos;ouvrir le fichier (absent ou pas un fichier ordinaire)</translation>
+    </message>
+    <message>
+        <source>the file holds no surface triangle (an empty model; volume cells alone give no surface)</source>
+        <translation>le fichier ne contient aucun triangle de surface (modèle vide ; des cellules volumiques seules ne donnent pas de surface)</translation>
+    </message>
+    <message>
+        <source>internal error: output planned after the commit</source>
+        <translation>erreur interne : sortie prévue après la validation</translation>
+    </message>
+    <message>
+        <source>no file name given for the %1</source>
+        <translation>aucun nom de fichier donné pour le %1</translation>
+    </message>
+    <message>
+        <source>cannot write the %1: it is a folder</source>
+        <translation>impossible d&apos;écrire le %1 : c&apos;est un dossier</translation>
+    </message>
+    <message>
+        <source>the %1 would replace the input file %2: choose another file, or ask to overwrite it (stratamesh-cli: --overwrite); nothing was written</source>
+        <translation>le %1 remplacerait le fichier d&apos;entrée %2 : choisissez un autre fichier, ou demandez à l&apos;écraser (stratamesh-cli : --overwrite) ; rien n&apos;a été écrit</translation>
+    </message>
+    <message>
+        <source>named twice: as the %1 and as the %2</source>
+        <translation>nommé deux fois : comme %1 et comme %2</translation>
+    </message>
+    <message>
+        <source>cannot write the %1: its folder %2 does not exist (nothing was written)</source>
+        <translation>impossible d&apos;écrire le %1 : son dossier %2 n&apos;existe pas (rien n&apos;a été écrit)</translation>
+    </message>
+    <message>
+        <source>cannot write the %1: %2 is not a folder (nothing was written)</source>
+        <translation>impossible d&apos;écrire le %1 : %2 n&apos;est pas un dossier (rien n&apos;a été écrit)</translation>
+    </message>
+    <message>
+        <source>cannot write the %1 in folder %2: %3 (nothing was written)</source>
+        <translation>impossible d&apos;écrire le %1 dans le dossier %2 : %3 (rien n&apos;a été écrit)</translation>
+    </message>
+    <message>
+        <source>internal error: this output was not planned before the work</source>
+        <translation>erreur interne : cette sortie n&apos;a pas été prévue avant le calcul</translation>
+    </message>
+    <message>
+        <source>internal error: output written after the commit</source>
+        <translation>erreur interne : sortie écrite après la validation</translation>
+    </message>
+    <message>
+        <source>cannot write the %1</source>
+        <translation>impossible d&apos;écrire le %1</translation>
+    </message>
+    <message>
+        <source>cannot write the %1: %2 (nothing was written)</source>
+        <translation>impossible d&apos;écrire le %1 : %2 (rien n&apos;a été écrit)</translation>
+    </message>
+    <message>
+        <source>internal error: outputs committed twice</source>
+        <translation>erreur interne : sorties validées deux fois</translation>
+    </message>
+    <message>
+        <source>internal error: the %1 was never written (nothing was written)</source>
+        <translation>erreur interne : le %1 n&apos;a jamais été écrit (rien n&apos;a été écrit)</translation>
+    </message>
+    <message>
+        <source>entry missing from the archive (mesh_entities.txt lists %1 %2)</source>
+        <translation>entrée absente de l&apos;archive (mesh_entities.txt indique %1 %2)</translation>
+    </message>
+    <message>
+        <source>no such entity: mesh_entities.txt says &apos;Nb %1 %2&apos;</source>
+        <translation>entité inexistante : mesh_entities.txt indique &apos;Nb %1 %2&apos;</translation>
+    </message>
+    <message>
+        <source>the file ends before the %1 line</source>
+        <translation>le fichier se termine avant la ligne %1</translation>
+    </message>
+    <message>
+        <source>expected %1 (a non-negative integer), found &apos;%2&apos;</source>
+        <translation>%1 attendu (un entier positif ou nul), trouvé &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;Version&apos; without a number</source>
+        <translation>&apos;Version&apos; sans numéro</translation>
+    </message>
+    <message>
+        <source>unknown .gm version %1 (versions 0, 1 and 2 are known)</source>
+        <translation>version .gm %1 inconnue (les versions 0, 1 et 2 sont connues)</translation>
+    </message>
+    <message>
+        <source>only 3D GeoModels are supported (Dimension 3)</source>
+        <translation>seuls les GeoModels 3D sont pris en charge (Dimension 3)</translation>
+    </message>
+    <message>
+        <source>&apos;Nb&apos; line needs an entity type and a count</source>
+        <translation>une ligne &apos;Nb&apos; demande un type d&apos;entité et un nombre</translation>
+    </message>
+    <message>
+        <source>unknown mesh entity type &apos;%1&apos;</source>
+        <translation>type d&apos;entité de maillage inconnu &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>Nb %1 %2 is more than the file&apos;s %3 lines can describe</source>
+        <translation>Nb %1 %2 dépasse ce que les %3 lignes du fichier peuvent décrire</translation>
+    </message>
+    <message>
+        <source>second &apos;Nb %1&apos; line</source>
+        <translation>seconde ligne &apos;Nb %1&apos;</translation>
+    </message>
+    <message>
+        <source>%1 line has %2 fields, version %3 needs %4</source>
+        <translation>la ligne %1 a %2 champs, la version %3 en demande %4</translation>
+    </message>
+    <message>
+        <source>%1 %2 is beyond &apos;Nb %1 %3&apos;</source>
+        <translation>%1 %2 est au-delà de &apos;Nb %1 %3&apos;</translation>
+    </message>
+    <message>
+        <source>%1 %2 is defined twice</source>
+        <translation>%1 %2 est défini deux fois</translation>
+    </message>
+    <message>
+        <source>expected a signed surface id like +3 or -3, found &apos;%1&apos;</source>
+        <translation>identifiant de surface signé attendu, comme +3 ou -3, trouvé &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1 has %2 %3 as boundary, but &apos;Nb %2&apos; is %4</source>
+        <translation>%1 a %2 %3 comme bord, mais &apos;Nb %2&apos; vaut %4</translation>
+    </message>
+    <message>
+        <source>&apos;Nb %1 %2&apos; but %1 %3 is never described</source>
+        <translation>&apos;Nb %1 %2&apos; mais %1 %3 n&apos;est jamais décrit</translation>
+    </message>
+    <message>
+        <source>the GeoModel has no surface</source>
+        <translation>le GeoModel n&apos;a aucune surface</translation>
+    </message>
+    <message>
+        <source>Universe has surface %1 as boundary, beyond &apos;Nb Surface&apos;</source>
+        <translation>Universe a la surface %1 comme bord, au-delà de &apos;Nb Surface&apos;</translation>
+    </message>
+    <message>
+        <source>geological entity line needs a type, an id, a name and a feature</source>
+        <translation>une ligne d&apos;entité géologique demande un type, un identifiant, un nom et une nature</translation>
+    </message>
+    <message>
+        <source>%1 &apos;%2&apos; has %3 %4 as child, but mesh_entities.txt has %5</source>
+        <translation>%1 &apos;%2&apos; a %3 %4 comme enfant, mais mesh_entities.txt en a %5</translation>
+    </message>
+    <message>
+        <source>a corner has one vertex, this one has %1</source>
+        <translation>un coin a un seul sommet, celui-ci en a %1</translation>
+    </message>
+    <message>
+        <source>a line is a chain of edges, this one has %1 vertices and %2 edges</source>
+        <translation>une ligne est une chaîne d&apos;arêtes, celle-ci a %1 sommets et %2 arêtes</translation>
+    </message>
+    <message>
+        <source>surface without facets</source>
+        <translation>surface sans facettes</translation>
+    </message>
+    <message>
+        <source>compareRingMeshTopology needs the recovered topology (recoverTopology)</source>
+        <translation>compareRingMeshTopology demande la topologie reconstruite (recoverTopology)</translation>
+    </message>
+    <message>
+        <source>a line without vertices</source>
+        <translation>une ligne sans sommets</translation>
+    </message>
+    <message>
+        <source>surface &apos;%1&apos; has no triangle</source>
+        <translation>la surface &apos;%1&apos; n&apos;a aucun triangle</translation>
+    </message>
+    <message>
+        <source>cell %1 has no region: a GeoModel stores cells per region</source>
+        <translation>la cellule %1 n&apos;a pas de région : un GeoModel range les cellules par région</translation>
+    </message>
+    <message>
+        <source>bad element count</source>
+        <translation>nombre d&apos;éléments invalide</translation>
+    </message>
+    <message>
+        <source>element %1 declares %2 items, more than the file of %3 bytes can hold</source>
+        <translation>l&apos;élément %1 déclare %2 entrées, plus que le fichier de %3 octets ne peut en contenir</translation>
+    </message>
+    <message>
+        <source>OpenMesh could not read this file as a surface mesh</source>
+        <translation>OpenMesh n&apos;a pas pu lire ce fichier comme un maillage de surface</translation>
+    </message>
+    <message>
+        <source>non-manifold faces: %1 vertices in the file, %2 after reading (save as ASCII PLY, which keeps them)</source>
+        <translation>faces non manifold : %1 sommets dans le fichier, %2 après lecture (enregistrez en PLY ASCII, qui les conserve)</translation>
+    </message>
+    <message>
+        <source>%1 face(s) could not be added (degenerate or non-manifold faces)</source>
+        <translation>%1 face(s) n&apos;ont pas pu être ajoutées (faces dégénérées ou non manifold)</translation>
+    </message>
+    <message>
+        <source>expected &quot;element NAME COUNT&quot;</source>
+        <translation>&quot;element NAME COUNT&quot; attendu</translation>
+    </message>
+    <message>
+        <source>property before any element</source>
+        <translation>propriété avant tout élément</translation>
+    </message>
+    <message>
+        <source>expected &quot;property TYPE NAME&quot;</source>
+        <translation>&quot;property TYPE NAME&quot; attendu</translation>
+    </message>
+    <message>
+        <source>line too short for the properties of %1</source>
+        <translation>ligne trop courte pour les propriétés de %1</translation>
+    </message>
+    <message>
+        <source>line too short for its list</source>
+        <translation>ligne trop courte pour sa liste</translation>
+    </message>
+    <message>
+        <source>face uses vertex %1 of %2 (numbered from 0)</source>
+        <translation>une face utilise le sommet %1 sur %2 (numérotés à partir de 0)</translation>
+    </message>
+    <message>
+        <source>vertices without x, y and z</source>
+        <translation>sommets sans x, y et z</translation>
+    </message>
+    <message>
+        <source>a face needs three vertices</source>
+        <translation>une face demande trois sommets</translation>
+    </message>
+    <message>
+        <source>not a PLY file: the first line is not &quot;ply&quot;</source>
+        <translation>pas un fichier PLY : la première ligne n&apos;est pas &quot;ply&quot;</translation>
+    </message>
+    <message>
+        <source>unknown PLY format &quot;%1&quot;</source>
+        <translation>format PLY inconnu &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>the PLY header has no end_header</source>
+        <translation>l&apos;en-tête PLY n&apos;a pas de end_header</translation>
+    </message>
+    <message>
+        <source>the PLY header has no format line</source>
+        <translation>l&apos;en-tête PLY n&apos;a pas de ligne format</translation>
+    </message>
+    <message>
+        <source>cannot open the file</source>
+        <translation>impossible d&apos;ouvrir le fichier</translation>
+    </message>
+    <message>
+        <source>no triangle in the file</source>
+        <translation>aucun triangle dans le fichier</translation>
+    </message>
+    <message>
+        <source>an ASCII STL file starts with &quot;solid&quot;</source>
+        <translation>un fichier STL ASCII commence par &quot;solid&quot;</translation>
+    </message>
+    <message>
+        <source>expected &quot;%1&quot;, found &quot;%2&quot;</source>
+        <translation>&quot;%1&quot; attendu, trouvé &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>text after endsolid: &quot;%1&quot;</source>
+        <translation>texte après endsolid : &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>expected &quot;facet&quot; or &quot;endsolid&quot;, found &quot;%1&quot;</source>
+        <translation>&quot;facet&quot; ou &quot;endsolid&quot; attendu, trouvé &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>facet %1 has more than three vertices</source>
+        <translation>la facette %1 a plus de trois sommets</translation>
+    </message>
+    <message>
+        <source>expected &quot;endloop&quot;, found &quot;%1&quot;</source>
+        <translation>&quot;endloop&quot; attendu, trouvé &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>facet %1 has two equal corners (degenerate facet)</source>
+        <translation>la facette %1 a deux coins égaux (facette dégénérée)</translation>
+    </message>
+    <message>
+        <source>file ends before endsolid (truncated file?)</source>
+        <translation>le fichier se termine avant endsolid (fichier tronqué ?)</translation>
+    </message>
+    <message>
+        <source>binary STL of %1 bytes, its header announces %2 facets (%3 bytes): truncated or not an STL file</source>
+        <translation>STL binaire de %1 octets, son en-tête annonce %2 facettes (%3 octets) : fichier tronqué ou pas un STL</translation>
+    </message>
+    <message>
+        <source>neither an ASCII STL (starting with &quot;solid&quot;) nor a binary STL (84 bytes or more)</source>
+        <translation>ni un STL ASCII (commençant par &quot;solid&quot;) ni un STL binaire (84 octets ou plus)</translation>
+    </message>
+    <message>
+        <source>a vertex needs three coordinates</source>
+        <translation>un sommet demande trois coordonnées</translation>
+    </message>
+    <message>
+        <source>coordinate &apos;%1&apos; is not a number</source>
+        <translation>la coordonnée &apos;%1&apos; n&apos;est pas un nombre</translation>
+    </message>
+    <message>
+        <source>face vertex &apos;%1&apos; is not an index</source>
+        <translation>le sommet de face &apos;%1&apos; n&apos;est pas un indice</translation>
+    </message>
+    <message>
+        <source>face uses vertex %1 (numbered from 1, or back from -1)</source>
+        <translation>une face utilise le sommet %1 (numérotés à partir de 1, ou à rebours à partir de -1)</translation>
+    </message>
+    <message>
+        <source>a face needs at least three vertices</source>
+        <translation>une face demande au moins trois sommets</translation>
+    </message>
+    <message>
+        <source>face uses vertex %1, the file defines %2</source>
+        <translation>une face utilise le sommet %1, le fichier en définit %2</translation>
+    </message>
+    <message>
+        <source>empty file</source>
+        <translation>fichier vide</translation>
+    </message>
+    <message>
+        <source>not an OFF file: the first word is not OFF</source>
+        <translation>pas un fichier OFF : le premier mot n&apos;est pas OFF</translation>
+    </message>
+    <message>
+        <source>only 3D OFF files are supported</source>
+        <translation>seuls les fichiers OFF 3D sont pris en charge</translation>
+    </message>
+    <message>
+        <source>binary OFF files are not supported</source>
+        <translation>les fichiers OFF binaires ne sont pas pris en charge</translation>
+    </message>
+    <message>
+        <source>file ends before the vertex and face counts</source>
+        <translation>le fichier se termine avant les nombres de sommets et de faces</translation>
+    </message>
+    <message>
+        <source>expected the vertex and face counts</source>
+        <translation>nombres de sommets et de faces attendus</translation>
+    </message>
+    <message>
+        <source>invalid vertex and face counts</source>
+        <translation>nombres de sommets et de faces invalides</translation>
+    </message>
+    <message>
+        <source>file ends after %1 of %2 vertices</source>
+        <translation>le fichier se termine après %1 sommets sur %2</translation>
+    </message>
+    <message>
+        <source>file ends after %1 of %2 faces</source>
+        <translation>le fichier se termine après %1 faces sur %2</translation>
+    </message>
+    <message>
+        <source>a face of %1 vertices lists %2</source>
+        <translation>une face de %1 sommets en liste %2</translation>
+    </message>
+    <message>
+        <source>face vertex &apos;%1&apos; is not an index from 0 to %2</source>
+        <translation>le sommet de face &apos;%1&apos; n&apos;est pas un indice de 0 à %2</translation>
+    </message>
+    <message>
+        <source>not an OBJ or OFF file</source>
+        <translation>pas un fichier OBJ ni OFF</translation>
+    </message>
+    <message>
+        <source>the face uses vertex %1 twice (a degenerate face)</source>
+        <translation>la face utilise deux fois le sommet %1 (face dégénérée)</translation>
+    </message>
+    <message>
+        <source>non-manifold faces: this face shares an edge with two other faces, or runs along it the same way as its neighbour</source>
+        <translation>faces non manifold : cette face partage une arête avec deux autres faces, ou la parcourt dans le même sens que sa voisine</translation>
+    </message>
+    <message>
+        <source>surface &apos;%1&apos; is not manifold at triangle %2: OpenMesh cannot store it as STL</source>
+        <translation>la surface &apos;%1&apos; n&apos;est pas manifold au triangle %2 : OpenMesh ne peut pas l&apos;enregistrer en STL</translation>
+    </message>
+    <message>
+        <source>OpenMesh could not write the file</source>
+        <translation>OpenMesh n&apos;a pas pu écrire le fichier</translation>
+    </message>
+    <message>
+        <source>unknown surface mesh extension &apos;%1&apos; (use .obj, .off, .stl or .ply)</source>
+        <translation>extension de maillage de surface inconnue &apos;%1&apos; (utilisez .obj, .off, .stl ou .ply)</translation>
+    </message>
+    <message>
+        <source>an %1 file holds one surface and the model &apos;%2&apos; has %3: choose one</source>
+        <translation>un fichier %1 contient une seule surface et le modèle &apos;%2&apos; en a %3 : choisissez-en une</translation>
+    </message>
+    <message>
+        <source>surface &apos;%1&apos; has a non-finite coordinate</source>
+        <translation>la surface &apos;%1&apos; a une coordonnée non finie</translation>
+    </message>
+    <message>
+        <source>surface &apos;%1&apos;: triangle %2 uses vertex %3 of %4</source>
+        <translation>surface &apos;%1&apos; : le triangle %2 utilise le sommet %3 sur %4</translation>
+    </message>
+    <message>
+        <source>unexpected end of file (expected %1)</source>
+        <translation>fin de fichier inattendue (%1 attendu)</translation>
+    </message>
+    <message>
+        <source>%1 is negative (%2)</source>
+        <translation>%1 est négatif (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is %2, more than the remaining %3 bytes of the file can hold</source>
+        <translation>%1 vaut %2, plus que les %3 octets restants du fichier ne peuvent en contenir</translation>
+    </message>
+    <message>
+        <source>not a Gocad file (expected &quot;GOCAD TSolid 1&quot;)</source>
+        <translation>pas un fichier Gocad (&quot;GOCAD TSolid 1&quot; attendu)</translation>
+    </message>
+    <message>
+        <source>expected a TSolid object, found &quot;%1&quot;</source>
+        <translation>objet TSolid attendu, trouvé &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>empty file: not a Gocad TSolid</source>
+        <translation>fichier vide : ce n&apos;est pas un TSolid Gocad</translation>
+    </message>
+    <message>
+        <source>HEADER without &apos;{&apos;</source>
+        <translation>HEADER sans &apos;{&apos;</translation>
+    </message>
+    <message>
+        <source>HEADER block not closed by &apos;}&apos;</source>
+        <translation>bloc HEADER non fermé par &apos;}&apos;</translation>
+    </message>
+    <message>
+        <source>block not closed by &apos;}&apos;</source>
+        <translation>bloc non fermé par &apos;}&apos;</translation>
+    </message>
+    <message>
+        <source>%1 needs an id and three coordinates</source>
+        <translation>%1 demande un identifiant et trois coordonnées</translation>
+    </message>
+    <message>
+        <source>vertex id %1 is used twice</source>
+        <translation>l&apos;identifiant de sommet %1 est utilisé deux fois</translation>
+    </message>
+    <message>
+        <source>%1 needs an id and the id of the vertex it shares</source>
+        <translation>%1 demande un identifiant et celui du sommet qu&apos;il partage</translation>
+    </message>
+    <message>
+        <source>%1 %2 refers to vertex %3, which is not defined before</source>
+        <translation>%1 %2 renvoie au sommet %3, qui n&apos;est pas défini avant</translation>
+    </message>
+    <message>
+        <source>vertex %1 is not defined</source>
+        <translation>le sommet %1 n&apos;est pas défini</translation>
+    </message>
+    <message>
+        <source>TETRA needs four vertex ids</source>
+        <translation>TETRA demande quatre identifiants de sommets</translation>
+    </message>
+    <message>
+        <source>TETRA uses the same vertex twice</source>
+        <translation>TETRA utilise deux fois le même sommet</translation>
+    </message>
+    <message>
+        <source>TRGL outside a MODEL TFACE</source>
+        <translation>TRGL hors d&apos;une MODEL TFACE</translation>
+    </message>
+    <message>
+        <source>TRGL needs three vertex ids</source>
+        <translation>TRGL demande trois identifiants de sommets</translation>
+    </message>
+    <message>
+        <source>TRGL uses the same vertex twice</source>
+        <translation>TRGL utilise deux fois le même sommet</translation>
+    </message>
+    <message>
+        <source>a TSolid needs tetrahedra: the mesh &apos;%1&apos; has no cell</source>
+        <translation>un TSolid demande des tétraèdres : le maillage &apos;%1&apos; n&apos;a aucune cellule</translation>
+    </message>
+    <message>
+        <source>a TSolid holds tetrahedra only: the mesh &apos;%1&apos; has %2 prisms and %3 pyramids (use .vtu or .msh)</source>
+        <translation>un TSolid ne contient que des tétraèdres : le maillage &apos;%1&apos; a %2 prismes et %3 pyramides (utilisez .vtu ou .msh)</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, more than the file of %3 bytes can hold</source>
+        <translation>%1 déclare %2 valeurs, plus que le fichier de %3 octets ne peut en contenir</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, the file ends after %3</source>
+        <translation>%1 déclare %2 valeurs, le fichier se termine après %3</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, &quot;%3&quot; comes after %4</source>
+        <translation>%1 déclare %2 valeurs, &quot;%3&quot; vient après %4</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, the line holds more</source>
+        <translation>%1 déclare %2 valeurs, la ligne en contient davantage</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 strings, more than the file of %3 bytes can hold</source>
+        <translation>%1 déclare %2 chaînes, plus que le fichier de %3 octets ne peut en contenir</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 strings, the file ends after %3</source>
+        <translation>%1 déclare %2 chaînes, le fichier se termine après %3</translation>
+    </message>
+    <message>
+        <source>%1 data is cut short in string %2 of %3</source>
+        <translation>les données de %1 s&apos;arrêtent dans la chaîne %2 sur %3</translation>
+    </message>
+    <message>
+        <source>%1 is followed by &apos;%2&apos; on its line</source>
+        <translation>%1 est suivi de &apos;%2&apos; sur sa ligne</translation>
+    </message>
+    <message>
+        <source>the file ends before %1</source>
+        <translation>le fichier se termine avant %1</translation>
+    </message>
+    <message>
+        <source>%1 needs a count, found &quot;%2&quot;</source>
+        <translation>%1 demande un nombre, trouvé &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>%1 declares a negative count %2</source>
+        <translation>%1 déclare un nombre négatif %2</translation>
+    </message>
+    <message>
+        <source>%1 has type &apos;%2&apos;, which is not a legacy VTK data type</source>
+        <translation>%1 est de type &apos;%2&apos;, qui n&apos;est pas un type de données VTK legacy</translation>
+    </message>
+    <message>
+        <source>%1 has type &apos;%2&apos;: it must hold numbers</source>
+        <translation>%1 est de type &apos;%2&apos; : il doit contenir des nombres</translation>
+    </message>
+    <message>
+        <source>not a legacy VTK file: the first line is not &quot;# vtk DataFile Version x.y&quot;</source>
+        <translation>pas un fichier VTK legacy : la première ligne n&apos;est pas &quot;# vtk DataFile Version x.y&quot;</translation>
+    </message>
+    <message>
+        <source>the file version &apos;%1&apos; is not x.y</source>
+        <translation>la version de fichier &apos;%1&apos; n&apos;est pas de la forme x.y</translation>
+    </message>
+    <message>
+        <source>file version %1.%2 is newer than the 5.1 StrataMesh reads</source>
+        <translation>la version de fichier %1.%2 est plus récente que la 5.1 que lit StrataMesh</translation>
+    </message>
+    <message>
+        <source>the file ends before its title line</source>
+        <translation>le fichier se termine avant sa ligne de titre</translation>
+    </message>
+    <message>
+        <source>expected ASCII or BINARY after the title, found &quot;%1&quot;</source>
+        <translation>ASCII ou BINARY attendu après le titre, trouvé &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>expected DATASET after %1, found &quot;%2&quot;</source>
+        <translation>DATASET attendu après %1, trouvé &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>DATASET %1 is not read by StrataMesh (UNSTRUCTURED_GRID or POLYDATA only)</source>
+        <translation>DATASET %1 n&apos;est pas lu par StrataMesh (UNSTRUCTURED_GRID ou POLYDATA seulement)</translation>
+    </message>
+    <message>
+        <source>a second %1 (the first is at line %2)</source>
+        <translation>un second %1 (le premier est à la ligne %2)</translation>
+    </message>
+    <message>
+        <source>found &quot;%1&quot; where a keyword belongs: the section before it holds more values than it declares</source>
+        <translation>&quot;%1&quot; trouvé à la place d&apos;un mot-clé : la section qui le précède contient plus de valeurs qu&apos;elle n&apos;en déclare</translation>
+    </message>
+    <message>
+        <source>POINTS has type &apos;bit&apos;: it must hold coordinates</source>
+        <translation>POINTS est de type &apos;bit&apos; : il doit contenir des coordonnées</translation>
+    </message>
+    <message>
+        <source>POINTS declares %1 points, more than the file of %2 bytes can hold</source>
+        <translation>POINTS déclare %1 points, plus que le fichier de %2 octets ne peut en contenir</translation>
+    </message>
+    <message>
+        <source>%1 of a version 5 file goes on with &quot;%2 vtktypeint64&quot; (or vtktypeint32), found &quot;%3&quot;</source>
+        <translation>%1 d&apos;un fichier en version 5 se poursuit par &quot;%2 vtktypeint64&quot; (ou vtktypeint32), trouvé &quot;%3&quot;</translation>
+    </message>
+    <message>
+        <source>%1 %2 has type &apos;%3&apos; (vtktypeint64 or vtktypeint32 expected)</source>
+        <translation>%1 %2 est de type &apos;%3&apos; (vtktypeint64 ou vtktypeint32 attendu)</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 cells in %3 values: a cell takes one at least</source>
+        <translation>%1 déclare %2 cellules dans %3 valeurs : une cellule en prend au moins une</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, cell %3 (numbered from 0) runs past them</source>
+        <translation>%1 déclare %2 valeurs, la cellule %3 (numérotée à partir de 0) va au-delà</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, its %3 cells use %4</source>
+        <translation>%1 déclare %2 valeurs, ses %3 cellules en utilisent %4</translation>
+    </message>
+    <message>
+        <source>%1 declares no offsets but %2 connectivity values</source>
+        <translation>%1 ne déclare aucun décalage mais %2 valeurs de connectivité</translation>
+    </message>
+    <message>
+        <source>%1 OFFSETS and CONNECTIVITY have different types</source>
+        <translation>%1 : OFFSETS et CONNECTIVITY sont de types différents</translation>
+    </message>
+    <message>
+        <source>%1 OFFSETS start at %2, not 0</source>
+        <translation>%1 : les OFFSETS commencent à %2, et non à 0</translation>
+    </message>
+    <message>
+        <source>%1 OFFSETS decrease at cell %2 (numbered from 0)</source>
+        <translation>%1 : les OFFSETS décroissent à la cellule %2 (numérotée à partir de 0)</translation>
+    </message>
+    <message>
+        <source>%1 OFFSETS end at %2, %3 connectivity values are declared</source>
+        <translation>%1 : les OFFSETS finissent à %2, %3 valeurs de connectivité sont déclarées</translation>
+    </message>
+    <message>
+        <source>the data set has no POINTS</source>
+        <translation>le jeu de données n&apos;a pas de POINTS</translation>
+    </message>
+    <message>
+        <source>CELLS has no CELL_TYPES to go with it</source>
+        <translation>CELLS n&apos;a pas de CELL_TYPES qui l&apos;accompagne</translation>
+    </message>
+    <message>
+        <source>CELL_TYPES has no CELLS to go with it</source>
+        <translation>CELL_TYPES n&apos;a pas de CELLS qui l&apos;accompagne</translation>
+    </message>
+    <message>
+        <source>CELL_TYPES declares %1 values, CELLS at line %2 declares %3</source>
+        <translation>CELL_TYPES déclare %1 valeurs, CELLS à la ligne %2 en déclare %3</translation>
+    </message>
+    <message>
+        <source>%1 comes after the data of the cells or points: the geometry goes first</source>
+        <translation>%1 vient après les données des cellules ou des points : la géométrie doit venir en premier</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 x %3 values, more than the file can hold</source>
+        <translation>%1 déclare %2 x %3 valeurs, plus que le fichier ne peut en contenir</translation>
+    </message>
+    <message>
+        <source>%1 has dimension &apos;%2&apos; (1, 2 or 3 expected)</source>
+        <translation>%1 est de dimension &apos;%2&apos; (1, 2 ou 3 attendu)</translation>
+    </message>
+    <message>
+        <source>%1 has &apos;%2&apos; components (a number from 1 expected)</source>
+        <translation>%1 a &apos;%2&apos; composantes (un nombre à partir de 1 attendu)</translation>
+    </message>
+    <message>
+        <source>%1 goes on with &quot;LOOKUP_TABLE default&quot;, found &quot;%2&quot;</source>
+        <translation>%1 se poursuit par &quot;LOOKUP_TABLE default&quot;, trouvé &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>%1 holds %2, not a colour from 0 to 1</source>
+        <translation>%1 contient %2, qui n&apos;est pas une couleur de 0 à 1</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 colours, more than the file of %3 bytes can hold</source>
+        <translation>%1 déclare %2 couleurs, plus que le fichier de %3 octets ne peut en contenir</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 components (from 1 to 1048576)</source>
+        <translation>%1 déclare %2 composantes (de 1 à 1048576)</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 x %3 values, more than the file of %4 bytes can hold</source>
+        <translation>%1 déclare %2 x %3 valeurs, plus que le fichier de %4 octets ne peut en contenir</translation>
+    </message>
+    <message>
+        <source>the %1 field data holds %2, not a byte of text</source>
+        <translation>les données de champ %1 contiennent %2, qui n&apos;est pas un octet de texte</translation>
+    </message>
+    <message>
+        <source>VTK cannot read it: %1</source>
+        <translation>VTK ne peut pas le lire : %1</translation>
+    </message>
+    <message>
+        <source>cell %1 has %2 %3 (expected a whole number from 0 to 2147483647)</source>
+        <translation>la cellule %1 a %2 %3 (un entier de 0 à 2147483647 attendu)</translation>
+    </message>
+    <message>
+        <source>unknown VTK extension &apos;%1&apos; (use .vtu, .vtp or .vtk)</source>
+        <translation>extension VTK inconnue &apos;%1&apos; (utilisez .vtu, .vtp ou .vtk)</translation>
+    </message>
+    <message>
+        <source>no triangle and no volume cell in the file (empty model)</source>
+        <translation>ni triangle ni cellule volumique dans le fichier (modèle vide)</translation>
+    </message>
+    <message>
+        <source>the RegionSides field data names surface %1, which the file does not have</source>
+        <translation>les données de champ RegionSides nomment la surface %1, que le fichier n&apos;a pas</translation>
+    </message>
+    <message>
+        <source>the RegionSides field data does not match the regions</source>
+        <translation>les données de champ RegionSides ne correspondent pas aux régions</translation>
+    </message>
+    <message>
+        <source>a .vtp file holds surfaces only: the mesh &apos;%1&apos; has %2 volume cells (use .vtu or .vtk)</source>
+        <translation>un fichier .vtp ne contient que des surfaces : le maillage &apos;%1&apos; a %2 cellules volumiques (utilisez .vtu ou .vtk)</translation>
+    </message>
+    <message>
+        <source>the header of a compressed array is damaged or too large: %1 blocks of %2 bytes, the last of %3, in a file of %4 bytes</source>
+        <translation>l&apos;en-tête d&apos;un tableau compressé est endommagé ou trop grand : %1 blocs de %2 octets, le dernier de %3, dans un fichier de %4 octets</translation>
+    </message>
+    <message>
+        <source>a compressed array states no block but holds data</source>
+        <translation>un tableau compressé n&apos;annonce aucun bloc mais contient des données</translation>
+    </message>
+    <message>
+        <source>the header of a compressed array is cut short</source>
+        <translation>l&apos;en-tête d&apos;un tableau compressé est tronqué</translation>
+    </message>
+    <message>
+        <source>block %1 of a compressed array states %2 compressed bytes, more than the file of %3 bytes</source>
+        <translation>le bloc %1 d&apos;un tableau compressé annonce %2 octets compressés, plus que le fichier de %3 octets</translation>
+    </message>
+    <message>
+        <source>%1 is not a whole number</source>
+        <translation>%1 n&apos;est pas un nombre entier</translation>
+    </message>
+    <message>
+        <source>%1 is %2, more than the file of %3 bytes can hold even compressed</source>
+        <translation>%1 vaut %2, plus que le fichier de %3 octets ne peut en contenir, même compressé</translation>
+    </message>
+    <message>
+        <source>a DataArray has type &quot;%1&quot;, which is not a VTK type</source>
+        <translation>un DataArray est de type &quot;%1&quot;, qui n&apos;est pas un type VTK</translation>
+    </message>
+    <message>
+        <source>not a readable zip archive (missing file, or no zip central directory)</source>
+        <translation>pas une archive zip lisible (fichier absent, ou pas de répertoire central zip)</translation>
+    </message>
+    <message>
+        <source>corrupt zip directory after %1 entries: %2</source>
+        <translation>répertoire zip corrompu après %1 entrées : %2</translation>
+    </message>
+    <message>
+        <source>entry missing from the archive</source>
+        <translation>entrée absente de l&apos;archive</translation>
+    </message>
+    <message>
+        <source>entry cannot be located in the archive</source>
+        <translation>entrée introuvable dans l&apos;archive</translation>
+    </message>
+    <message>
+        <source>cannot open the entry: %1</source>
+        <translation>impossible d&apos;ouvrir l&apos;entrée : %1</translation>
+    </message>
+    <message>
+        <source>cannot decompress the entry after %1 bytes: %2</source>
+        <translation>impossible de décompresser l&apos;entrée après %1 octets : %2</translation>
+    </message>
+    <message>
+        <source>entry larger than %1 bytes</source>
+        <translation>entrée de plus de %1 octets</translation>
+    </message>
+    <message>
+        <source>cannot create the zip archive</source>
+        <translation>impossible de créer l&apos;archive zip</translation>
+    </message>
+    <message>
+        <source>cannot add the entry to the zip archive</source>
+        <translation>impossible d&apos;ajouter l&apos;entrée à l&apos;archive zip</translation>
+    </message>
+    <message>
+        <source>cannot write the entry (disk full?)</source>
+        <translation>impossible d&apos;écrire l&apos;entrée (disque plein ?)</translation>
+    </message>
+    <message>
+        <source>cannot finish the entry</source>
+        <translation>impossible de terminer l&apos;entrée</translation>
+    </message>
+    <message>
+        <source>cannot finish the zip archive (disk full?)</source>
+        <translation>impossible de terminer l&apos;archive zip (disque plein ?)</translation>
+    </message>
+    <message>
+        <source>region %1 lists surface %2 which does not exist</source>
+        <translation>la région %1 liste la surface %2, qui n&apos;existe pas</translation>
+    </message>
+    <message>
+        <source>no point strictly inside region %1 was found (is its boundary closed and consistently oriented?)</source>
+        <translation>aucun point strictement intérieur à la région %1 n&apos;a été trouvé (son bord est-il fermé et orienté de façon cohérente ?)</translation>
+    </message>
+    <message>
+        <source>the model has no surface to tetrahedralise</source>
+        <translation>le modèle n&apos;a aucune surface à tétraédriser</translation>
+    </message>
+    <message>
+        <source>surface %1: triangle %2 has two corners at the same point</source>
+        <translation>surface %1 : le triangle %2 a deux coins au même point</translation>
+    </message>
+    <message>
+        <source>cannot create a work folder: %1</source>
+        <translation>impossible de créer un dossier de travail : %1</translation>
+    </message>
+    <message>
+        <source>TetGen parameters must be finite and not negative</source>
+        <translation>les paramètres de TetGen doivent être finis et positifs ou nuls</translation>
+    </message>
+    <message>
+        <source>not a Gocad file: expected &apos;GOCAD &lt;type&gt;&apos;</source>
+        <translation>pas un fichier Gocad : &apos;GOCAD &lt;type&gt;&apos; attendu</translation>
+    </message>
+    <message>
+        <source>expected &apos;GOCAD &lt;type&gt;&apos; to start the next object</source>
+        <translation>&apos;GOCAD &lt;type&gt;&apos; attendu pour commencer l&apos;objet suivant</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ExaggerationWorkflow</name>

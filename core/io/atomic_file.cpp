@@ -11,6 +11,9 @@
 #include <unistd.h>
 #include <vector>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 // A streambuf over a file descriptor that remembers the first write error instead of throwing.
@@ -65,10 +68,11 @@ private:
 AtomicFile::AtomicFile(std::string path) : m_path(std::move(path))
 {
     if (m_path.empty())
-        throw FileError(m_path, 0, "no file name given");
+        throw FileError(m_path, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "no file name given"));
     struct stat st {};
     if (::stat(m_path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-        throw FileError(m_path, 0, "cannot write: it is a folder");
+        throw FileError(m_path, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "cannot write: it is a folder"));
     const std::size_t slash = m_path.find_last_of('/');
     const std::string dir =
         slash == std::string::npos ? std::string(".") : m_path.substr(0, slash + 1);
@@ -83,7 +87,9 @@ AtomicFile::AtomicFile(std::string path) : m_path(std::move(path))
     if (m_fd < 0) {
         const int error = errno;
         throw FileError(m_path, 0,
-                        "cannot create a file in folder " + dir + ": " + systemError(error));
+                        MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                      "cannot create a file in folder %1: %2"),
+                                    {dir, systemError(error)}});
     }
     m_temporary = name.data();
     // mkstemps gives 0600; give the file the mode a plain open() would (or the replaced file's).
@@ -109,7 +115,7 @@ std::ostream &AtomicFile::stream()
     return *m_stream;
 }
 
-void AtomicFile::fail(const std::string &cause)
+void AtomicFile::fail(const MessageText &cause)
 {
     if (m_fd >= 0) {
         ::close(m_fd);
@@ -117,33 +123,46 @@ void AtomicFile::fail(const std::string &cause)
     }
     ::unlink(m_temporary.c_str());
     m_temporary.clear();
-    throw FileError(m_path, 0, cause + " (nothing was written)");
+    throw FileError(m_path, 0, cause);
 }
 
 void AtomicFile::commit()
 {
     if (m_committed || m_temporary.empty())
-        throw FileError(m_path, 0, "internal error: file committed twice");
+        throw FileError(
+            m_path, 0,
+            QT_TRANSLATE_NOOP("stratamesh::Core", "internal error: file committed twice"));
     if (m_buffer && !m_buffer->flushAll())
-        fail("cannot write: " + systemError(m_buffer->error()));
+        fail(MessageText{
+            QT_TRANSLATE_NOOP("stratamesh::Core", "cannot write: %1 (nothing was written)"),
+            {systemError(m_buffer->error())}});
     // A library may have replaced the file we created: sync whatever now sits at the path.
     const int fd = ::open(m_temporary.c_str(), O_RDONLY);
     if (fd < 0)
-        fail("the temporary file " + m_temporary + " vanished: " + systemError(errno));
+        fail(MessageText{
+            QT_TRANSLATE_NOOP("stratamesh::Core",
+                              "the temporary file %1 vanished: %2 (nothing was written)"),
+            {m_temporary, systemError(errno)}});
     if (::fsync(fd) != 0) {
         const int error = errno;
         ::close(fd);
-        fail("cannot write: " + systemError(error));
+        fail(MessageText{
+            QT_TRANSLATE_NOOP("stratamesh::Core", "cannot write: %1 (nothing was written)"),
+            {systemError(error)}});
     }
     ::close(fd);
     if (::close(m_fd) != 0) {
         const int error = errno;
         m_fd = -1;
-        fail("cannot write: " + systemError(error));
+        fail(MessageText{
+            QT_TRANSLATE_NOOP("stratamesh::Core", "cannot write: %1 (nothing was written)"),
+            {systemError(error)}});
     }
     m_fd = -1;
     if (::rename(m_temporary.c_str(), m_path.c_str()) != 0)
-        fail("cannot replace the file: " + systemError(errno));
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                           "cannot replace the file: %1 (nothing was written)"),
+                         {systemError(errno)}});
     m_committed = true;
     // Make the rename itself durable; a failure here leaves a complete file, so it is not an error.
     const std::size_t slash = m_path.find_last_of('/');

@@ -3,6 +3,8 @@
 // existing file survives intact.
 #pragma once
 
+#include "common/message_text.h"
+
 #include <functional>
 #include <memory>
 #include <ostream>
@@ -33,7 +35,8 @@ public:
     void commit();
 
 private:
-    [[noreturn]] void fail(const std::string &cause);
+    // The pattern ends with " (nothing was written)".
+    [[noreturn]] void fail(const MessageText &cause);
 
     class Buffer;
     std::string m_path;

@@ -14,6 +14,9 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -68,9 +71,10 @@ void writeCellsVtu(const std::string &path, const std::vector<ConvexPolyhedron> 
 {
     for (const CellIntArray &a : arrays)
         if (a.values.size() != cells.size())
-            throw InputError("cells export: array '" + a.name + "' has "
-                             + std::to_string(a.values.size()) + " values for "
-                             + std::to_string(cells.size()) + " cells");
+            throw InputError(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "cells export: array '%1' has %2 values for %3 cells"),
+                {a.name, std::to_string(a.values.size()), std::to_string(cells.size())}});
     vtkNew<vtkUnstructuredGrid> grid = makeGrid(cells, arrays);
     writeFileAtomically(path, [&](const std::string &temporary) {
         vtkNew<vtkXMLUnstructuredGridWriter> writer;
@@ -88,7 +92,9 @@ void writeCellsVtu(const std::string &path, const std::vector<ConvexPolyhedron> 
                                                 : std::string("VTK could not write the file");
             if (errors.failed())
                 cause += " (" + errors.message() + ")";
-            throw FileError(path, 0, "cannot write: " + cause);
+            throw FileError(
+                path, 0,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "cannot write: %1"), {cause}});
         }
     });
 }

@@ -6,13 +6,18 @@
 #include <cstdio>
 #include <cstring>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 std::string readFileBytes(const std::string &path)
 {
     std::FILE *f = std::fopen(path.c_str(), "rb");
     if (!f)
-        throw FileError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+        throw FileError(path, 0,
+                        MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "cannot open: %1"),
+                                    {std::strerror(errno)}});
     std::string bytes;
     char buffer[1 << 16];
     std::size_t n;
@@ -21,7 +26,7 @@ std::string readFileBytes(const std::string &path)
     const bool failed = std::ferror(f) != 0;
     std::fclose(f);
     if (failed)
-        throw FileError(path, 0, "cannot read the file");
+        throw FileError(path, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "cannot read the file"));
     return bytes;
 }
 

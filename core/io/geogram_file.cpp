@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <cstring>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -27,16 +30,19 @@ public:
     void setEnd(std::size_t end) { m_end = end; }
     void seek(std::size_t pos) { m_pos = pos; }
 
-    [[noreturn]] void fail(const std::string &cause) const
+    // The pattern ends with " at byte %N", N one more than its values: the position fills it.
+    [[noreturn]] void fail(MessageText cause) const
     {
-        throw FileError(m_where, 0, cause + " at byte " + std::to_string(m_pos));
+        cause.args.push_back(std::to_string(m_pos));
+        throw FileError(m_where, 0, cause);
     }
 
     void need(std::uint64_t n, const char *what) const
     {
         if (n > left())
-            fail(std::string(what) + " needs " + std::to_string(n) + " bytes but only "
-                 + std::to_string(left()) + " are left");
+            fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "%1 needs %2 bytes but only %3 are left at byte %4"),
+                             {std::string(what), std::to_string(n), std::to_string(left())}});
     }
 
     std::uint32_t u32(const char *what)
@@ -88,13 +94,21 @@ public:
     {
         const std::string head = chunkHeader();
         if (head != "HEAD")
-            c.fail("not a Geogram file (first chunk is '" + printable(head)
-                   + "', expected 'HEAD')");
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP(
+                    "stratamesh::Core",
+                    "not a Geogram file (first chunk is '%1', expected 'HEAD') at byte %2"),
+                {printable(head)}});
         const std::string magic = c.str("HEAD magic");
         if (magic == "GEOGRAM-GARGANTUA")
-            c.fail("64-bit (GARGANTUA) Geogram files are not supported");
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "64-bit (GARGANTUA) Geogram files are not supported at byte %1"),
+                {}});
         if (magic != "GEOGRAM")
-            c.fail("not a Geogram file (magic '" + printable(magic) + "')");
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "not a Geogram file (magic '%1') at byte %2"),
+                {printable(magic)}});
         c.str("HEAD version");
         endChunk("HEAD");
         while (c.pos() < m_total) {
@@ -131,8 +145,10 @@ private:
         const std::string cls = c.bytes(4, "chunk class");
         const std::uint64_t size = c.u64("chunk size");
         if (size > c.left())
-            c.fail("chunk '" + printable(cls) + "' claims " + std::to_string(size)
-                   + " bytes but only " + std::to_string(c.left()) + " are left");
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "chunk '%1' claims %2 bytes but only %3 are left at byte %4"),
+                {printable(cls), std::to_string(size), std::to_string(c.left())}});
         m_chunkEnd = c.pos() + std::size_t(size);
         c.setEnd(m_chunkEnd); // reads inside the chunk cannot run past it
         return cls;
@@ -141,8 +157,10 @@ private:
     void endChunk(const std::string &cls)
     {
         if (c.pos() != m_chunkEnd)
-            c.fail("chunk '" + printable(cls) + "' has " + std::to_string(m_chunkEnd - c.pos())
-                   + " bytes more than its fields");
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "chunk '%1' has %2 bytes more than its fields at byte %3"),
+                {printable(cls), std::to_string(m_chunkEnd - c.pos())}});
     }
 
     void attributeSet()
@@ -151,7 +169,9 @@ private:
         set.name = c.str("ATTS name");
         set.items = c.u32("ATTS item count");
         if (m_file.findSet(set.name))
-            c.fail("attribute set '" + set.name + "' is defined twice");
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                 "attribute set '%1' is defined twice at byte %2"),
+                               {set.name}});
         m_file.sets.push_back(std::move(set));
     }
 
@@ -165,20 +185,30 @@ private:
         a.dimension = c.u32("ATTR dimension");
         const GeogramAttributeSet *set = m_file.findSet(a.set);
         if (!set)
-            c.fail("attribute '" + a.name + "' belongs to the undefined set '" + a.set + "'");
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "attribute '%1' belongs to the undefined set '%2' at byte %3"),
+                {a.name, a.set}});
         if (m_file.find(a.set, a.name))
-            c.fail("attribute '" + a.name + "' of set '" + a.set + "' is defined twice");
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "attribute '%1' of set '%2' is defined twice at byte %3"),
+                {a.name, a.set}});
         // Each factor is below 2^32, so the product of the first two fits; the third is checked.
         const std::uint64_t perItem = std::uint64_t(a.elementSize) * a.dimension;
         if (set->items != 0 && perItem > c.left() / set->items)
-            c.fail("attribute '" + a.name + "' of " + std::to_string(set->items) + " items × "
-                   + std::to_string(perItem) + " bytes is larger than its chunk ("
-                   + std::to_string(c.left()) + " bytes left)");
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                 "attribute '%1' of %2 items × %3 bytes is larger "
+                                                 "than its chunk (%4 bytes left) at byte %5"),
+                               {a.name, std::to_string(set->items), std::to_string(perItem),
+                                std::to_string(c.left())}});
         const std::uint64_t size = perItem * set->items;
         if (size != c.left())
-            c.fail("attribute '" + a.name + "' should hold " + std::to_string(size) + " bytes ("
-                   + std::to_string(set->items) + " items of '" + a.set + "') but its chunk holds "
-                   + std::to_string(c.left()));
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                 "attribute '%1' should hold %2 bytes (%3 items of "
+                                                 "'%4') but its chunk holds %5 at byte %6"),
+                               {a.name, std::to_string(size), std::to_string(set->items), a.set,
+                                std::to_string(c.left())}});
         a.data = c.bytes(size, "ATTR data");
         m_file.attributes.push_back(std::move(a));
     }
@@ -187,8 +217,9 @@ private:
     {
         const std::uint32_t n = c.u32("CMDL count");
         if (n > c.left() / 4) // every string takes at least its 4-byte length
-            c.fail("CMDL claims " + std::to_string(n) + " strings in " + std::to_string(c.left())
-                   + " bytes");
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                 "CMDL claims %1 strings in %2 bytes at byte %3"),
+                               {std::to_string(n), std::to_string(c.left())}});
         for (std::uint32_t i = 0; i < n; ++i)
             m_file.commandLine.push_back(c.str("CMDL string"));
     }
@@ -230,10 +261,12 @@ template <typename T>
 std::vector<T> typedValues(const GeogramAttribute &a, const char *type, const std::string &where)
 {
     if (a.elementSize != sizeof(T))
-        throw FileError(where, 0,
-                        "attribute '" + a.name + "' has elements of "
-                            + std::to_string(a.elementSize) + " bytes, expected " + type + " ("
-                            + std::to_string(sizeof(T)) + ")");
+        throw FileError(
+            where, 0,
+            MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "attribute '%1' has elements of %2 bytes, expected %3 (%4)"),
+                {a.name, std::to_string(a.elementSize), type, std::to_string(sizeof(T))}});
     std::vector<T> v(a.data.size() / sizeof(T));
     std::memcpy(v.data(), a.data.data(), v.size() * sizeof(T));
     return v;
@@ -273,7 +306,7 @@ std::string gunzip(const std::string &compressed, const std::string &where)
 {
     z_stream z{};
     if (inflateInit2(&z, 15 + 16) != Z_OK) // 15 + 16: a gzip header is expected, not raw zlib
-        throw FileError(where, 0, "cannot initialise zlib");
+        throw FileError(where, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "cannot initialise zlib"));
     z.next_in = reinterpret_cast<Bytef *>(const_cast<char *>(compressed.data()));
     z.avail_in = uInt(compressed.size());
     std::string out;
@@ -288,13 +321,19 @@ std::string gunzip(const std::string &compressed, const std::string &where)
                                           ? "truncated gzip stream"
                                           : zlibCause("gzip decompression", code, z);
             inflateEnd(&z);
-            throw FileError(where, 0, cause + " (after " + std::to_string(out.size()) + " bytes)");
+            throw FileError(
+                where, 0,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 (after %2 bytes)"),
+                            {cause, std::to_string(out.size())}});
         }
         out.append(buffer, sizeof buffer - z.avail_out);
         if (out.size() > kMaxInflated) {
             inflateEnd(&z);
-            throw FileError(where, 0,
-                            "decompresses to more than 4 GiB (a GeoFile indexes with 32 bits)");
+            throw FileError(
+                where, 0,
+                QT_TRANSLATE_NOOP(
+                    "stratamesh::Core",
+                    "decompresses to more than 4 GiB (a GeoFile indexes with 32 bits)"));
         }
     }
     inflateEnd(&z);
@@ -305,7 +344,7 @@ std::string gzip(const std::string &raw, const std::string &where)
 {
     z_stream z{};
     if (deflateInit2(&z, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
-        throw FileError(where, 0, "cannot initialise zlib");
+        throw FileError(where, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "cannot initialise zlib"));
     z.next_in = reinterpret_cast<Bytef *>(const_cast<char *>(raw.data()));
     z.avail_in = uInt(raw.size());
     std::string out;
@@ -362,9 +401,11 @@ std::string serializeGeogramFile(const GeogramFile &file)
             if (a.set != set.name)
                 continue;
             if (a.data.size() != std::uint64_t(a.elementSize) * a.dimension * set.items)
-                throw InputError("Geogram attribute '" + a.name + "' holds "
-                                 + std::to_string(a.data.size()) + " bytes, not "
-                                 + std::to_string(set.items) + " items of its set '" + a.set + "'");
+                throw InputError(MessageText{
+                    QT_TRANSLATE_NOOP(
+                        "stratamesh::Core",
+                        "Geogram attribute '%1' holds %2 bytes, not %3 items of its set '%4'"),
+                    {a.name, std::to_string(a.data.size()), std::to_string(set.items), a.set}});
             body.clear();
             putString(body, a.set);
             putString(body, a.name);

@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <map>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -24,6 +27,11 @@ constexpr std::uint32_t kNoId = 0xffffffffu;
     throw FileError(where, 0, cause);
 }
 
+[[noreturn]] void fail(const std::string &where, const MessageText &cause)
+{
+    throw FileError(where, 0, cause);
+}
+
 std::uint32_t itemCount(const GeogramFile &file, const std::string &set)
 {
     const GeogramAttributeSet *s = file.findSet(set);
@@ -36,10 +44,13 @@ const GeogramAttribute &required(const GeogramFile &file, const std::string &set
 {
     const GeogramAttribute *a = file.find(set, name);
     if (!a)
-        fail(where, "attribute '" + name + "' of '" + set + "' is missing");
+        fail(where,
+             MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "attribute '%1' of '%2' is missing"),
+                         {name, set}});
     if (a->dimension != dimension)
-        fail(where, "attribute '" + name + "' has dimension " + std::to_string(a->dimension)
-                        + ", expected " + std::to_string(dimension));
+        fail(where, MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                  "attribute '%1' has dimension %2, expected %3"),
+                                {name, std::to_string(a->dimension), std::to_string(dimension)}});
     return *a;
 }
 
@@ -49,9 +60,11 @@ std::vector<std::uint32_t> vertexIds(const GeogramAttribute &a, std::size_t vert
     std::vector<std::uint32_t> ids = geogramIndices(a, where);
     for (std::size_t i = 0; i < ids.size(); ++i)
         if (ids[i] >= vertexCount)
-            fail(where, "'" + a.name + "' entry " + std::to_string(i) + " is vertex "
-                            + std::to_string(ids[i]) + ", but the mesh has "
-                            + std::to_string(vertexCount) + " vertices");
+            fail(where, MessageText{QT_TRANSLATE_NOOP(
+                                        "stratamesh::Core",
+                                        "'%1' entry %2 is vertex %3, but the mesh has %4 vertices"),
+                                    {a.name, std::to_string(i), std::to_string(ids[i]),
+                                     std::to_string(vertexCount)}});
     return ids;
 }
 
@@ -67,17 +80,23 @@ std::vector<std::uint32_t> itemStarts(const GeogramFile &file, const std::string
         starts.push_back(corners);
         for (std::size_t i = 0; i + 1 < starts.size(); ++i)
             if (starts[i] > starts[i + 1] || starts[i + 1] > corners)
-                fail(where, "'" + ptrName + "' of item " + std::to_string(i)
-                                + " is out of order or beyond the " + std::to_string(corners)
-                                + " corners");
+                fail(where,
+                     MessageText{QT_TRANSLATE_NOOP(
+                                     "stratamesh::Core",
+                                     "'%1' of item %2 is out of order or beyond the %3 corners"),
+                                 {ptrName, std::to_string(i), std::to_string(corners)}});
         if (!starts.empty() && starts.front() != 0)
-            fail(where, "'" + ptrName + "' does not start at corner 0");
+            fail(where, MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                      "'%1' does not start at corner 0"),
+                                    {ptrName}});
         return starts;
     }
     if (std::uint64_t(n) * per != corners)
-        fail(where, std::to_string(n) + " items of '" + set + "' need "
-                        + std::to_string(std::uint64_t(n) * per) + " corners, the file has "
-                        + std::to_string(corners));
+        fail(where,
+             MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                           "%1 items of '%2' need %3 corners, the file has %4"),
+                         {std::to_string(n), set, std::to_string(std::uint64_t(n) * per),
+                          std::to_string(corners)}});
     starts.resize(std::size_t(n) + 1);
     for (std::uint32_t i = 0; i <= n; ++i)
         starts[i] = i * per;
@@ -142,7 +161,8 @@ std::vector<Triangle> geogramTriangles(const GeogramFile &file, std::size_t vert
         const std::uint32_t b = starts[f], e = starts[f + 1];
         if (e - b < 3)
             fail(where,
-                 "facet " + std::to_string(f) + " has " + std::to_string(e - b) + " corners");
+                 MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "facet %1 has %2 corners"),
+                             {std::to_string(f), std::to_string(e - b)}});
         for (std::uint32_t k = b + 1; k + 1 < e; ++k)
             triangles.push_back({int(corner[b]), int(corner[k]), int(corner[k + 1])});
     }
@@ -164,7 +184,9 @@ std::vector<Cell> geogramCells(const GeogramFile &file, std::size_t vertexCount,
     std::string types(n, '\0'); // all tets unless cell_type says otherwise
     if (const GeogramAttribute *t = file.find(kCells, "GEO::Mesh::cells::cell_type")) {
         if (t->elementSize != 1 || t->dimension != 1)
-            fail(where, "'GEO::Mesh::cells::cell_type' is not one char per cell");
+            fail(where,
+                 QT_TRANSLATE_NOOP("stratamesh::Core",
+                                   "'GEO::Mesh::cells::cell_type' is not one char per cell"));
         types = t->data;
     }
     cells.reserve(n);
@@ -181,14 +203,16 @@ std::vector<Cell> geogramCells(const GeogramFile &file, std::size_t vertexCount,
             cell.type = CellType::Pyramid;
             break;
         default:
-            fail(where, "cell " + std::to_string(c) + " has geogram type "
-                            + std::to_string(int(types[c]))
-                            + " (only tets 0, prisms 2 and pyramids 3 are supported)");
+            fail(where, MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                      "cell %1 has geogram type %2 (only tets 0, "
+                                                      "prisms 2 and pyramids 3 are supported)"),
+                                    {std::to_string(c), std::to_string(int(types[c]))}});
         }
         if (starts[c + 1] - starts[c] != std::uint32_t(cell.size()))
-            fail(where, "cell " + std::to_string(c) + " has "
-                            + std::to_string(starts[c + 1] - starts[c])
-                            + " corners, its type needs " + std::to_string(cell.size()));
+            fail(where, MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                      "cell %1 has %2 corners, its type needs %3"),
+                                    {std::to_string(c), std::to_string(starts[c + 1] - starts[c]),
+                                     std::to_string(cell.size())}});
         for (int k = 0; k < cell.size(); ++k)
             cell.nodes[k] = int(corner[starts[c] + k]);
         cells.push_back(cell);

@@ -10,6 +10,9 @@
 #include <set>
 #include <unordered_map>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -55,9 +58,13 @@ public:
             if (section == "$MeshFormat")
                 readFormat();
             else if (section[0] != '$')
-                c.fail("unexpected text outside a section: \"" + std::string(c.line()) + "\"");
+                c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                     "unexpected text outside a section: \"%1\""),
+                                   {std::string(c.line())}});
             else if (major == 0)
-                c.fail("the file does not start with $MeshFormat: not a Gmsh mesh");
+                c.fail(
+                    QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "the file does not start with $MeshFormat: not a Gmsh mesh"));
             else if (section == "$PhysicalNames")
                 readPhysicalNames();
             else if (section == "$Entities")
@@ -70,7 +77,8 @@ public:
                 skipSection(std::string(section.substr(1)));
         }
         if (major == 0)
-            c.fail("no $MeshFormat section: not a Gmsh mesh");
+            c.fail(
+                QT_TRANSLATE_NOOP("stratamesh::Core", "no $MeshFormat section: not a Gmsh mesh"));
         return build();
     }
 
@@ -79,7 +87,8 @@ private:
     {
         c.nextNonBlank(end);
         if (c.tokens().front() != end)
-            c.fail(std::string("expected ") + end + ", found \"" + std::string(c.line()) + "\"");
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "expected %1, found \"%2\""),
+                               {end, std::string(c.line())}});
     }
 
     void skipSection(const std::string &name)
@@ -91,7 +100,9 @@ private:
             if (!t.empty() && t[0] == end)
                 return;
         }
-        throw FileError(c.path(), start, "section $" + name + " has no " + end);
+        throw FileError(c.path(), start,
+                        MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "section $%1 has no %2"),
+                                    {name, end}});
     }
 
     void readFormat()
@@ -99,16 +110,21 @@ private:
         c.nextNonBlank("the format version");
         const auto t = c.tokens();
         if (t.size() < 3)
-            c.fail("expected \"version file-type data-size\" in $MeshFormat");
+            c.fail(QT_TRANSLATE_NOOP("stratamesh::Core",
+                                     "expected \"version file-type data-size\" in $MeshFormat"));
         const std::string version(t[0]);
         if (version.rfind("4.1", 0) == 0)
             major = 4;
         else if (version[0] == '2')
             major = 2;
         else
-            c.fail("MSH version " + version + " is not supported (use 4.1 or 2.2)");
+            c.fail(
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "MSH version %1 is not supported (use 4.1 or 2.2)"),
+                            {version}});
         if (t[1] != "0")
-            c.fail("binary MSH files are not supported: save as ASCII");
+            c.fail(QT_TRANSLATE_NOOP("stratamesh::Core",
+                                     "binary MSH files are not supported: save as ASCII"));
         expectEnd("$EndMeshFormat");
     }
 
@@ -120,7 +136,7 @@ private:
             c.nextNonBlank("a physical name");
             const auto t = c.tokens();
             if (t.size() < 3)
-                c.fail("expected \"dim tag \\\"name\\\"\"");
+                c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "expected \"dim tag \\\"name\\\"\""));
             const int dim = c.toInt(t[0], "a dimension"), tag = c.toInt(t[1], "a physical tag");
             const std::string_view line = c.line();
             const std::size_t open = line.find('"'), close = line.rfind('"');
@@ -135,11 +151,12 @@ private:
     void readEntities()
     {
         if (major != 4)
-            c.fail("$Entities in an MSH 2 file");
+            c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "$Entities in an MSH 2 file"));
         c.nextNonBlank("the entity counts");
         const auto counts = c.tokens();
         if (counts.size() < 4)
-            c.fail("expected \"numPoints numCurves numSurfaces numVolumes\"");
+            c.fail(QT_TRANSLATE_NOOP("stratamesh::Core",
+                                     "expected \"numPoints numCurves numSurfaces numVolumes\""));
         for (int dim = 0; dim < 4; ++dim) {
             const int n = c.toCount(counts[dim], "an entity count", 2);
             for (int i = 0; i < n; ++i) {
@@ -148,7 +165,9 @@ private:
                 std::size_t k = 0;
                 auto take = [&](const char *what) {
                     if (k >= t.size())
-                        c.fail(std::string("entity line too short (missing ") + what + ")");
+                        c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                             "entity line too short (missing %1)"),
+                                           {what}});
                     return t[k++];
                 };
                 const int tag = c.toInt(take("the entity tag"), "an entity tag");
@@ -158,14 +177,16 @@ private:
                 const int nPhys =
                     c.toInt(take("the number of physical tags"), "a physical tag count");
                 if (nPhys < 0)
-                    c.fail("negative number of physical tags");
+                    c.fail(
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "negative number of physical tags"));
                 for (int j = 0; j < nPhys; ++j)
                     e.physicals.push_back(
                         std::abs(c.toInt(take("a physical tag"), "a physical tag")));
                 if (dim > 0) {
                     const int nBnd = c.toInt(take("the number of bounding entities"), "a count");
                     if (nBnd < 0)
-                        c.fail("negative number of bounding entities");
+                        c.fail(QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                 "negative number of bounding entities"));
                     for (int j = 0; j < nBnd; ++j)
                         e.bounding.push_back(c.toInt(take("a bounding entity"), "an entity tag"));
                 }
@@ -178,12 +199,13 @@ private:
     {
         const long long tag = c.toInt(tagText, "a node tag");
         if (xyz.size() < 3)
-            c.fail("expected \"x y z\"");
+            c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "expected \"x y z\""));
         const Vec3 p(c.toDouble(xyz[0], "x"), c.toDouble(xyz[1], "y"), c.toDouble(xyz[2], "z"));
         if (const std::string problem = pointProblem(p); !problem.empty())
             c.fail("node " + std::to_string(tag) + ": " + problem);
         if (!nodeIndex.emplace(tag, static_cast<int>(points.size())).second)
-            c.fail("node " + std::to_string(tag) + " is defined twice");
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "node %1 is defined twice"),
+                               {std::to_string(tag)}});
         points.push_back(p);
     }
 
@@ -196,7 +218,7 @@ private:
             c.nextNonBlank("a node");
             auto t = c.tokens();
             if (t.size() < 4)
-                c.fail("expected \"tag x y z\"");
+                c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "expected \"tag x y z\""));
             addNode(t[0], {t[1], t[2], t[3]});
         }
         expectEnd("$EndNodes");
@@ -207,7 +229,8 @@ private:
         c.nextNonBlank("the node counts");
         const auto h = c.tokens();
         if (h.size() < 4)
-            c.fail("expected \"numEntityBlocks numNodes minNodeTag maxNodeTag\"");
+            c.fail(QT_TRANSLATE_NOOP(
+                "stratamesh::Core", "expected \"numEntityBlocks numNodes minNodeTag maxNodeTag\""));
         const int blocks = c.toCount(h[0], "the number of node blocks", 8);
         const long long declared = c.toCount(h[1], "the number of nodes", 8);
         const int headerLine = c.lineNumber();
@@ -216,7 +239,9 @@ private:
             c.nextNonBlank("a node block");
             const auto bh = c.tokens();
             if (bh.size() < 4)
-                c.fail("expected \"entityDim entityTag parametric numNodesInBlock\"");
+                c.fail(QT_TRANSLATE_NOOP(
+                    "stratamesh::Core",
+                    "expected \"entityDim entityTag parametric numNodesInBlock\""));
             // A tag line and a coordinate line take at least 2 + 6 bytes.
             const int n = c.toCount(bh[3], "the number of nodes in the block", 8);
             total += n;
@@ -232,9 +257,12 @@ private:
             }
         }
         if (total != declared)
-            throw FileError(c.path(), headerLine,
-                            "the $Nodes header declares " + std::to_string(declared)
-                                + " nodes, its blocks hold " + std::to_string(total));
+            throw FileError(
+                c.path(), headerLine,
+                MessageText{
+                    QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "the $Nodes header declares %1 nodes, its blocks hold %2"),
+                    {std::to_string(declared), std::to_string(total)}});
         expectEnd("$EndNodes");
     }
 
@@ -243,24 +271,29 @@ private:
     {
         const int k = gmshNodeCount(type);
         if (k == 0)
-            c.fail(
-                "element type " + std::to_string(type) + " (" + gmshTypeName(type)
-                + ") is not supported: StrataMesh exchanges points, lines, triangles, tetrahedra, "
-                  "pyramids and prisms");
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "element type %1 (%2) is not supported: StrataMesh exchanges "
+                                  "points, lines, triangles, tetrahedra, pyramids and prisms"),
+                {std::to_string(type), gmshTypeName(type)}});
         if (t.size() < firstNodeToken + static_cast<std::size_t>(k))
-            c.fail(std::string("a ") + gmshTypeName(type) + " needs " + std::to_string(k)
-                   + " nodes");
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "a %1 needs %2 nodes"),
+                               {gmshTypeName(type), std::to_string(k)}});
         RawElement e{dim, type, entity, physical, elementNodes.size()};
         for (int j = 0; j < k; ++j) {
             const long long tag =
                 c.toInt(t[firstNodeToken + static_cast<std::size_t>(j)], "a node tag");
             auto it = nodeIndex.find(tag);
             if (it == nodeIndex.end())
-                c.fail("element uses node " + std::to_string(tag) + ", which is not in $Nodes");
+                c.fail(
+                    MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                  "element uses node %1, which is not in $Nodes"),
+                                {std::to_string(tag)}});
             for (std::size_t i = e.firstNode; i < elementNodes.size(); ++i)
                 if (elementNodes[i] == it->second)
-                    c.fail(std::string("the ") + gmshTypeName(type) + " uses node "
-                           + std::to_string(tag) + " twice");
+                    c.fail(MessageText{
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "the %1 uses node %2 twice"),
+                        {gmshTypeName(type), std::to_string(tag)}});
             elementNodes.push_back(it->second);
         }
         elements.push_back(e);
@@ -274,11 +307,13 @@ private:
             c.nextNonBlank("an element");
             const auto t = c.tokens();
             if (t.size() < 3)
-                c.fail("expected \"tag type numTags tags... nodes...\"");
+                c.fail(QT_TRANSLATE_NOOP("stratamesh::Core",
+                                         "expected \"tag type numTags tags... nodes...\""));
             const int type = c.toInt(t[1], "an element type");
             const int ntags = c.toInt(t[2], "a tag count");
             if (ntags < 0 || static_cast<std::size_t>(ntags) > t.size() - 3)
-                c.fail("element line too short for its tags");
+                c.fail(
+                    QT_TRANSLATE_NOOP("stratamesh::Core", "element line too short for its tags"));
             const int physical = ntags > 0 ? c.toInt(t[3], "a physical tag") : 0;
             const int entity = ntags > 1 ? c.toInt(t[4], "an elementary tag") : 0;
             addElement(typeDimension(type), type, entity, physical, t,
@@ -292,7 +327,9 @@ private:
         c.nextNonBlank("the element counts");
         const auto h = c.tokens();
         if (h.size() < 4)
-            c.fail("expected \"numEntityBlocks numElements minElementTag maxElementTag\"");
+            c.fail(QT_TRANSLATE_NOOP(
+                "stratamesh::Core",
+                "expected \"numEntityBlocks numElements minElementTag maxElementTag\""));
         const int blocks = c.toCount(h[0], "the number of element blocks", 8);
         const long long declared = c.toCount(h[1], "the number of elements", 4);
         const int headerLine = c.lineNumber();
@@ -301,7 +338,9 @@ private:
             c.nextNonBlank("an element block");
             const auto bh = c.tokens();
             if (bh.size() < 4)
-                c.fail("expected \"entityDim entityTag elementType numElementsInBlock\"");
+                c.fail(QT_TRANSLATE_NOOP(
+                    "stratamesh::Core",
+                    "expected \"entityDim entityTag elementType numElementsInBlock\""));
             const int dim = c.toInt(bh[0], "a dimension"), entity = c.toInt(bh[1], "an entity tag");
             const int type = c.toInt(bh[2], "an element type");
             const int n = c.toCount(bh[3], "the number of elements in the block", 4);
@@ -312,9 +351,12 @@ private:
             }
         }
         if (total != declared)
-            throw FileError(c.path(), headerLine,
-                            "the $Elements header declares " + std::to_string(declared)
-                                + " elements, its blocks hold " + std::to_string(total));
+            throw FileError(
+                c.path(), headerLine,
+                MessageText{QT_TRANSLATE_NOOP(
+                                "stratamesh::Core",
+                                "the $Elements header declares %1 elements, its blocks hold %2"),
+                            {std::to_string(declared), std::to_string(total)}});
         expectEnd("$EndElements");
     }
 
@@ -447,7 +489,7 @@ private:
         try {
             validateMesh(mesh);
         } catch (const InputError &e) {
-            throw FileError(c.path(), 0, e.what());
+            throw FileError(c.path(), 0, causeOf(e));
         }
         return mesh;
     }

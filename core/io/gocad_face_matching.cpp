@@ -6,6 +6,9 @@
 #include <functional>
 #include <unordered_map>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -81,10 +84,13 @@ std::vector<GocadFaceMatch> matchGocadFaces(const std::vector<const GocadHeaderF
 {
     const std::size_t n = headerFaces.size();
     if (body.faces.size() != n)
-        throw FileError(fileName, body.info.firstLine,
-                        describeGocadObject(body.info) + " has " + std::to_string(body.faces.size())
-                            + " TFACEs but the Model3d header declares " + std::to_string(n)
-                            + " for it");
+        throw FileError(
+            fileName, body.info.firstLine,
+            MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "%1 has %2 TFACEs but the Model3d header declares %3 for it"),
+                {describeGocadObject(body.info), std::to_string(body.faces.size()),
+                 std::to_string(n)}});
 
     const auto candidates = findKeyCandidates(headerFaces, body);
     std::vector<GocadFaceMatch> matches(n);
@@ -108,10 +114,12 @@ std::vector<GocadFaceMatch> matchGocadFaces(const std::vector<const GocadHeaderF
             if (!taken[c.face])
                 free.push_back(c);
         if (free.size() > 1)
-            throw FileError(fileName, headerFaces[h]->line,
-                            "the key triangle of " + faceLabel(*headerFaces[h])
-                                + " is a triangle of several TFACEs of "
-                                + describeGocadObject(body.info));
+            throw FileError(
+                fileName, headerFaces[h]->line,
+                MessageText{QT_TRANSLATE_NOOP(
+                                "stratamesh::Core",
+                                "the key triangle of %1 is a triangle of several TFACEs of %2"),
+                            {faceLabel(*headerFaces[h]), describeGocadObject(body.info)}});
         if (free.size() == 1)
             assign(h, free.front());
     }
@@ -122,10 +130,12 @@ std::vector<GocadFaceMatch> matchGocadFaces(const std::vector<const GocadHeaderF
         if (taken[h])
             throw FileError(
                 fileName, headerFaces[h]->line,
-                "cannot match " + faceLabel(*headerFaces[h]) + " to a TFACE of "
-                    + describeGocadObject(body.info)
-                    + ": its key triangle is in no remaining TFACE and the TFACE at its "
-                      "position matches another one");
+                MessageText{
+                    QT_TRANSLATE_NOOP(
+                        "stratamesh::Core",
+                        "cannot match %1 to a TFACE of %2: its key triangle is in no remaining "
+                        "TFACE and the TFACE at its position matches another one"),
+                    {faceLabel(*headerFaces[h]), describeGocadObject(body.info)}});
         matches[h] = {int(h), false, false};
         taken[h] = 1;
     }

@@ -6,6 +6,9 @@
 #include <charconv>
 #include <cmath>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -146,10 +149,11 @@ std::string GocadLineTokenizer::joined(std::size_t from) const
 double GocadLineTokenizer::number(std::size_t i, std::string_view what) const
 {
     if (i >= m_tokens.size())
-        fail("missing " + std::string(what));
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "missing %1"), {std::string(what)}});
     double v = 0.0;
     if (!parseGocadNumber(m_tokens[i], v))
-        fail(std::string(what) + " " + quoted(m_tokens[i]) + " is not a number");
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 %2 is not a number"),
+                         {std::string(what), quoted(m_tokens[i])}});
     return v;
 }
 
@@ -157,7 +161,8 @@ double GocadLineTokenizer::finiteNumber(std::size_t i, std::string_view what) co
 {
     const double v = number(i, what);
     if (!std::isfinite(v))
-        fail(std::string(what) + " " + quoted(m_tokens[i]) + " is not finite");
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 %2 is not finite"),
+                         {std::string(what), quoted(m_tokens[i])}});
     return v;
 }
 
@@ -172,17 +177,19 @@ double GocadLineTokenizer::coordinate(std::size_t i, std::string_view what) cons
 long long GocadLineTokenizer::integer(std::size_t i, std::string_view what) const
 {
     if (i >= m_tokens.size())
-        fail("missing " + std::string(what));
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "missing %1"), {std::string(what)}});
     long long v = 0;
     if (!parseGocadInteger(m_tokens[i], v))
-        fail(std::string(what) + " " + quoted(m_tokens[i]) + " is not an integer");
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 %2 is not an integer"),
+                         {std::string(what), quoted(m_tokens[i])}});
     return v;
 }
 
 void GocadLineTokenizer::requireTokens(std::size_t n, std::string_view usage) const
 {
     if (m_tokens.size() < n)
-        fail("too few values, expected '" + std::string(usage) + "'");
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "too few values, expected '%1'"),
+                         {std::string(usage)}});
 }
 
 void GocadLineTokenizer::fail(const std::string &cause) const
@@ -191,6 +198,16 @@ void GocadLineTokenizer::fail(const std::string &cause) const
 }
 
 void GocadLineTokenizer::failAt(int line, const std::string &cause) const
+{
+    throw FileError(m_fileName, line, cause);
+}
+
+void GocadLineTokenizer::fail(const MessageText &cause) const
+{
+    throw FileError(m_fileName, m_lineNumber, cause);
+}
+
+void GocadLineTokenizer::failAt(int line, const MessageText &cause) const
 {
     throw FileError(m_fileName, line, cause);
 }

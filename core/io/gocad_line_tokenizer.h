@@ -2,6 +2,8 @@
 // double-quoted names with spaces, CRLF endings, '#' comment lines, and line numbers for errors.
 #pragma once
 
+#include "common/message_text.h"
+
 #include <istream>
 #include <string>
 #include <string_view>
@@ -44,7 +46,9 @@ public:
     void requireTokens(std::size_t n, std::string_view usage) const;
 
     [[noreturn]] void fail(const std::string &cause) const;
+    [[noreturn]] void fail(const MessageText &cause) const;
     [[noreturn]] void failAt(int line, const std::string &cause) const;
+    [[noreturn]] void failAt(int line, const MessageText &cause) const;
 
 private:
     void tokenize();

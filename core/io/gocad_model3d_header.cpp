@@ -1,5 +1,8 @@
 #include "io/gocad_model3d_header.h"
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -15,17 +18,24 @@ std::vector<GocadListedId> readZeroTerminatedList(GocadLineTokenizer &tok, const
             long long v = 0;
             if (!parseGocadInteger(tok.token(i), v)) {
                 if (i == 0)
-                    tok.fail("list of ids of " + where + " is not ended by 0");
-                tok.fail("'" + std::string(tok.token(i)) + "' in the list of " + where
-                         + " is not an integer id");
+                    tok.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                           "list of ids of %1 is not ended by 0"),
+                                         {where}});
+                tok.fail(
+                    MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                  "'%1' in the list of %2 is not an integer id"),
+                                {std::string(tok.token(i)), where}});
             }
             if (v == 0)
                 return ids;
             ids.push_back({v, tok.lineNumber()});
         }
     }
-    tok.failAt(tok.lastLineNumber(),
-               "file ends inside the list of ids of " + where + " (truncated file?)");
+    tok.failAt(
+        tok.lastLineNumber(),
+        MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "file ends inside the list of ids of %1 (truncated file?)"),
+                    {where}});
 }
 
 void readKeyTriangle(GocadLineTokenizer &tok, GocadHeaderFace &face)
@@ -41,8 +51,12 @@ void readKeyTriangle(GocadLineTokenizer &tok, GocadHeaderFace &face)
     }
     for (int k = 0; k < 3; ++k) {
         if (k > 0 && !tok.next())
-            tok.failAt(tok.lastLineNumber(), "file ends inside the key triangle of TFACE "
-                                                 + std::to_string(face.id) + " (truncated file?)");
+            tok.failAt(
+                tok.lastLineNumber(),
+                MessageText{QT_TRANSLATE_NOOP(
+                                "stratamesh::Core",
+                                "file ends inside the key triangle of TFACE %1 (truncated file?)"),
+                            {std::to_string(face.id)}});
         tok.requireTokens(3, "x y z of a key triangle point of TFACE " + std::to_string(face.id));
         face.key[k] = Vec3(tok.coordinate(0, "x coordinate"), tok.coordinate(1, "y coordinate"),
                            tok.coordinate(2, "z coordinate"));

@@ -7,6 +7,9 @@
 #include <cstdlib>
 #include <unordered_map>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -36,28 +39,40 @@ private:
     {
         throw FileError(m_file, line, cause);
     }
+    [[noreturn]] void fail(int line, const MessageText &cause) const
+    {
+        throw FileError(m_file, line, cause);
+    }
 
     void indexDeclarations()
     {
         for (std::size_t t = 0; t < m_h.tsurfs.size(); ++t) {
             const auto [it, inserted] = m_tsurfIndex.emplace(m_h.tsurfs[t].name, int(t));
             if (!inserted)
-                fail(m_h.tsurfs[t].line, "TSURF '" + m_h.tsurfs[t].name
-                                             + "' is declared twice (first at line "
-                                             + std::to_string(m_h.tsurfs[it->second].line) + ")");
+                fail(m_h.tsurfs[t].line,
+                     MessageText{
+                         QT_TRANSLATE_NOOP("stratamesh::Core",
+                                           "TSURF '%1' is declared twice (first at line %2)"),
+                         {m_h.tsurfs[t].name, std::to_string(m_h.tsurfs[it->second].line)}});
         }
         m_facesOfTsurf.resize(m_h.tsurfs.size());
         for (std::size_t f = 0; f < m_h.faces.size(); ++f) {
             const GocadHeaderFace &face = m_h.faces[f];
             const auto [it, inserted] = m_faceIndex.emplace(face.id, int(f));
             if (!inserted)
-                fail(face.line, "TFACE " + std::to_string(face.id)
-                                    + " is declared twice (first at line "
-                                    + std::to_string(m_h.faces[it->second].line) + ")");
+                fail(face.line,
+                     MessageText{
+                         QT_TRANSLATE_NOOP("stratamesh::Core",
+                                           "TFACE %1 is declared twice (first at line %2)"),
+                         {std::to_string(face.id), std::to_string(m_h.faces[it->second].line)}});
             const auto t = m_tsurfIndex.find(face.tsurf);
             if (t == m_tsurfIndex.end())
-                fail(face.line, "TFACE " + std::to_string(face.id) + " names TSURF '" + face.tsurf
-                                    + "', which the header does not declare");
+                fail(
+                    face.line,
+                    MessageText{QT_TRANSLATE_NOOP(
+                                    "stratamesh::Core",
+                                    "TFACE %1 names TSURF '%2', which the header does not declare"),
+                                {std::to_string(face.id), face.tsurf}});
             m_facesOfTsurf[t->second].push_back(int(f));
         }
     }
@@ -72,25 +87,37 @@ private:
             if (!info.name.empty()) {
                 const auto it = m_tsurfIndex.find(info.name);
                 if (it == m_tsurfIndex.end())
-                    fail(info.firstLine,
-                         "TSurf '" + info.name
-                             + "' is not declared by a TSURF line of the Model3d header");
+                    fail(
+                        info.firstLine,
+                        MessageText{
+                            QT_TRANSLATE_NOOP(
+                                "stratamesh::Core",
+                                "TSurf '%1' is not declared by a TSURF line of the Model3d header"),
+                            {info.name}});
                 t = it->second;
             } else if (t >= int(m_h.tsurfs.size())) {
                 fail(info.firstLine,
-                     "unnamed TSurf beyond the TSURFs declared by the Model3d header");
+                     QT_TRANSLATE_NOOP(
+                         "stratamesh::Core",
+                         "unnamed TSurf beyond the TSURFs declared by the Model3d header"));
             }
             if (m_bodyOfTsurf[t] >= 0)
                 fail(info.firstLine,
-                     "second TSurf object for TSURF '" + m_h.tsurfs[t].name + "' (first at line "
-                         + std::to_string(m_bodies[m_bodyOfTsurf[t]].info.firstLine) + ")");
+                     MessageText{
+                         QT_TRANSLATE_NOOP("stratamesh::Core",
+                                           "second TSurf object for TSURF '%1' (first at line %2)"),
+                         {m_h.tsurfs[t].name,
+                          std::to_string(m_bodies[m_bodyOfTsurf[t]].info.firstLine)}});
             m_bodyOfTsurf[t] = int(b);
         }
         for (std::size_t t = 0; t < m_h.tsurfs.size(); ++t)
             if (m_bodyOfTsurf[t] < 0)
-                fail(m_h.tsurfs[t].line,
-                     "TSURF '" + m_h.tsurfs[t].name
-                         + "' has no TSurf object in the file (truncated file?)");
+                fail(
+                    m_h.tsurfs[t].line,
+                    MessageText{QT_TRANSLATE_NOOP(
+                                    "stratamesh::Core",
+                                    "TSURF '%1' has no TSurf object in the file (truncated file?)"),
+                                {m_h.tsurfs[t].name}});
     }
 
     // SURFACE groups name the geological feature of faces; the first group naming a face wins.
@@ -146,9 +173,12 @@ private:
         for (const GocadListedId &id : region.ids) {
             const auto it = m_faceIndex.find(std::llabs(id.id));
             if (it == m_faceIndex.end())
-                fail(id.line, "REGION '" + region.name + "' names TFACE "
-                                  + std::to_string(std::llabs(id.id))
-                                  + ", which the header does not declare");
+                fail(id.line,
+                     MessageText{
+                         QT_TRANSLATE_NOOP(
+                             "stratamesh::Core",
+                             "REGION '%1' names TFACE %2, which the header does not declare"),
+                         {region.name, std::to_string(std::llabs(id.id))}});
             // A key triangle written with the opposite cycle means the file's signs refer to
             // the other side of the triangles as stored.
             const bool positive = (id.id > 0) != bool(m_reversed[it->second]);
@@ -163,7 +193,9 @@ private:
             const GocadIdList &region = m_h.regions[r];
             const auto [it, inserted] = m_regionIndex.emplace(region.id, int(r) - 1);
             if (!inserted)
-                fail(region.line, "REGION id " + std::to_string(region.id) + " is used twice");
+                fail(region.line, MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                                "REGION id %1 is used twice"),
+                                              {std::to_string(region.id)}});
             if (r == 0)
                 m_model.universe = sides(region); // the first REGION is the outside
             else
@@ -220,7 +252,8 @@ Model buildGocadModel3d(const GocadModel3dHeader &header, std::vector<GocadTSurf
 Model buildGocadSurfaces(std::vector<GocadTSurf> tsurfs, const std::string &fileName)
 {
     if (tsurfs.empty())
-        throw FileError(fileName, 0, "no TSurf object in the file");
+        throw FileError(fileName, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "no TSurf object in the file"));
     Model model;
     model.name = gocadFileStem(fileName);
     model.zPositiveDepth = tsurfs.front().info.zPositiveDepth;

@@ -2,6 +2,9 @@
 
 #include <string_view>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -48,8 +51,10 @@ void readHeaderEntry(std::string_view entry, GocadObjectInfo &info)
 void refuseEndInBlock(const GocadLineTokenizer &tok, const char *block, int start)
 {
     if (tok.is(0, "END") || tok.is(0, "GOCAD"))
-        tok.fail(std::string(block) + " started at line " + std::to_string(start)
-                 + " is not closed by '}' before " + std::string(tok.token(0)));
+        tok.fail(
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "%1 started at line %2 is not closed by '}' before %3"),
+                        {std::string(block), std::to_string(start), std::string(tok.token(0))}});
 }
 
 void readHeaderBlock(GocadLineTokenizer &tok, GocadObjectInfo &info)
@@ -59,8 +64,11 @@ void readHeaderBlock(GocadLineTokenizer &tok, GocadObjectInfo &info)
     std::size_t open = text.find('{');
     while (open == std::string_view::npos) {
         if (!tok.next())
-            tok.failAt(tok.lastLineNumber(), "file ends inside the HEADER block started at line "
-                                                 + std::to_string(start));
+            tok.failAt(tok.lastLineNumber(),
+                       MessageText{QT_TRANSLATE_NOOP(
+                                       "stratamesh::Core",
+                                       "file ends inside the HEADER block started at line %1"),
+                                   {std::to_string(start)}});
         refuseEndInBlock(tok, "the HEADER block", start);
         text = tok.line();
         open = text.find('{');
@@ -72,8 +80,11 @@ void readHeaderBlock(GocadLineTokenizer &tok, GocadObjectInfo &info)
         if (close != std::string_view::npos)
             return;
         if (!tok.next())
-            tok.failAt(tok.lastLineNumber(), "file ends inside the HEADER block started at line "
-                                                 + std::to_string(start));
+            tok.failAt(tok.lastLineNumber(),
+                       MessageText{QT_TRANSLATE_NOOP(
+                                       "stratamesh::Core",
+                                       "file ends inside the HEADER block started at line %1"),
+                                   {std::to_string(start)}});
         refuseEndInBlock(tok, "the HEADER block", start);
         text = tok.line();
     }
@@ -86,7 +97,7 @@ void readZPositive(const GocadLineTokenizer &tok, GocadObjectInfo &info)
     else if (tok.is(1, "Elevation"))
         info.zPositiveDepth = false;
     else
-        tok.fail("ZPOSITIVE must be Elevation or Depth");
+        tok.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "ZPOSITIVE must be Elevation or Depth"));
 }
 
 void readCoordinateSystem(GocadLineTokenizer &tok, GocadObjectInfo &info)
@@ -98,11 +109,16 @@ void readCoordinateSystem(GocadLineTokenizer &tok, GocadObjectInfo &info)
         if (tok.is(0, "ZPOSITIVE"))
             readZPositive(tok, info);
         else if (tok.is(0, "END") || tok.is(0, "GOCAD"))
-            tok.fail("coordinate system block started at line " + std::to_string(start)
-                     + " has no END_ORIGINAL_COORDINATE_SYSTEM");
+            tok.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                   "coordinate system block started at line %1 "
+                                                   "has no END_ORIGINAL_COORDINATE_SYSTEM"),
+                                 {std::to_string(start)}});
     }
-    tok.failAt(tok.lastLineNumber(), "file ends inside the coordinate system block started at line "
-                                         + std::to_string(start));
+    tok.failAt(tok.lastLineNumber(),
+               MessageText{QT_TRANSLATE_NOOP(
+                               "stratamesh::Core",
+                               "file ends inside the coordinate system block started at line %1"),
+                           {std::to_string(start)}});
 }
 
 // PROPERTY_CLASS_HEADER X { … } and similar display blocks: skipped up to the closing brace.
@@ -113,8 +129,11 @@ void skipBraceBlock(GocadLineTokenizer &tok)
     text = text.substr(text.find('{') + 1);
     while (text.find('}') == std::string_view::npos) {
         if (!tok.next())
-            tok.failAt(tok.lastLineNumber(),
-                       "file ends inside the { } block started at line " + std::to_string(start));
+            tok.failAt(
+                tok.lastLineNumber(),
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "file ends inside the { } block started at line %1"),
+                            {std::to_string(start)}});
         refuseEndInBlock(tok, "the { } block", start);
         text = tok.line();
     }
@@ -126,9 +145,11 @@ void skipUntil(GocadLineTokenizer &tok, std::string_view endKeyword)
     while (tok.next())
         if (tok.is(0, endKeyword))
             return;
-    tok.failAt(tok.lastLineNumber(), "file ends before " + std::string(endKeyword)
-                                         + " closing the block started at line "
-                                         + std::to_string(start));
+    tok.failAt(
+        tok.lastLineNumber(),
+        MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "file ends before %1 closing the block started at line %2"),
+                    {std::string(endKeyword), std::to_string(start)}});
 }
 
 } // namespace
@@ -138,7 +159,7 @@ bool readGocadObjectLine(const GocadLineTokenizer &tok, GocadObjectInfo &info)
     if (!tok.is(0, "GOCAD"))
         return false;
     if (tok.size() < 2)
-        tok.fail("GOCAD line without an object type");
+        tok.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "GOCAD line without an object type"));
     info = GocadObjectInfo();
     info.type = std::string(tok.token(1));
     info.firstLine = tok.lineNumber();
@@ -191,9 +212,14 @@ void failMissingGocadEnd(const GocadLineTokenizer &tok, const GocadObjectInfo &i
     const std::string what =
         describeGocadObject(info) + " started at line " + std::to_string(info.firstLine);
     if (atEnd)
-        tok.failAt(tok.lastLineNumber(),
-                   "file ends before the END of " + what + " (truncated file?)");
-    tok.fail("missing END of " + what + " before the next GOCAD object");
+        tok.failAt(
+            tok.lastLineNumber(),
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "file ends before the END of %1 (truncated file?)"),
+                        {what}});
+    tok.fail(MessageText{
+        QT_TRANSLATE_NOOP("stratamesh::Core", "missing END of %1 before the next GOCAD object"),
+        {what}});
 }
 
 std::string describeGocadObject(const GocadObjectInfo &info)

@@ -10,6 +10,9 @@
 #include <optional>
 #include <vector>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 Model readGocad(std::istream &in, const std::string &fileName)
@@ -21,11 +24,14 @@ Model readGocad(std::istream &in, const std::string &fileName)
     while (tok.next()) {
         GocadObjectInfo info;
         if (!readGocadObjectLine(tok, info))
-            tok.fail(first ? "not a Gocad file: expected 'GOCAD <type>'"
-                           : "expected 'GOCAD <type>' to start the next object");
+            tok.fail(first ? QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "not a Gocad file: expected 'GOCAD <type>'")
+                           : QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "expected 'GOCAD <type>' to start the next object"));
         if (gocadKeywordEquals(info.type, "Model3d")) {
             if (!first)
-                tok.fail("a Model3d object must come first in the file");
+                tok.fail(QT_TRANSLATE_NOOP("stratamesh::Core",
+                                           "a Model3d object must come first in the file"));
             header = parseGocadModel3dHeader(tok, info);
         } else if (gocadKeywordEquals(info.type, "TSurf")) {
             tsurfs.push_back(parseGocadTSurf(tok, info));
@@ -35,7 +41,8 @@ Model readGocad(std::istream &in, const std::string &fileName)
         first = false;
     }
     if (first)
-        throw FileError(fileName, 0, "empty file: no GOCAD object");
+        throw FileError(fileName, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "empty file: no GOCAD object"));
     if (header)
         return buildGocadModel3d(*header, std::move(tsurfs), fileName);
     return buildGocadSurfaces(std::move(tsurfs), fileName);
@@ -45,10 +52,12 @@ Model readGocadFile(const std::string &path)
 {
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw FileError(path, 0, "cannot open the file (missing or not readable)");
+        throw FileError(path, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "cannot open the file (missing or not readable)"));
     Model model = readGocad(in, path);
     if (in.bad())
-        throw FileError(path, 0, "read error");
+        throw FileError(path, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "read error"));
     return model;
 }
 

@@ -3,6 +3,9 @@
 #include <unordered_map>
 #include <utility>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -87,8 +90,9 @@ private:
         const auto [it, inserted] =
             m_ids.try_emplace(id, VertexRef{face, int(f.vertices.size()), m_tok.lineNumber()});
         if (!inserted)
-            m_tok.fail("vertex id " + std::to_string(id) + " is already defined at line "
-                       + std::to_string(it->second.line));
+            m_tok.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "vertex id %1 is already defined at line %2"),
+                {std::to_string(id), std::to_string(it->second.line)}});
         f.vertices.push_back(p);
     }
 
@@ -110,8 +114,10 @@ private:
         const long long ref = m_tok.integer(2, "referenced vertex id");
         const auto it = m_ids.find(ref);
         if (it == m_ids.end())
-            m_tok.fail("ATOM " + std::to_string(id) + " refers to vertex " + std::to_string(ref)
-                       + ", which is not defined before it");
+            m_tok.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "ATOM %1 refers to vertex %2, which is not defined before it"),
+                {std::to_string(id), std::to_string(ref)}});
         const Vec3 p = m_result.faces[it->second.face].vertices[it->second.local];
         defineVertex(id, p);
     }
@@ -120,8 +126,10 @@ private:
     {
         const auto it = m_ids.find(id);
         if (it == m_ids.end())
-            m_tok.fail("TRGL refers to vertex " + std::to_string(id) + ", which is not defined in "
-                       + describeGocadObject(m_result.info));
+            m_tok.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "TRGL refers to vertex %1, which is not defined in %2"),
+                {std::to_string(id), describeGocadObject(m_result.info)}});
         if (it->second.face == face)
             return it->second.local;
         // A vertex of an earlier TFACE used directly: treated like an ATOM of it, once per face.
@@ -140,7 +148,7 @@ private:
         const long long b = m_tok.integer(2, "TRGL vertex id");
         const long long c = m_tok.integer(3, "TRGL vertex id");
         if (a == b || b == c || a == c)
-            m_tok.fail("TRGL uses the same vertex id twice");
+            m_tok.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "TRGL uses the same vertex id twice"));
         const Triangle tri{localVertex(a, face), localVertex(b, face), localVertex(c, face)};
         m_result.faces[face].triangles.push_back(tri);
     }
@@ -148,19 +156,26 @@ private:
     void requireVertex(long long id, int line, const char *what)
     {
         if (m_ids.find(id) == m_ids.end())
-            m_tok.failAt(line, std::string(what) + " refers to vertex " + std::to_string(id)
-                                   + ", which is not defined in "
-                                   + describeGocadObject(m_result.info));
+            m_tok.failAt(
+                line,
+                MessageText{
+                    QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "%1 refers to vertex %2, which is not defined in %3"),
+                    {std::string(what), std::to_string(id), describeGocadObject(m_result.info)}});
     }
 
     void finish()
     {
         const std::string what = describeGocadObject(m_result.info);
         if (m_result.faces.empty())
-            m_tok.fail(what + " has no TFACE and no triangle");
+            m_tok.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "%1 has no TFACE and no triangle"), {what}});
         for (const GocadFace &f : m_result.faces)
             if (f.triangles.empty())
-                m_tok.failAt(f.line, "TFACE of " + what + " has no triangle (empty surface)");
+                m_tok.failAt(f.line, MessageText{QT_TRANSLATE_NOOP(
+                                                     "stratamesh::Core",
+                                                     "TFACE of %1 has no triangle (empty surface)"),
+                                                 {what}});
         for (const auto &[id, line] : m_stones) {
             requireVertex(id, line, "BSTONE");
             m_result.borderStones.push_back(id);

@@ -10,6 +10,9 @@
 #include <unordered_map>
 #include <unordered_set>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -145,18 +148,24 @@ void writeTSurfObject(std::ostream &out, const Model &model, const TSurfGroup &g
 void requireWritable(const Model &model, const std::vector<int> &selection)
 {
     if (selection.empty())
-        throw InputError("the model '" + model.name + "' has no surface to write");
+        throw InputError(MessageText{
+            QT_TRANSLATE_NOOP("stratamesh::Core", "the model '%1' has no surface to write"),
+            {model.name}});
     for (int s : selection)
         if (model.surfaces[s].triangles.empty())
-            throw InputError("surface '" + model.surfaces[s].name
-                             + "' has no triangle: Gocad cannot hold it");
+            throw InputError(
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "surface '%1' has no triangle: Gocad cannot hold it"),
+                            {model.surfaces[s].name}});
     for (int s : selection)
         for (const Triangle &t : model.surfaces[s].triangles)
             for (int v : t)
                 if (v < 0 || v >= static_cast<int>(model.surfaces[s].vertices.size()))
-                    throw InputError("surface '" + model.surfaces[s].name
-                                     + "' has a triangle using vertex " + std::to_string(v) + " of "
-                                     + std::to_string(model.surfaces[s].vertices.size()));
+                    throw InputError(MessageText{
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "surface '%1' has a triangle using vertex %2 of %3"),
+                        {model.surfaces[s].name, std::to_string(v),
+                         std::to_string(model.surfaces[s].vertices.size())}});
 }
 
 // Signed ids, five per line, closed by 0 (as Gocad writes them).
@@ -185,9 +194,10 @@ void writeGocadModel3d(const Model &model, const std::string &path)
     for (const Region &r : model.regions)
         for (const RegionSide &side : r.boundaries)
             if (side.surface < 0 || side.surface >= static_cast<int>(model.surfaces.size()))
-                throw InputError("region '" + r.name + "' is bounded by surface "
-                                 + std::to_string(side.surface) + " of "
-                                 + std::to_string(model.surfaces.size()));
+                throw InputError(MessageText{
+                    QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "region '%1' is bounded by surface %2 of %3"),
+                    {r.name, std::to_string(side.surface), std::to_string(model.surfaces.size())}});
     const std::vector<TSurfGroup> groups = groupSurfaces(model, all);
     std::vector<int> faceId(model.surfaces.size());
     int nextFace = 1;
@@ -260,9 +270,10 @@ void writeGocadTSurf(const Model &model, const std::string &path, int surface)
     std::vector<int> selection;
     if (surface >= 0) {
         if (surface >= static_cast<int>(model.surfaces.size()))
-            throw InputError("surface " + std::to_string(surface)
-                             + " does not exist (the model has "
-                             + std::to_string(model.surfaces.size()) + ")");
+            throw InputError(
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "surface %1 does not exist (the model has %2)"),
+                            {std::to_string(surface), std::to_string(model.surfaces.size())}});
         selection.push_back(surface);
     } else {
         for (std::size_t s = 0; s < model.surfaces.size(); ++s)

@@ -4,6 +4,9 @@
 #include "io/formats.h"
 #include "mesh/model_conversion.h"
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 bool isVolumeMeshFile(const std::string &path)
@@ -21,9 +24,11 @@ VolumeMesh readVolumeMesh(const std::string &path)
 {
     const FileFormat *format = findFormat(path);
     if (format == nullptr || !format->readsMesh())
-        throw FileError(path, 0,
-                        "unknown mesh file extension '" + fileExtension(path) + "' (use "
-                            + extensionList(FormatUse::ReadVolumeMesh) + ")");
+        throw FileError(
+            path, 0,
+            MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "unknown mesh file extension '%1' (use %2)"),
+                {fileExtension(path), extensionList(FormatUse::ReadVolumeMesh)}});
     return format->readMesh(path);
 }
 

@@ -3,6 +3,9 @@
 #include "common/error.h"
 #include "mesh/model_conversion.h"
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -12,8 +15,9 @@ const FileFormat &writableFormat(const std::string &path)
     const FileFormat *format = findFormat(path);
     if (format == nullptr || !format->writes())
         throw FileError(path, 0,
-                        "unknown output extension '" + fileExtension(path) + "' (use "
-                            + extensionList(FormatUse::Export) + ")");
+                        MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                      "unknown output extension '%1' (use %2)"),
+                                    {fileExtension(path), extensionList(FormatUse::Export)}});
     return *format;
 }
 
@@ -31,8 +35,10 @@ ExportReport exportModel(const Model &model, const std::string &path, const Expo
     if (format.writeModel != nullptr)
         format.writeModel(model, path, options, report);
     else if (format.needsCells)
-        throw InputError("a TSolid holds tetrahedra: the surface model '" + model.name
-                         + "' has none (build a volume mesh first)");
+        throw InputError(MessageText{
+            QT_TRANSLATE_NOOP("stratamesh::Core", "a TSolid holds tetrahedra: the surface model "
+                                                  "'%1' has none (build a volume mesh first)"),
+            {model.name}});
     else
         format.writeMesh(meshFromModel(model), path, options, report);
     return report;

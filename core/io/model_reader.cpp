@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <filesystem>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 bool isReadableModelFile(const std::string &path)
@@ -17,12 +20,16 @@ Model readModel(const std::string &path)
 {
     const FileFormat *format = findFormat(path);
     if (format == nullptr || !format->readsModel())
-        throw FileError(path, 0,
-                        "unknown model file extension '" + fileExtension(path) + "' (expected "
-                            + extensionList(FormatUse::ReadModel) + ")");
+        throw FileError(
+            path, 0,
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "unknown model file extension '%1' (expected %2)"),
+                        {fileExtension(path), extensionList(FormatUse::ReadModel)}});
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
-        throw FileError(path, 0, "cannot open the file (missing or not a regular file)");
+        throw FileError(path, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "cannot open the file (missing or not a regular file)"));
     // Volume meshes give their surfaces and regions, cells dropped (modelFromMesh).
     const Model model = format->readModel(path);
     // An empty model would open as a "valid" one with nothing in it.
@@ -30,8 +37,9 @@ Model readModel(const std::string &path)
                                    [](const Surface &s) { return s.triangles.empty(); });
     if (empty)
         throw FileError(path, 0,
-                        "the file holds no surface triangle (an empty model; volume cells alone "
-                        "give no surface)");
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "the file holds no surface triangle (an empty "
+                                          "model; volume cells alone give no surface)"));
     return model;
 }
 

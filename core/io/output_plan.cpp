@@ -10,6 +10,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -63,32 +66,54 @@ OutputPlan::~OutputPlan()
 void OutputPlan::add(const std::string &path, const std::string &role)
 {
     if (m_committed)
-        throw FileError(path, 0, "internal error: output planned after the commit");
+        throw FileError(path, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "internal error: output planned after the commit"));
     if (path.empty())
-        throw FileError(path, 0, "no file name given for the " + role);
+        throw FileError(
+            path, 0,
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "no file name given for the %1"),
+                        {role}});
     struct stat st {};
     const bool exists = ::stat(path.c_str(), &st) == 0;
     if (exists && S_ISDIR(st.st_mode))
-        throw FileError(path, 0, "cannot write the " + role + ": it is a folder");
+        throw FileError(path, 0,
+                        MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                      "cannot write the %1: it is a folder"),
+                                    {role}});
     for (const std::string &input : m_inputs)
         if (!m_overwrite && !input.empty() && sameFile(path, input))
-            throw FileError(path, 0,
-                            "the " + role + " would replace the input file " + input
-                                + ": choose another file, or ask to overwrite it (stratamesh-cli: "
-                                  "--overwrite); nothing was written");
+            throw FileError(
+                path, 0,
+                MessageText{
+                    QT_TRANSLATE_NOOP(
+                        "stratamesh::Core",
+                        "the %1 would replace the input file %2: choose another file, or ask to "
+                        "overwrite it (stratamesh-cli: --overwrite); nothing was written"),
+                    {role, input}});
     for (const auto &o : m_outputs)
         if (sameFile(path, o->path))
-            throw FileError(path, 0, "named twice: as the " + o->role + " and as the " + role);
+            throw FileError(path, 0,
+                            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                          "named twice: as the %1 and as the %2"),
+                                        {o->role, role}});
     const std::string dir = folderOf(path);
     struct stat ds {};
     if (::stat(dir.c_str(), &ds) != 0)
-        throw FileError(path, 0,
-                        "cannot write the " + role + ": its folder " + dir
-                            + " does not exist (nothing was written)");
+        throw FileError(
+            path, 0,
+            MessageText{
+                QT_TRANSLATE_NOOP(
+                    "stratamesh::Core",
+                    "cannot write the %1: its folder %2 does not exist (nothing was written)"),
+                {role, dir}});
     if (!S_ISDIR(ds.st_mode))
-        throw FileError(path, 0,
-                        "cannot write the " + role + ": " + dir
-                            + " is not a folder (nothing was written)");
+        throw FileError(
+            path, 0,
+            MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "cannot write the %1: %2 is not a folder (nothing was written)"),
+                {role, dir}});
     // The temporary file is the writability check: whatever a permission test would say (root,
     // ACLs, read-only mounts), creating a file in the folder is what the work will need.
     const std::size_t slash = path.find_last_of('/');
@@ -103,9 +128,12 @@ void OutputPlan::add(const std::string &path, const std::string &role)
     const int fd = ::mkstemps(name.data(), static_cast<int>(ext.size()));
     if (fd < 0) {
         const int error = errno;
-        throw FileError(path, 0,
-                        "cannot write the " + role + " in folder " + dir + ": " + systemError(error)
-                            + " (nothing was written)");
+        throw FileError(
+            path, 0,
+            MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "cannot write the %1 in folder %2: %3 (nothing was written)"),
+                {role, dir, systemError(error)}});
     }
     // mkstemps gives 0600; give the file the mode a plain open() would (or the replaced file's).
     (void)::fchmod(fd, exists ? (st.st_mode & 07777) : (0666 & ~currentUmask()));
@@ -123,7 +151,10 @@ OutputPlan::Output &OutputPlan::find(const std::string &path)
     for (const auto &o : m_outputs)
         if (o->path == path)
             return *o;
-    throw FileError(path, 0, "internal error: this output was not planned before the work");
+    throw FileError(
+        path, 0,
+        QT_TRANSLATE_NOOP("stratamesh::Core",
+                          "internal error: this output was not planned before the work"));
 }
 
 void OutputPlan::write(const std::string &path,
@@ -131,7 +162,9 @@ void OutputPlan::write(const std::string &path,
 {
     Output &o = find(path);
     if (o.temporary.empty())
-        throw FileError(path, 0, "internal error: output written after the commit");
+        throw FileError(path, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "internal error: output written after the commit"));
     write(o.temporary);
     o.written = true;
 }
@@ -142,13 +175,18 @@ void OutputPlan::writeText(const std::string &path,
     this->write(path, [&](const std::string &temporary) {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         if (!out)
-            throw FileError(path, 0, "cannot write the " + find(path).role);
+            throw FileError(
+                path, 0,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "cannot write the %1"),
+                            {find(path).role}});
         write(out);
         out.flush();
         if (!out)
-            throw FileError(path, 0,
-                            "cannot write the " + find(path).role + ": " + systemError(errno)
-                                + " (nothing was written)");
+            throw FileError(
+                path, 0,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "cannot write the %1: %2 (nothing was written)"),
+                            {find(path).role, systemError(errno)}});
         out.close();
         // Flushed to disk before the rename, so that a crash never shows a short file.
         const int fd = ::open(temporary.c_str(), O_RDONLY);
@@ -157,9 +195,11 @@ void OutputPlan::writeText(const std::string &path,
             const int error = errno;
             ::close(fd);
             if (!synced)
-                throw FileError(path, 0,
-                                "cannot write the " + find(path).role + ": " + systemError(error)
-                                    + " (nothing was written)");
+                throw FileError(
+                    path, 0,
+                    MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                  "cannot write the %1: %2 (nothing was written)"),
+                                {find(path).role, systemError(error)}});
         }
     });
 }
@@ -178,13 +218,17 @@ void OutputPlan::discard(const std::string &path)
 void OutputPlan::commit()
 {
     if (m_committed)
-        throw FileError(m_outputs.empty() ? std::string() : m_outputs.front()->path, 0,
-                        "internal error: outputs committed twice");
+        throw FileError(
+            m_outputs.empty() ? std::string() : m_outputs.front()->path, 0,
+            QT_TRANSLATE_NOOP("stratamesh::Core", "internal error: outputs committed twice"));
     for (const auto &o : m_outputs)
         if (!o->written)
-            throw FileError(o->path, 0,
-                            "internal error: the " + o->role
-                                + " was never written (nothing was written)");
+            throw FileError(
+                o->path, 0,
+                MessageText{QT_TRANSLATE_NOOP(
+                                "stratamesh::Core",
+                                "internal error: the %1 was never written (nothing was written)"),
+                            {o->role}});
     std::size_t done = 0;
     std::string failure;
     for (; done < m_outputs.size(); ++done) {

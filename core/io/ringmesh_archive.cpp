@@ -6,6 +6,9 @@
 #include <cctype>
 #include <cstring>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 std::string gmEntryName(GmEntityType type, std::size_t i)
@@ -47,9 +50,12 @@ GeogramFile GmArchive::geogram(GmEntityType type, std::size_t i) const
 {
     const std::string entry = gmEntryName(type, i);
     if (!m_zip.contains(entry))
-        throw FileError(where(entry), 0,
-                        "entry missing from the archive (mesh_entities.txt lists "
-                            + std::string(gmEntityTypeName(type)) + " " + std::to_string(i) + ")");
+        throw FileError(
+            where(entry), 0,
+            MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "entry missing from the archive (mesh_entities.txt lists %1 %2)"),
+                {std::string(gmEntityTypeName(type)), std::to_string(i)}});
     return readGeogramFile(m_zip.read(entry), where(entry));
 }
 
@@ -70,9 +76,12 @@ void GmArchive::checkEntries() const
             const std::size_t count = m_entities.entities[t].size();
             if (type == gmEntityTypeName(GmEntityType(t))
                 && (digits.size() > 9 || std::stoul(digits) >= count))
-                throw FileError(where(name), 0,
-                                "no such entity: mesh_entities.txt says 'Nb " + type + " "
-                                    + std::to_string(count) + "'");
+                throw FileError(
+                    where(name), 0,
+                    MessageText{
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "no such entity: mesh_entities.txt says 'Nb %1 %2'"),
+                        {type, std::to_string(count)}});
         }
     }
 }

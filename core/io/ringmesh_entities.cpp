@@ -6,6 +6,9 @@
 #include <optional>
 #include <sstream>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -47,11 +50,16 @@ public:
     const std::vector<std::string> &following(const std::string &what)
     {
         if (m_next >= m_lines.size())
-            fail("the file ends before the " + what + " line");
+            fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "the file ends before the %1 line"), {what}});
         return m_lines[m_next++];
     }
 
     [[noreturn]] void fail(const std::string &cause) const
+    {
+        throw FileError(m_where, number(), cause);
+    }
+    [[noreturn]] void fail(const MessageText &cause) const
     {
         throw FileError(m_where, number(), cause);
     }
@@ -61,7 +69,9 @@ public:
         char *end = nullptr;
         const long long v = std::strtoll(s.c_str(), &end, 10);
         if (s.empty() || *end != '\0' || v < 0 || v > 2000000000)
-            fail("expected " + what + " (a non-negative integer), found '" + s + "'");
+            fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "expected %1 (a non-negative integer), found '%2'"),
+                             {what, s}});
         return v;
     }
 
@@ -92,14 +102,17 @@ public:
             const std::string &key = (*f)[0];
             if (key == "Version") {
                 if (f->size() < 2)
-                    m_in.fail("'Version' without a number");
+                    m_in.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "'Version' without a number"));
                 m_out.version = int(m_in.integer((*f)[1], "a version"));
                 if (m_out.version > 2)
-                    m_in.fail("unknown .gm version " + (*f)[1]
-                              + " (versions 0, 1 and 2 are known)");
+                    m_in.fail(MessageText{
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "unknown .gm version %1 (versions 0, 1 and 2 are known)"),
+                        {(*f)[1]}});
             } else if (key == "Dimension") {
                 if (f->size() < 2 || (*f)[1] != "3")
-                    m_in.fail("only 3D GeoModels are supported (Dimension 3)");
+                    m_in.fail(QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                "only 3D GeoModels are supported (Dimension 3)"));
             } else if (key == "GeoModel") {
                 if (f->size() > 2)
                     m_out.name = (*f)[2];
@@ -119,18 +132,23 @@ private:
     void count(const std::vector<std::string> &f)
     {
         if (f.size() < 3)
-            m_in.fail("'Nb' line needs an entity type and a count");
+            m_in.fail(QT_TRANSLATE_NOOP("stratamesh::Core",
+                                        "'Nb' line needs an entity type and a count"));
         const auto type = entityType(f[1]);
         if (!type)
-            m_in.fail("unknown mesh entity type '" + f[1] + "'");
+            m_in.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "unknown mesh entity type '%1'"), {f[1]}});
         const long long n = m_in.integer(f[2], "an entity count");
         // Every entity takes two lines: a larger count cannot be honest.
         if (std::size_t(n) > m_in.size())
-            m_in.fail("Nb " + f[1] + " " + f[2] + " is more than the file's "
-                      + std::to_string(m_in.size()) + " lines can describe");
+            m_in.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "Nb %1 %2 is more than the file's %3 lines can describe"),
+                {f[1], f[2], std::to_string(m_in.size())}});
         auto &list = m_out.entities[int(*type)];
         if (!list.empty() || m_counted[int(*type)])
-            m_in.fail("second 'Nb " + f[1] + "' line");
+            m_in.fail(
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "second 'Nb %1' line"), {f[1]}});
         m_counted[int(*type)] = true;
         list.resize(std::size_t(n));
         m_defined[int(*type)].assign(std::size_t(n), false);
@@ -141,15 +159,19 @@ private:
         const std::string typeName = gmEntityTypeName(type);
         const std::size_t minFields = m_out.version == 1 ? 5 : 4;
         if (f.size() < minFields)
-            m_in.fail(typeName + " line has " + std::to_string(f.size()) + " fields, version "
-                      + std::to_string(m_out.version) + " needs " + std::to_string(minFields));
+            m_in.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "%1 line has %2 fields, version %3 needs %4"),
+                {typeName, std::to_string(f.size()), std::to_string(m_out.version),
+                 std::to_string(minFields)}});
         const long long id = m_in.integer(f[1], "an entity id");
         auto &list = m_out.entities[int(type)];
         if (std::size_t(id) >= list.size())
-            m_in.fail(typeName + " " + f[1] + " is beyond 'Nb " + typeName + " "
-                      + std::to_string(list.size()) + "'");
+            m_in.fail(
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 %2 is beyond 'Nb %1 %3'"),
+                            {typeName, f[1], std::to_string(list.size())}});
         if (m_defined[int(type)][std::size_t(id)])
-            m_in.fail(typeName + " " + f[1] + " is defined twice");
+            m_in.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 %2 is defined twice"),
+                                  {typeName, f[1]}});
         m_defined[int(type)][std::size_t(id)] = true;
         GmMeshEntity &e = list[std::size_t(id)];
         e.line = m_in.number();
@@ -177,7 +199,10 @@ private:
         std::vector<GmSignedId> out;
         for (const std::string &s : f) {
             if (s.size() < 2 || (s[0] != '+' && s[0] != '-'))
-                m_in.fail("expected a signed surface id like +3 or -3, found '" + s + "'");
+                m_in.fail(MessageText{
+                    QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "expected a signed surface id like +3 or -3, found '%1'"),
+                    {s}});
             out.push_back({int(m_in.integer(s.substr(1), "a surface id")), s[0] == '+'});
         }
         return out;
@@ -188,10 +213,12 @@ private:
     {
         const std::size_t n = m_out.entities[int(boundaryType)].size();
         if (id < 0 || std::size_t(id) >= n)
-            throw FileError(m_where, owner.line,
-                            ownerName + " has " + gmEntityTypeName(boundaryType) + " "
-                                + std::to_string(id) + " as boundary, but 'Nb "
-                                + gmEntityTypeName(boundaryType) + "' is " + std::to_string(n));
+            throw FileError(
+                m_where, owner.line,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "%1 has %2 %3 as boundary, but 'Nb %2' is %4"),
+                            {ownerName, gmEntityTypeName(boundaryType), std::to_string(id),
+                             std::to_string(n)}});
     }
 
     void checkComplete()
@@ -200,13 +227,14 @@ private:
             const auto &defined = m_defined[t];
             for (std::size_t i = 0; i < defined.size(); ++i)
                 if (!defined[i])
-                    m_in.fail(std::string("'Nb ") + gmEntityTypeName(GmEntityType(t)) + " "
-                              + std::to_string(defined.size()) + "' but "
-                              + gmEntityTypeName(GmEntityType(t)) + " " + std::to_string(i)
-                              + " is never described");
+                    m_in.fail(
+                        MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                      "'Nb %1 %2' but %1 %3 is never described"),
+                                    {gmEntityTypeName(GmEntityType(t)),
+                                     std::to_string(defined.size()), std::to_string(i)}});
         }
         if (m_out.entities[int(GmEntityType::Surface)].empty())
-            m_in.fail("the GeoModel has no surface");
+            m_in.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "the GeoModel has no surface"));
         for (int t = 1; t < kGmEntityTypes; ++t) {
             const GmEntityType type = GmEntityType(t);
             const GmEntityType boundaryType = GmEntityType(t - 1);
@@ -222,8 +250,10 @@ private:
         }
         for (const GmSignedId &s : m_out.universe)
             if (std::size_t(s.id) >= m_out.entities[int(GmEntityType::Surface)].size())
-                m_in.fail("Universe has surface " + std::to_string(s.id)
-                          + " as boundary, beyond 'Nb Surface'");
+                m_in.fail(MessageText{
+                    QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "Universe has surface %1 as boundary, beyond 'Nb Surface'"),
+                    {std::to_string(s.id)}});
     }
 
     Lines m_in;
@@ -268,7 +298,9 @@ std::vector<GmGeologicalEntity> parseGmGeologicalEntities(const std::string &tex
         if (line[0] == "Nb")
             continue; // the entities themselves say all we need
         if (line.size() < 4)
-            in.fail("geological entity line needs a type, an id, a name and a feature");
+            in.fail(QT_TRANSLATE_NOOP(
+                "stratamesh::Core",
+                "geological entity line needs a type, an id, a name and a feature"));
         GmGeologicalEntity e;
         e.type = line[0];
         e.name = line[2];
@@ -287,9 +319,11 @@ std::vector<GmGeologicalEntity> parseGmGeologicalEntities(const std::string &tex
         for (const std::string &c : children) {
             const long long id = in.integer(c, "a child id");
             if (childType && std::size_t(id) >= mesh.of(*childType).size())
-                in.fail(e.type + " '" + e.name + "' has " + gmEntityTypeName(*childType) + " " + c
-                        + " as child, but mesh_entities.txt has "
-                        + std::to_string(mesh.of(*childType).size()));
+                in.fail(MessageText{
+                    QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "%1 '%2' has %3 %4 as child, but mesh_entities.txt has %5"),
+                    {e.type, e.name, gmEntityTypeName(*childType), c,
+                     std::to_string(mesh.of(*childType).size())}});
             e.children.push_back(int(id));
         }
         out.push_back(std::move(e));

@@ -10,6 +10,9 @@
 #include <algorithm>
 #include <unordered_map>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -31,7 +34,11 @@ void checkCornersAndLines(const GmArchive &gm)
         const std::string where = gm.where(gmEntryName(GmEntityType::Corner, i));
         const std::size_t n = geogramPoints(gm.geogram(GmEntityType::Corner, i), where).size();
         if (n != 1)
-            throw FileError(where, 0, "a corner has one vertex, this one has " + std::to_string(n));
+            throw FileError(
+                where, 0,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "a corner has one vertex, this one has %1"),
+                            {std::to_string(n)}});
     }
     for (std::size_t i = 0; i < gm.entities().of(GmEntityType::Line).size(); ++i) {
         const std::string where = gm.where(gmEntryName(GmEntityType::Line, i));
@@ -39,9 +46,13 @@ void checkCornersAndLines(const GmArchive &gm)
         const std::size_t n = geogramPoints(file, where).size();
         const std::size_t edges = geogramEdges(file, n, where).size();
         if (n < 2 || edges + 1 != n)
-            throw FileError(where, 0,
-                            "a line is a chain of edges, this one has " + std::to_string(n)
-                                + " vertices and " + std::to_string(edges) + " edges");
+            throw FileError(
+                where, 0,
+                MessageText{
+                    QT_TRANSLATE_NOOP(
+                        "stratamesh::Core",
+                        "a line is a chain of edges, this one has %1 vertices and %2 edges"),
+                    {std::to_string(n), std::to_string(edges)}});
     }
 }
 
@@ -86,7 +97,8 @@ Model buildModel(const GmArchive &gm)
         surface.vertices = geogramPoints(file, where);
         surface.triangles = geogramTriangles(file, surface.vertices.size(), where);
         if (surface.triangles.empty())
-            throw FileError(where, 0, "surface without facets");
+            throw FileError(where, 0,
+                            QT_TRANSLATE_NOOP("stratamesh::Core", "surface without facets"));
     }
     makeSurfaceNamesUnique(model);
     const std::vector<GmMeshEntity> &regions = e.of(GmEntityType::Region);

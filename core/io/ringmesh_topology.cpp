@@ -9,6 +9,9 @@
 #include <set>
 #include <sstream>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -52,7 +55,11 @@ std::string list(const std::set<int> &ids)
 std::vector<ValidityProblem> compareRingMeshTopology(const std::string &path, const Model &model)
 {
     if (!model.hasTopology())
-        throw InputError("compareRingMeshTopology needs the recovered topology (recoverTopology)");
+        throw InputError(MessageText{
+            QT_TRANSLATE_NOOP(
+                "stratamesh::Core",
+                "compareRingMeshTopology needs the recovered topology (recoverTopology)"),
+            {}});
     const GmArchive gm(path);
     const GmMeshEntities &e = gm.entities();
     std::vector<ValidityProblem> problems;
@@ -72,8 +79,11 @@ std::vector<ValidityProblem> compareRingMeshTopology(const std::string &path, co
         const std::string where = gm.where(gmEntryName(GmEntityType::Corner, c));
         const std::vector<Vec3> p = geogramPoints(gm.geogram(GmEntityType::Corner, c), where);
         if (p.size() != 1)
-            throw FileError(where, 0,
-                            "a corner has one vertex, this one has " + std::to_string(p.size()));
+            throw FileError(
+                where, 0,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "a corner has one vertex, this one has %1"),
+                            {std::to_string(p.size())}});
         cornerPoint.push_back(p[0]);
     }
 
@@ -96,7 +106,8 @@ std::vector<ValidityProblem> compareRingMeshTopology(const std::string &path, co
         const std::string where = gm.where(gmEntryName(GmEntityType::Line, l));
         const std::vector<Vec3> points = geogramPoints(gm.geogram(GmEntityType::Line, l), where);
         if (points.empty())
-            throw FileError(where, 0, "a line without vertices");
+            throw FileError(where, 0,
+                            QT_TRANSLATE_NOOP("stratamesh::Core", "a line without vertices"));
         const std::string name = describe("Line " + std::to_string(l), points);
         const auto it = recovered.find(pointSet(points));
         if (it == recovered.end()) {

@@ -14,6 +14,9 @@
 #include <set>
 #include <sstream>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -53,10 +56,14 @@ public:
           m_regionCells(std::move(regionCells))
     {
         if (m.surfaces.empty())
-            throw InputError("the model '" + m.name + "' has no surface to write");
+            throw InputError(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "the model '%1' has no surface to write"),
+                {m.name}});
         for (const Surface &s : m.surfaces)
             if (s.triangles.empty())
-                throw InputError("surface '" + s.name + "' has no triangle");
+                throw InputError(MessageText{
+                    QT_TRANSLATE_NOOP("stratamesh::Core", "surface '%1' has no triangle"),
+                    {s.name}});
         buildLines();
         buildInterfaces();
         countSidesOnLines();
@@ -297,8 +304,10 @@ void writeRingMeshVolume(const VolumeMesh &mesh, const std::string &path)
     for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
         const int r = mesh.cellRegion[c];
         if (r < 0)
-            throw InputError("cell " + std::to_string(c)
-                             + " has no region: a GeoModel stores cells per region");
+            throw InputError(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "cell %1 has no region: a GeoModel stores cells per region"),
+                {std::to_string(c)}});
         Cell cell = mesh.cells[c];
         for (int k = 0; k < cell.size(); ++k) {
             const auto [it, inserted] =

@@ -20,6 +20,9 @@
 #include <cctype>
 #include <fstream>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -58,13 +61,17 @@ PlyCounts binaryPlyCounts(const std::string &path)
         const std::size_t space = line.find(' ', 8);
         long long n = 0;
         if (space == std::string::npos || !parseInt(line.substr(space + 1), n) || n < 0)
-            throw FileError(path, number, "bad element count");
+            throw FileError(path, number,
+                            QT_TRANSLATE_NOOP("stratamesh::Core", "bad element count"));
         const std::string name = line.substr(8, space - 8);
         if (n > size / (name == "face" ? 4 : 3))
-            throw FileError(path, number,
-                            "element " + name + " declares " + std::to_string(n)
-                                + " items, more than the file of " + std::to_string(size)
-                                + " bytes can hold");
+            throw FileError(
+                path, number,
+                MessageText{
+                    QT_TRANSLATE_NOOP(
+                        "stratamesh::Core",
+                        "element %1 declares %2 items, more than the file of %3 bytes can hold"),
+                    {name, std::to_string(n), std::to_string(size)}});
         if (name == "vertex")
             counts.vertices = n;
         else if (name == "face")
@@ -79,18 +86,25 @@ VolumeMesh readWithOpenMesh(const std::string &path)
     DoubleTriMesh mesh;
     OpenMesh::IO::Options options;
     if (!OpenMesh::IO::read_mesh(mesh, path, options))
-        throw FileError(path, 0, "OpenMesh could not read this file as a surface mesh");
+        throw FileError(path, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "OpenMesh could not read this file as a surface mesh"));
     // OpenMesh duplicates the vertices around a non-manifold edge and drops faces it cannot add:
     // either would change the surface silently.
     if (static_cast<long long>(mesh.n_vertices()) != declared.vertices)
-        throw FileError(path, 0,
-                        "non-manifold faces: " + std::to_string(declared.vertices)
-                            + " vertices in the file, " + std::to_string(mesh.n_vertices())
-                            + " after reading (save as ASCII PLY, which keeps them)");
+        throw FileError(
+            path, 0,
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "non-manifold faces: %1 vertices in the file, %2 after "
+                                          "reading (save as ASCII PLY, which keeps them)"),
+                        {std::to_string(declared.vertices), std::to_string(mesh.n_vertices())}});
     if (static_cast<long long>(mesh.n_faces()) < declared.faces)
-        throw FileError(path, 0,
-                        std::to_string(declared.faces - static_cast<long long>(mesh.n_faces()))
-                            + " face(s) could not be added (degenerate or non-manifold faces)");
+        throw FileError(
+            path, 0,
+            MessageText{QT_TRANSLATE_NOOP(
+                            "stratamesh::Core",
+                            "%1 face(s) could not be added (degenerate or non-manifold faces)"),
+                        {std::to_string(declared.faces - static_cast<long long>(mesh.n_faces()))}});
     VolumeMesh m = oneSurface(path);
     for (const auto v : mesh.vertices()) {
         const auto p = mesh.point(v);
@@ -133,16 +147,16 @@ VolumeMesh readAsciiPly(const std::string &path)
             break;
         if (t[0] == "element") {
             if (t.size() < 3)
-                c.fail("expected \"element NAME COUNT\"");
+                c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "expected \"element NAME COUNT\""));
             // Each item takes a line of at least two bytes.
             const long long n = c.toCount(t[2], "the element count", 2);
             elements.push_back({std::string(t[1]), n, {}});
         } else if (t[0] == "property") {
             if (elements.empty())
-                c.fail("property before any element");
+                c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "property before any element"));
             const bool list = t.size() >= 5 && t[1] == "list";
             if (t.size() < 3)
-                c.fail("expected \"property TYPE NAME\"");
+                c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "expected \"property TYPE NAME\""));
             elements.back().properties.push_back({std::string(t.back()), list});
         }
     }
@@ -172,18 +186,23 @@ VolumeMesh readAsciiPly(const std::string &path)
             std::vector<int> face;
             for (std::size_t p = 0; p < e.properties.size(); ++p) {
                 if (k >= t.size())
-                    c.fail("line too short for the properties of " + e.name);
+                    c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                         "line too short for the properties of %1"),
+                                       {e.name}});
                 if (e.properties[p].list) {
                     const int n = c.toInt(t[k++], "a list length");
                     if (n < 0 || k + static_cast<std::size_t>(n) > t.size())
-                        c.fail("line too short for its list");
+                        c.fail(
+                            QT_TRANSLATE_NOOP("stratamesh::Core", "line too short for its list"));
                     for (int j = 0; j < n; ++j) {
                         const int v = c.toInt(t[k++], "a vertex index");
                         if (static_cast<int>(p) != indices)
                             continue;
                         if (v < 0 || v >= vertexCount)
-                            c.fail("face uses vertex " + std::to_string(v) + " of "
-                                   + std::to_string(vertexCount) + " (numbered from 0)");
+                            c.fail(MessageText{
+                                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                  "face uses vertex %1 of %2 (numbered from 0)"),
+                                {std::to_string(v), std::to_string(vertexCount)}});
                         face.push_back(v);
                     }
                 } else {
@@ -197,14 +216,14 @@ VolumeMesh readAsciiPly(const std::string &path)
             }
             if (e.name == "vertex") {
                 if (x < 0 || y < 0 || z < 0)
-                    c.fail("vertices without x, y and z");
+                    c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "vertices without x, y and z"));
                 if (const std::string problem = pointProblem(point); !problem.empty())
                     c.fail("vertex " + std::to_string(m.points.size())
                            + " (numbered from 0, as faces index it): " + problem);
                 m.points.push_back(point);
             } else if (e.name == "face" && indices >= 0) {
                 if (face.size() < 3)
-                    c.fail("a face needs three vertices");
+                    c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "a face needs three vertices"));
                 for (std::size_t j = 1; j + 1 < face.size(); ++j) { // fan for polygons
                     m.triangles.push_back({face[0], face[j], face[j + 1]});
                     m.triangleSurface.push_back(0);
@@ -231,19 +250,26 @@ std::string plyFormat(const std::string &path)
         return true;
     };
     if (!next() || line != "ply")
-        throw FileError(path, 1, "not a PLY file: the first line is not \"ply\"");
+        throw FileError(
+            path, 1,
+            QT_TRANSLATE_NOOP("stratamesh::Core", "not a PLY file: the first line is not \"ply\""));
     while (next() && line != "end_header") {
         if (line.rfind("format ", 0) != 0)
             continue;
         format = line.substr(7, line.find(' ', 7) == std::string::npos ? std::string::npos
                                                                        : line.find(' ', 7) - 7);
         if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
-            throw FileError(path, number, "unknown PLY format \"" + format + "\"");
+            throw FileError(
+                path, number,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "unknown PLY format \"%1\""),
+                            {format}});
     }
     if (line != "end_header")
-        throw FileError(path, number, "the PLY header has no end_header");
+        throw FileError(path, number,
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "the PLY header has no end_header"));
     if (format.empty())
-        throw FileError(path, number, "the PLY header has no format line");
+        throw FileError(path, number,
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "the PLY header has no format line"));
     return format;
 }
 
@@ -252,7 +278,7 @@ std::string plyFormat(const std::string &path)
 VolumeMesh readStlOrPly(const std::string &path)
 {
     if (!std::ifstream(path).good())
-        throw FileError(path, 0, "cannot open the file");
+        throw FileError(path, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "cannot open the file"));
     std::string ext = path.substr(std::min(path.size(), path.find_last_of('.')));
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char ch) { return char(std::tolower(ch)); });
@@ -260,11 +286,11 @@ VolumeMesh readStlOrPly(const std::string &path)
                    : plyFormat(path) == "ascii" ? readAsciiPly(path)
                                                 : readWithOpenMesh(path);
     if (m.triangles.empty())
-        throw FileError(path, 0, "no triangle in the file");
+        throw FileError(path, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "no triangle in the file"));
     try {
         validateMesh(m);
     } catch (const InputError &e) {
-        throw FileError(path, 0, e.what());
+        throw FileError(path, 0, causeOf(e));
     }
     return m;
 }

@@ -12,6 +12,9 @@
 #include <iterator>
 #include <unordered_map>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -66,15 +69,16 @@ VolumeMesh readAsciiStl(const std::string &path)
     Welder welder(m);
     c.nextNonBlank("solid");
     if (c.tokens().front() != "solid")
-        c.fail("an ASCII STL file starts with \"solid\"");
+        c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "an ASCII STL file starts with \"solid\""));
     bool inSolid = true;
     long long facet = 0;
     auto expect = [&](const char *word, std::size_t tokens) {
         c.nextNonBlank(word);
         const auto t = c.tokens();
         if (t.front() != word || t.size() < tokens)
-            c.fail(std::string("expected \"") + word + "\", found \"" + std::string(c.line())
-                   + "\"");
+            c.fail(
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "expected \"%1\", found \"%2\""),
+                            {word, std::string(c.line())}});
         return t;
     };
     while (c.next()) {
@@ -83,7 +87,9 @@ VolumeMesh readAsciiStl(const std::string &path)
             continue;
         if (!inSolid) {
             if (t.front() != "solid")
-                c.fail("text after endsolid: \"" + std::string(c.line()) + "\"");
+                c.fail(MessageText{
+                    QT_TRANSLATE_NOOP("stratamesh::Core", "text after endsolid: \"%1\""),
+                    {std::string(c.line())}});
             inSolid = true;
             continue;
         }
@@ -92,7 +98,10 @@ VolumeMesh readAsciiStl(const std::string &path)
             continue;
         }
         if (t.front() != "facet")
-            c.fail("expected \"facet\" or \"endsolid\", found \"" + std::string(c.line()) + "\"");
+            c.fail(
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "expected \"facet\" or \"endsolid\", found \"%1\""),
+                            {std::string(c.line())}});
         ++facet;
         expect("outer", 2);
         Triangle tri{};
@@ -106,17 +115,26 @@ VolumeMesh readAsciiStl(const std::string &path)
         }
         c.nextNonBlank("endloop");
         if (c.tokens().front() == "vertex")
-            c.fail("facet " + std::to_string(facet) + " has more than three vertices");
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "facet %1 has more than three vertices"),
+                {std::to_string(facet)}});
         if (c.tokens().front() != "endloop")
-            c.fail("expected \"endloop\", found \"" + std::string(c.line()) + "\"");
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "expected \"endloop\", found \"%1\""),
+                {std::string(c.line())}});
         expect("endfacet", 1);
         if (degenerate(tri))
-            c.fail("facet " + std::to_string(facet) + " has two equal corners (degenerate facet)");
+            c.fail(
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "facet %1 has two equal corners (degenerate facet)"),
+                            {std::to_string(facet)}});
         m.triangles.push_back(tri);
         m.triangleSurface.push_back(0);
     }
     if (inSolid)
-        throw FileError(path, c.lineNumber() + 1, "file ends before endsolid (truncated file?)");
+        throw FileError(
+            path, c.lineNumber() + 1,
+            QT_TRANSLATE_NOOP("stratamesh::Core", "file ends before endsolid (truncated file?)"));
     return m;
 }
 
@@ -133,10 +151,13 @@ VolumeMesh readBinaryStl(const std::string &path, const std::string &data)
     std::memcpy(&count, data.data() + 80, sizeof count);
     const std::size_t expected = 84 + 50 * std::size_t(count);
     if (data.size() != expected)
-        throw FileError(path, 0,
-                        "binary STL of " + std::to_string(data.size())
-                            + " bytes, its header announces " + std::to_string(count) + " facets ("
-                            + std::to_string(expected) + " bytes): truncated or not an STL file");
+        throw FileError(
+            path, 0,
+            MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "binary STL of %1 bytes, its header announces %2 facets (%3 "
+                                  "bytes): truncated or not an STL file"),
+                {std::to_string(data.size()), std::to_string(count), std::to_string(expected)}});
     VolumeMesh m = oneSurface(path);
     Welder welder(m);
     m.triangles.reserve(count);
@@ -151,9 +172,11 @@ VolumeMesh readBinaryStl(const std::string &path, const std::string &data)
             tri[k] = welder.vertex(p);
         }
         if (degenerate(tri))
-            throw FileError(path, 0,
-                            "facet " + std::to_string(f + 1)
-                                + " has two equal corners (degenerate facet)");
+            throw FileError(
+                path, 0,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "facet %1 has two equal corners (degenerate facet)"),
+                            {std::to_string(f + 1)}});
         m.triangles.push_back(tri);
         m.triangleSurface.push_back(0);
     }
@@ -166,7 +189,7 @@ VolumeMesh readStl(const std::string &path)
 {
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw FileError(path, 0, "cannot open the file");
+        throw FileError(path, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "cannot open the file"));
     const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const std::size_t first = data.find_first_not_of(" \t\r\n");
     const bool solid = first != std::string::npos && data.compare(first, 5, "solid") == 0;
@@ -178,9 +201,10 @@ VolumeMesh readStl(const std::string &path)
             return readBinaryStl(path, data);
     }
     if (!solid)
-        throw FileError(
-            path, 0,
-            "neither an ASCII STL (starting with \"solid\") nor a binary STL (84 bytes or more)");
+        throw FileError(path, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "neither an ASCII STL (starting with \"solid\") "
+                                          "nor a binary STL (84 bytes or more)"));
     return readAsciiStl(path);
 }
 

@@ -23,6 +23,9 @@
 #include <sstream>
 #include <vector>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -81,12 +84,16 @@ Vec3 readPoint(const std::vector<std::string_view> &w, std::size_t first, const 
                int line)
 {
     if (w.size() < first + 3)
-        throw FileError(path, line, "a vertex needs three coordinates");
+        throw FileError(path, line,
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "a vertex needs three coordinates"));
     Vec3 p;
     for (int k = 0; k < 3; ++k) {
         const std::string_view token = w[first + k];
         if (!parseDouble(token, p[k]))
-            throw FileError(path, line, "coordinate '" + std::string(token) + "' is not a number");
+            throw FileError(path, line,
+                            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                          "coordinate '%1' is not a number"),
+                                        {std::string(token)}});
         if (const std::string problem = coordinateProblem(p[k]); !problem.empty())
             throw FileError(path, line, "coordinate '" + std::string(token) + "' " + problem);
     }
@@ -102,11 +109,16 @@ long long checkObjIndex(std::string_view token, std::size_t vertices, const std:
     const std::string_view index = token.substr(0, token.find('/'));
     long long v = 0;
     if (!parseInt(index, v))
-        throw FileError(path, line, "face vertex '" + std::string(token) + "' is not an index");
+        throw FileError(
+            path, line,
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "face vertex '%1' is not an index"),
+                        {std::string(token)}});
     if (v == 0 || v < -static_cast<long long>(vertices))
-        throw FileError(path, line,
-                        "face uses vertex " + std::to_string(v)
-                            + " (numbered from 1, or back from -1)");
+        throw FileError(
+            path, line,
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "face uses vertex %1 (numbered from 1, or back from -1)"),
+                        {std::to_string(v)}});
     return v;
 }
 
@@ -123,7 +135,9 @@ FileScan scanObj(std::istream &in, const std::string &path)
             scan.points.push_back(readPoint(w, 1, path, line));
         } else if (w[0] == "f") {
             if (w.size() < 4)
-                throw FileError(path, line, "a face needs at least three vertices");
+                throw FileError(
+                    path, line,
+                    QT_TRANSLATE_NOOP("stratamesh::Core", "a face needs at least three vertices"));
             scan.beginFace(line);
             for (std::size_t k = 1; k < w.size(); ++k) {
                 const long long v = checkObjIndex(w[k], scan.points.size(), path, line);
@@ -138,9 +152,11 @@ FileScan scanObj(std::istream &in, const std::string &path)
         }
     }
     if (largest.first > static_cast<long long>(scan.points.size()))
-        throw FileError(path, largest.second,
-                        "face uses vertex " + std::to_string(largest.first) + ", the file defines "
-                            + std::to_string(scan.points.size()));
+        throw FileError(
+            path, largest.second,
+            MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "face uses vertex %1, the file defines %2"),
+                {std::to_string(largest.first), std::to_string(scan.points.size())}});
     scan.faceStart.push_back(scan.corners.size());
     return scan;
 }
@@ -161,53 +177,70 @@ FileScan scanOff(std::istream &in, const std::string &path)
         return false;
     };
     if (!nextWords())
-        throw FileError(path, 0, "empty file");
+        throw FileError(path, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "empty file"));
     std::string header(w[0]);
     std::transform(header.begin(), header.end(), header.begin(),
                    [](unsigned char c) { return char(std::toupper(c)); });
     if (header.size() < 3 || header.compare(header.size() - 3, 3, "OFF") != 0)
-        throw FileError(path, line, "not an OFF file: the first word is not OFF");
+        throw FileError(
+            path, line,
+            QT_TRANSLATE_NOOP("stratamesh::Core", "not an OFF file: the first word is not OFF"));
     if (header.find('4') != std::string::npos)
-        throw FileError(path, line, "only 3D OFF files are supported");
+        throw FileError(path, line,
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "only 3D OFF files are supported"));
     std::size_t countsAt = 1;
     if (w.size() > 1 && (w[1] == "BINARY" || w[1] == "binary"))
-        throw FileError(path, line, "binary OFF files are not supported");
+        throw FileError(
+            path, line,
+            QT_TRANSLATE_NOOP("stratamesh::Core", "binary OFF files are not supported"));
     if (w.size() < 3) {
         if (!nextWords())
-            throw FileError(path, line, "file ends before the vertex and face counts");
+            throw FileError(path, line,
+                            QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "file ends before the vertex and face counts"));
         countsAt = 0;
     }
     long long nv = 0, nf = 0;
     if (w.size() < countsAt + 2)
-        throw FileError(path, line, "expected the vertex and face counts");
+        throw FileError(
+            path, line,
+            QT_TRANSLATE_NOOP("stratamesh::Core", "expected the vertex and face counts"));
     if (!parseInt(w[countsAt], nv) || !parseInt(w[countsAt + 1], nf) || nv < 0 || nf < 0)
-        throw FileError(path, line, "invalid vertex and face counts");
+        throw FileError(path, line,
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "invalid vertex and face counts"));
     for (long long i = 0; i < nv; ++i) {
         if (!nextWords())
             throw FileError(path, line,
-                            "file ends after " + std::to_string(i) + " of " + std::to_string(nv)
-                                + " vertices");
+                            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                          "file ends after %1 of %2 vertices"),
+                                        {std::to_string(i), std::to_string(nv)}});
         scan.points.push_back(readPoint(w, 0, path, line));
     }
     for (long long i = 0; i < nf; ++i) {
         if (!nextWords())
-            throw FileError(path, line,
-                            "file ends after " + std::to_string(i) + " of " + std::to_string(nf)
-                                + " faces");
+            throw FileError(
+                path, line,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "file ends after %1 of %2 faces"),
+                            {std::to_string(i), std::to_string(nf)}});
         long long k = 0;
         if (!parseInt(w[0], k) || k < 3)
-            throw FileError(path, line, "a face needs at least three vertices");
+            throw FileError(
+                path, line,
+                QT_TRANSLATE_NOOP("stratamesh::Core", "a face needs at least three vertices"));
         if (k > static_cast<long long>(w.size()) - 1)
-            throw FileError(path, line,
-                            "a face of " + std::to_string(k) + " vertices lists "
-                                + std::to_string(w.size() - 1));
+            throw FileError(
+                path, line,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "a face of %1 vertices lists %2"),
+                            {std::to_string(k), std::to_string(w.size() - 1)}});
         scan.beginFace(line);
         for (long long j = 1; j <= k; ++j) {
             long long v = 0;
             if (!parseInt(w[std::size_t(j)], v) || v < 0 || v >= nv)
-                throw FileError(path, line,
-                                "face vertex '" + std::string(w[std::size_t(j)])
-                                    + "' is not an index from 0 to " + std::to_string(nv - 1));
+                throw FileError(
+                    path, line,
+                    MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                  "face vertex '%1' is not an index from 0 to %2"),
+                                {std::string(w[std::size_t(j)]), std::to_string(nv - 1)}});
             scan.corners.push_back(int(v)); // v < nv, and nv vertices were read
         }
         scan.triangles += std::size_t(k - 2);
@@ -222,17 +255,19 @@ Model readSurfaceMesh(const std::string &path)
 {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
-        throw FileError(path, 0, "cannot open the file (missing or not a regular file)");
+        throw FileError(path, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "cannot open the file (missing or not a regular file)"));
     const std::string ext = fileExtension(path);
     if (ext != ".obj" && ext != ".off")
-        throw FileError(path, 0, "not an OBJ or OFF file");
+        throw FileError(path, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "not an OBJ or OFF file"));
 
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw FileError(path, 0, "cannot open the file");
+        throw FileError(path, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "cannot open the file"));
     const FileScan scan = ext == ".obj" ? scanObj(in, path) : scanOff(in, path);
     if (scan.triangles == 0)
-        throw FileError(path, 0, "no triangle in the file");
+        throw FileError(path, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "no triangle in the file"));
 
     // OpenMesh refuses a triangle that would make an edge carry three faces, or two faces run
     // the same way along it; its file readers would cut the surface there instead.
@@ -256,17 +291,21 @@ Model readSurfaceMesh(const std::string &path)
         std::sort(sorted.begin(), sorted.end());
         if (const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
             twice != sorted.end())
-            throw FileError(path, line,
-                            "the face uses vertex " + std::to_string(*twice + 1)
-                                + " twice (a degenerate face)");
+            throw FileError(
+                path, line,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "the face uses vertex %1 twice (a degenerate face)"),
+                            {std::to_string(*twice + 1)}});
         for (std::size_t i = 1; i + 1 < k; ++i) { // a fan, as OpenMesh's readers split polygons
             const int t[3] = {c[0], c[i], c[i + 1]};
             if (!mesh.add_face(OpenMesh::VertexHandle(t[0]), OpenMesh::VertexHandle(t[1]),
                                OpenMesh::VertexHandle(t[2]))
                      .is_valid())
-                throw FileError(path, line,
-                                "non-manifold faces: this face shares an edge with two other "
-                                "faces, or runs along it the same way as its neighbour");
+                throw FileError(
+                    path, line,
+                    QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "non-manifold faces: this face shares an edge with two other "
+                                      "faces, or runs along it the same way as its neighbour"));
             s.triangles.push_back(Triangle{t[0], t[1], t[2]});
         }
     }

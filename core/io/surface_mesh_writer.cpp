@@ -17,6 +17,9 @@
 #include <algorithm>
 #include <cctype>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -39,12 +42,17 @@ void writeStl(const Surface &s, const std::string &path)
     for (std::size_t t = 0; t < s.triangles.size(); ++t) {
         const Triangle &tri = s.triangles[t];
         if (!mesh.add_face(handles[tri[0]], handles[tri[1]], handles[tri[2]]).is_valid())
-            throw InputError("surface '" + s.name + "' is not manifold at triangle "
-                             + std::to_string(t) + ": OpenMesh cannot store it as STL");
+            throw InputError(MessageText{
+                QT_TRANSLATE_NOOP(
+                    "stratamesh::Core",
+                    "surface '%1' is not manifold at triangle %2: OpenMesh cannot store it as STL"),
+                {s.name, std::to_string(t)}});
     }
     writeFileAtomically(path, [&](const std::string &temporary) {
         if (!OpenMesh::IO::write_mesh(mesh, temporary, OpenMesh::IO::Options::Binary))
-            throw FileError(path, 0, "OpenMesh could not write the file");
+            throw FileError(
+                path, 0,
+                QT_TRANSLATE_NOOP("stratamesh::Core", "OpenMesh could not write the file"));
     });
 }
 
@@ -59,31 +67,42 @@ bool isSurfaceMeshFile(const std::string &path)
 void writeSurfaceMesh(const Model &model, const std::string &path, int surface)
 {
     if (!isSurfaceMeshFile(path))
-        throw FileError(path, 0,
-                        "unknown surface mesh extension '" + fileExtension(path)
-                            + "' (use .obj, .off, .stl or .ply)");
+        throw FileError(
+            path, 0,
+            MessageText{QT_TRANSLATE_NOOP(
+                            "stratamesh::Core",
+                            "unknown surface mesh extension '%1' (use .obj, .off, .stl or .ply)"),
+                        {fileExtension(path)}});
     if (surface < 0) {
         if (model.surfaces.size() != 1)
-            throw InputError("an " + fileExtension(path) + " file holds one surface and the model '"
-                             + model.name + "' has " + std::to_string(model.surfaces.size())
-                             + ": choose one");
+            throw InputError(MessageText{
+                QT_TRANSLATE_NOOP(
+                    "stratamesh::Core",
+                    "an %1 file holds one surface and the model '%2' has %3: choose one"),
+                {fileExtension(path), model.name, std::to_string(model.surfaces.size())}});
         surface = 0;
     }
     if (surface >= static_cast<int>(model.surfaces.size()))
-        throw InputError("surface " + std::to_string(surface) + " does not exist (the model has "
-                         + std::to_string(model.surfaces.size()) + ")");
+        throw InputError(MessageText{
+            QT_TRANSLATE_NOOP("stratamesh::Core", "surface %1 does not exist (the model has %2)"),
+            {std::to_string(surface), std::to_string(model.surfaces.size())}});
     const Surface &s = model.surfaces[surface];
     if (s.triangles.empty())
-        throw InputError("surface '" + s.name + "' has no triangle");
+        throw InputError(MessageText{
+            QT_TRANSLATE_NOOP("stratamesh::Core", "surface '%1' has no triangle"), {s.name}});
     for (const Vec3 &p : s.vertices)
         if (!p.allFinite())
-            throw InputError("surface '" + s.name + "' has a non-finite coordinate");
+            throw InputError(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "surface '%1' has a non-finite coordinate"),
+                {s.name}});
     for (std::size_t t = 0; t < s.triangles.size(); ++t)
         for (int v : s.triangles[t])
             if (v < 0 || v >= static_cast<int>(s.vertices.size()))
-                throw InputError("surface '" + s.name + "': triangle " + std::to_string(t)
-                                 + " uses vertex " + std::to_string(v) + " of "
-                                 + std::to_string(s.vertices.size()));
+                throw InputError(
+                    MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                  "surface '%1': triangle %2 uses vertex %3 of %4"),
+                                {s.name, std::to_string(t), std::to_string(v),
+                                 std::to_string(s.vertices.size())}});
     const std::string ext = fileExtension(path);
     if (ext == ".stl") {
         writeStl(s, path);

@@ -5,6 +5,9 @@
 
 #include <limits>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 TextCursor::TextCursor(std::string path) : m_path(std::move(path)), m_text(readFileBytes(m_path)) {}
@@ -30,7 +33,8 @@ void TextCursor::nextNonBlank(const char *expected)
         if (m_line.find_first_not_of(" \t") != std::string_view::npos)
             return;
     ++m_lineNumber;
-    fail(std::string("unexpected end of file (expected ") + expected + ")");
+    fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "unexpected end of file (expected %1)"),
+                     {expected}});
 }
 
 std::vector<std::string_view> TextCursor::tokens() const
@@ -55,7 +59,8 @@ int TextCursor::toInt(std::string_view token, const char *what) const
     long long v = 0;
     if (!parseInt(token, v) || v < std::numeric_limits<int>::min()
         || v > std::numeric_limits<int>::max())
-        fail(std::string("expected ") + what + ", found \"" + std::string(token) + "\"");
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "expected %1, found \"%2\""),
+                         {what, std::string(token)}});
     return static_cast<int>(v);
 }
 
@@ -63,11 +68,14 @@ int TextCursor::toCount(std::string_view token, const char *what, std::size_t mi
 {
     const int n = toInt(token, what);
     if (n < 0)
-        fail(std::string(what) + " is negative (" + std::to_string(n) + ")");
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 is negative (%2)"),
+                         {std::string(what), std::to_string(n)}});
     const std::size_t remaining = m_pos < m_text.size() ? m_text.size() - m_pos : 0;
     if (static_cast<std::size_t>(n) > remaining / minBytesPerItem)
-        fail(std::string(what) + " is " + std::to_string(n) + ", more than the remaining "
-             + std::to_string(remaining) + " bytes of the file can hold");
+        fail(MessageText{
+            QT_TRANSLATE_NOOP("stratamesh::Core",
+                              "%1 is %2, more than the remaining %3 bytes of the file can hold"),
+            {std::string(what), std::to_string(n), std::to_string(remaining)}});
     return n;
 }
 
@@ -75,7 +83,8 @@ double TextCursor::toDouble(std::string_view token, const char *what) const
 {
     double v = 0;
     if (!parseDouble(token, v))
-        fail(std::string("expected ") + what + ", found \"" + std::string(token) + "\"");
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "expected %1, found \"%2\""),
+                         {what, std::string(token)}});
     return v;
 }
 

@@ -29,6 +29,10 @@ public:
     {
         throw FileError(m_path, m_lineNumber, cause);
     }
+    [[noreturn]] void fail(const MessageText &cause) const
+    {
+        throw FileError(m_path, m_lineNumber, cause);
+    }
     int toInt(std::string_view token, const char *what) const;
     double toDouble(std::string_view token, const char *what) const;
     // A count the file declares for what follows (nodes, elements): refused when negative or

@@ -10,6 +10,9 @@
 #include <map>
 #include <unordered_map>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -69,9 +72,12 @@ public:
             const std::string key = upper(t[0]);
             if (!started) {
                 if (key != "GOCAD")
-                    c.fail("not a Gocad file (expected \"GOCAD TSolid 1\")");
+                    c.fail(QT_TRANSLATE_NOOP("stratamesh::Core",
+                                             "not a Gocad file (expected \"GOCAD TSolid 1\")"));
                 if (t.size() < 2 || (upper(t[1]) != "TSOLID" && upper(t[1]) != "LIGHTTSOLID"))
-                    c.fail("expected a TSolid object, found \"" + trim(c.line()) + "\"");
+                    c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                         "expected a TSolid object, found \"%1\""),
+                                       {trim(c.line())}});
                 light = upper(t[1]) == "LIGHTTSOLID";
                 started = true;
                 continue;
@@ -105,7 +111,7 @@ public:
             // Everything else (properties, KEYVERTICES, MODEL_REGION, CRS names...) is not needed.
         }
         if (!started)
-            c.fail("empty file: not a Gocad TSolid");
+            c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "empty file: not a Gocad TSolid"));
         return finish();
     }
 
@@ -116,7 +122,7 @@ private:
         const int start = c.lineNumber();
         std::size_t open = line.find('{');
         if (open == std::string_view::npos)
-            c.fail("HEADER without '{'");
+            c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "HEADER without '{'"));
         std::string rest(line.substr(open + 1));
         for (;;) {
             const std::size_t close = rest.find('}');
@@ -124,7 +130,7 @@ private:
             if (close != std::string::npos)
                 return;
             if (!c.next())
-                c.fail("HEADER block not closed by '}'");
+                c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "HEADER block not closed by '}'"));
             refuseEndInBlock("HEADER block", start);
             rest = std::string(c.line());
         }
@@ -157,7 +163,7 @@ private:
         const int start = c.lineNumber();
         while (c.line().find('}') == std::string_view::npos) {
             if (!c.next())
-                c.fail("block not closed by '}'");
+                c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "block not closed by '}'"));
             refuseEndInBlock("{ } block", start);
         }
     }
@@ -168,8 +174,10 @@ private:
         const std::string word = trim(c.line());
         const std::string first = word.substr(0, word.find_first_of(" \t"));
         if (first == "END" || first == "GOCAD")
-            c.fail(std::string(block) + " started at line " + std::to_string(start)
-                   + " is not closed by '}' before " + first);
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "%1 started at line %2 is not closed by '}' before %3"),
+                {std::string(block), std::to_string(start), first}});
     }
 
     int regionIndex(const std::string &name)
@@ -191,32 +199,41 @@ private:
     {
         long long v = 0;
         if (!parseInt(token, v))
-            c.fail(std::string("expected ") + what + ", found \"" + token + "\"");
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "expected %1, found \"%2\""),
+                               {what, token}});
         return v;
     }
 
     void addVertex(const std::vector<std::string> &t)
     {
         if (t.size() < 5)
-            c.fail(t[0] + " needs an id and three coordinates");
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "%1 needs an id and three coordinates"),
+                {t[0]}});
         const long long vid = id(t[1], "a vertex id");
         const Vec3 p(c.toDouble(t[2], "x"), c.toDouble(t[3], "y"), c.toDouble(t[4], "z"));
         if (const std::string problem = pointProblem(p); !problem.empty())
             c.fail(t[0] + " " + t[1] + ": " + problem);
         if (!vertices.emplace(vid, Vertex{static_cast<int>(mesh.points.size()), volume}).second)
-            c.fail("vertex id " + std::to_string(vid) + " is used twice");
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "vertex id %1 is used twice"),
+                               {std::to_string(vid)}});
         mesh.points.push_back(p);
     }
 
     void addAtom(const std::vector<std::string> &t)
     {
         if (t.size() < 3)
-            c.fail(t[0] + " needs an id and the id of the vertex it shares");
+            c.fail(
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "%1 needs an id and the id of the vertex it shares"),
+                            {t[0]}});
         const long long vid = id(t[1], "a vertex id"), ref = id(t[2], "a vertex id");
         auto it = vertices.find(ref);
         if (it == vertices.end())
-            c.fail(t[0] + " " + std::to_string(vid) + " refers to vertex " + std::to_string(ref)
-                   + ", which is not defined before");
+            c.fail(MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "%1 %2 refers to vertex %3, which is not defined before"),
+                {t[0], std::to_string(vid), std::to_string(ref)}});
         Vertex v = it->second;
         // Same TVOLUME: a crack, i.e. a distinct point at the same place.
         if (!light && v.volume == volume) {
@@ -224,7 +241,8 @@ private:
             mesh.points.push_back(mesh.points[it->second.point]);
         }
         if (!vertices.emplace(vid, v).second)
-            c.fail("vertex id " + std::to_string(vid) + " is used twice");
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "vertex id %1 is used twice"),
+                               {std::to_string(vid)}});
     }
 
     int point(const std::string &token)
@@ -232,21 +250,23 @@ private:
         const long long vid = id(token, "a vertex id");
         auto it = vertices.find(vid);
         if (it == vertices.end())
-            c.fail("vertex " + std::to_string(vid) + " is not defined");
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "vertex %1 is not defined"),
+                               {std::to_string(vid)}});
         return it->second.point;
     }
 
     void addTetra(const std::vector<std::string> &t)
     {
         if (t.size() < 5)
-            c.fail("TETRA needs four vertex ids");
+            c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "TETRA needs four vertex ids"));
         Cell cell;
         for (int k = 0; k < 4; ++k) // in file order, so errors name the first bad id
             cell.nodes[k] = point(t[static_cast<std::size_t>(k) + 1]);
         for (int i = 0; i < 4; ++i)
             for (int j = 0; j < i; ++j)
                 if (cell.nodes[i] == cell.nodes[j])
-                    c.fail("TETRA uses the same vertex twice");
+                    c.fail(
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "TETRA uses the same vertex twice"));
         mesh.cells.push_back(cell);
         mesh.cellRegion.push_back(currentRegion);
         lastTetraLine = c.lineNumber();
@@ -274,14 +294,14 @@ private:
     void addTriangle(const std::vector<std::string> &t)
     {
         if (!inModel || mesh.surfaces.empty())
-            c.fail("TRGL outside a MODEL TFACE");
+            c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "TRGL outside a MODEL TFACE"));
         if (t.size() < 4)
-            c.fail("TRGL needs three vertex ids");
+            c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "TRGL needs three vertex ids"));
         Triangle tri;
         for (int k = 0; k < 3; ++k)
             tri[k] = point(t[static_cast<std::size_t>(k) + 1]);
         if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
-            c.fail("TRGL uses the same vertex twice");
+            c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "TRGL uses the same vertex twice"));
         mesh.triangles.push_back(tri);
         mesh.triangleSurface.push_back(static_cast<int>(mesh.surfaces.size()) - 1);
     }
@@ -315,7 +335,7 @@ private:
         try {
             validateMesh(mesh);
         } catch (const InputError &e) {
-            throw FileError(c.path(), 0, e.what());
+            throw FileError(c.path(), 0, causeOf(e));
         }
         return std::move(mesh);
     }

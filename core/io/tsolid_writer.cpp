@@ -6,6 +6,9 @@
 
 #include <map>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -29,13 +32,18 @@ void writeGocadTSolid(const VolumeMesh &mesh, const std::string &path)
 {
     validateMesh(mesh);
     if (mesh.cells.empty())
-        throw InputError("a TSolid needs tetrahedra: the mesh '" + mesh.name + "' has no cell");
+        throw InputError(
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "a TSolid needs tetrahedra: the mesh '%1' has no cell"),
+                        {mesh.name}});
     const std::size_t others = mesh.cells.size() - mesh.countCells(CellType::Tet);
     if (others > 0)
-        throw InputError("a TSolid holds tetrahedra only: the mesh '" + mesh.name + "' has "
-                         + std::to_string(mesh.countCells(CellType::Prism)) + " prisms and "
-                         + std::to_string(mesh.countCells(CellType::Pyramid))
-                         + " pyramids (use .vtu or .msh)");
+        throw InputError(
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "a TSolid holds tetrahedra only: the mesh '%1' has %2 "
+                                          "prisms and %3 pyramids (use .vtu or .msh)"),
+                        {mesh.name, std::to_string(mesh.countCells(CellType::Prism)),
+                         std::to_string(mesh.countCells(CellType::Pyramid))}});
 
     // Regions in order, untagged cells last in a volume of their own.
     std::vector<std::string> volumeNames = mesh.regionNames;

@@ -8,6 +8,9 @@
 #include <limits>
 #include <locale.h>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -296,9 +299,11 @@ std::size_t needBytes(VtkLegacyCursor &in, const VtkValuesAt &at, long long coun
 void needText(VtkLegacyCursor &in, const VtkValuesAt &at, long long count)
 {
     if (count < 0 || static_cast<unsigned long long>(count) > in.remaining())
-        in.fail(at.headerLine, at.what + " declares " + std::to_string(count)
-                                   + " values, more than the file of "
-                                   + std::to_string(in.fileSize()) + " bytes can hold");
+        in.fail(at.headerLine,
+                MessageText{QT_TRANSLATE_NOOP(
+                                "stratamesh::Core",
+                                "%1 declares %2 values, more than the file of %3 bytes can hold"),
+                            {at.what, std::to_string(count), std::to_string(in.fileSize())}});
 }
 
 // Reads `count` ASCII tokens through `take(token, index)`, which returns an empty string or why
@@ -310,23 +315,29 @@ void readTokens(VtkLegacyCursor &in, const VtkValuesAt &at, long long count, Tak
     for (long long i = 0; i < count; ++i) {
         const std::string_view token = in.token();
         if (token.empty())
-            in.fail(last, at.what + " declares " + std::to_string(count)
-                              + " values, the file ends after " + std::to_string(i));
+            in.fail(last,
+                    MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                  "%1 declares %2 values, the file ends after %3"),
+                                {at.what, std::to_string(count), std::to_string(i)}});
         const std::string problem = take(token, i);
         if (!problem.empty()) {
             const bool word = (token[0] >= 'A' && token[0] <= 'Z') || token[0] == '_'
                               || (token[0] >= 'a' && token[0] <= 'z');
             if (word)
-                in.fail(in.tokenLine(), at.what + " declares " + std::to_string(count)
-                                            + " values, \"" + vtkPrintable(token)
-                                            + "\" comes after " + std::to_string(i));
+                in.fail(
+                    in.tokenLine(),
+                    MessageText{
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "%1 declares %2 values, \"%3\" comes after %4"),
+                        {at.what, std::to_string(count), vtkPrintable(token), std::to_string(i)}});
             in.fail(in.tokenLine(), at.what + " value '" + vtkPrintable(token) + "' " + problem);
         }
         last = in.tokenLine();
     }
     if (count > 0 && !in.restOfLineBlank())
-        in.fail(last,
-                at.what + " declares " + std::to_string(count) + " values, the line holds more");
+        in.fail(last, MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                    "%1 declares %2 values, the line holds more"),
+                                  {at.what, std::to_string(count)}});
 }
 
 } // namespace
@@ -406,24 +417,31 @@ std::vector<std::string> readVtkStrings(VtkLegacyCursor &in, const VtkValuesAt &
 {
     // A string takes one byte at least: its length in BINARY, its end of line in ASCII.
     if (count < 0 || static_cast<unsigned long long>(count) > in.remaining())
-        in.fail(at.headerLine, at.what + " declares " + std::to_string(count)
-                                   + " strings, more than the file of "
-                                   + std::to_string(in.fileSize()) + " bytes can hold");
+        in.fail(at.headerLine,
+                MessageText{QT_TRANSLATE_NOOP(
+                                "stratamesh::Core",
+                                "%1 declares %2 strings, more than the file of %3 bytes can hold"),
+                            {at.what, std::to_string(count), std::to_string(in.fileSize())}});
     std::vector<std::string> strings;
     strings.reserve(static_cast<std::size_t>(count));
     for (long long i = 0; i < count; ++i) {
         if (!at.binary) {
             std::string_view text;
             if (!in.line(text))
-                in.fail(in.tokenLine(), at.what + " declares " + std::to_string(count)
-                                            + " strings, the file ends after " + std::to_string(i));
+                in.fail(
+                    in.tokenLine(),
+                    MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                  "%1 declares %2 strings, the file ends after %3"),
+                                {at.what, std::to_string(count), std::to_string(i)}});
             strings.push_back(vtkDecodedName(text));
             continue;
         }
         // VTK's length prefix: the top two bits of the first byte say how many bytes it has.
         auto cut = [&] {
-            in.fail(at.headerLine, at.what + " data is cut short in string " + std::to_string(i + 1)
-                                       + " of " + std::to_string(count));
+            in.fail(at.headerLine,
+                    MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                  "%1 data is cut short in string %2 of %3"),
+                                {at.what, std::to_string(i + 1), std::to_string(count)}});
         };
         if (in.remaining() < 1)
             cut();

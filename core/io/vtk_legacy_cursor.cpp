@@ -5,6 +5,9 @@
 
 #include <algorithm>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -86,9 +89,10 @@ void VtkLegacyCursor::endLine(const std::string &what)
         std::size_t end = start;
         while (end < m_text.size() && !isSpace(m_text[end]))
             ++end;
-        fail(m_line, what + " is followed by '"
-                         + vtkPrintable(std::string_view(m_text).substr(start, end - start))
-                         + "' on its line");
+        fail(
+            m_line,
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 is followed by '%2' on its line"),
+                        {what, vtkPrintable(std::string_view(m_text).substr(start, end - start))}});
     }
     const std::size_t end = m_text.find('\n', m_pos);
     moveTo(end == std::string::npos ? m_text.size() : end + 1);
@@ -102,6 +106,11 @@ std::string_view VtkLegacyCursor::bytes(std::size_t n)
 }
 
 void VtkLegacyCursor::fail(int line, const std::string &cause) const
+{
+    throw FileError(m_path, line, cause);
+}
+
+void VtkLegacyCursor::fail(int line, const MessageText &cause) const
 {
     throw FileError(m_path, line, cause);
 }

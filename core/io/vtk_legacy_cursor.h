@@ -4,6 +4,8 @@
 // '\n', binary or not).
 #pragma once
 
+#include "common/message_text.h"
+
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -40,6 +42,7 @@ public:
     std::string_view bytes(std::size_t n);
 
     [[noreturn]] void fail(int line, const std::string &cause) const;
+    [[noreturn]] void fail(int line, const MessageText &cause) const;
 
 private:
     void moveTo(std::size_t pos);

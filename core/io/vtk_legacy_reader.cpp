@@ -10,6 +10,9 @@
 #include <cstdio>
 #include <unordered_map>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -57,6 +60,7 @@ public:
 
 private:
     [[noreturn]] void fail(int line, const std::string &cause) const { m_in.fail(line, cause); }
+    [[noreturn]] void fail(int line, const MessageText &cause) const { m_in.fail(line, cause); }
 
     std::string upper(std::string_view token) const
     {
@@ -73,7 +77,9 @@ private:
         const int before = m_in.tokenLine();
         const std::string_view token = m_in.token();
         if (token.empty())
-            fail(before, "the file ends before " + what);
+            fail(before,
+                 MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "the file ends before %1"),
+                             {what}});
         return token;
     }
 
@@ -82,10 +88,13 @@ private:
         const std::string_view token = next("the counts of " + keyword);
         long long n = 0;
         if (!parseInt(token, n))
-            fail(m_in.tokenLine(),
-                 keyword + " needs a count, found \"" + vtkPrintable(token) + "\"");
+            fail(m_in.tokenLine(), MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                                 "%1 needs a count, found \"%2\""),
+                                               {keyword, vtkPrintable(token)}});
         if (n < 0)
-            fail(m_in.tokenLine(), keyword + " declares a negative count " + std::to_string(n));
+            fail(m_in.tokenLine(), MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                                 "%1 declares a negative count %2"),
+                                               {keyword, std::to_string(n)}});
         return n;
     }
 
@@ -94,11 +103,16 @@ private:
         const std::string_view token = next("the type of " + what);
         const std::optional<VtkLegacyType> t = vtkLegacyType(token);
         if (!t)
-            fail(m_in.tokenLine(), what + " has type '" + vtkPrintable(token)
-                                       + "', which is not a legacy VTK data type");
+            fail(m_in.tokenLine(),
+                 MessageText{
+                     QT_TRANSLATE_NOOP("stratamesh::Core",
+                                       "%1 has type '%2', which is not a legacy VTK data type"),
+                     {what, vtkPrintable(token)}});
         if (*t == VtkLegacyType::String && !text)
             fail(m_in.tokenLine(),
-                 what + " has type '" + vtkPrintable(token) + "': it must hold numbers");
+                 MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "%1 has type '%2': it must hold numbers"),
+                             {what, vtkPrintable(token)}});
         return *t;
     }
 
@@ -106,36 +120,49 @@ private:
     {
         std::string_view text;
         if (!m_in.line(text) || text.substr(0, 22) != "# vtk DataFile Version")
-            fail(1, "not a legacy VTK file: the first line is not \"# vtk DataFile Version x.y\"");
+            fail(
+                1,
+                QT_TRANSLATE_NOOP(
+                    "stratamesh::Core",
+                    "not a legacy VTK file: the first line is not \"# vtk DataFile Version x.y\""));
         int major = 0, minor = 0;
         const std::string version(text.substr(22));
         if (std::sscanf(version.c_str(), "%d.%d", &major, &minor) != 2)
-            fail(1, "the file version '"
-                        + vtkPrintable(version.substr(
-                            std::min(version.find_first_not_of(' '), version.size())))
-                        + "' is not x.y");
+            fail(1, MessageText{
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "the file version '%1' is not x.y"),
+                        {vtkPrintable(version.substr(
+                            std::min(version.find_first_not_of(' '), version.size())))}});
         if (major > 5 || (major == 5 && minor > 1))
-            fail(1, "file version " + std::to_string(major) + "." + std::to_string(minor)
-                        + " is newer than the 5.1 StrataMesh reads");
+            fail(1, MessageText{QT_TRANSLATE_NOOP(
+                                    "stratamesh::Core",
+                                    "file version %1.%2 is newer than the 5.1 StrataMesh reads"),
+                                {std::to_string(major), std::to_string(minor)}});
         m_version5 = major >= 5;
         if (!m_in.line(text))
-            fail(1, "the file ends before its title line");
+            fail(1, QT_TRANSLATE_NOOP("stratamesh::Core", "the file ends before its title line"));
         const std::string_view mode = next("ASCII or BINARY");
         if (vtkKeywordIs(mode, "BINARY"))
             m_binary = true;
         else if (!vtkKeywordIs(mode, "ASCII"))
             fail(m_in.tokenLine(),
-                 "expected ASCII or BINARY after the title, found \"" + vtkPrintable(mode) + "\"");
+                 MessageText{
+                     QT_TRANSLATE_NOOP("stratamesh::Core",
+                                       "expected ASCII or BINARY after the title, found \"%1\""),
+                     {vtkPrintable(mode)}});
         const std::string_view dataset = next("DATASET");
         if (!vtkKeywordIs(dataset, "DATASET"))
-            fail(m_in.tokenLine(), "expected DATASET after " + upper(mode) + ", found \""
-                                       + vtkPrintable(dataset) + "\"");
+            fail(m_in.tokenLine(),
+                 MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "expected DATASET after %1, found \"%2\""),
+                             {upper(mode), vtkPrintable(dataset)}});
         const std::string_view kind = next("the DATASET type");
         m_poly = vtkKeywordIs(kind, "POLYDATA");
         if (!m_poly && !vtkKeywordIs(kind, "UNSTRUCTURED_GRID"))
-            fail(m_in.tokenLine(), "DATASET " + vtkPrintable(kind)
-                                       + " is not read by StrataMesh (UNSTRUCTURED_GRID or "
-                                         "POLYDATA only)");
+            fail(m_in.tokenLine(),
+                 MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "DATASET %1 is not read by StrataMesh "
+                                               "(UNSTRUCTURED_GRID or POLYDATA only)"),
+                             {vtkPrintable(kind)}});
     }
 
     // Refuses a section the file gives twice rather than keep one of them.
@@ -143,7 +170,9 @@ private:
     {
         if (line)
             fail(m_in.tokenLine(),
-                 "a second " + keyword + " (the first is at line " + std::to_string(line) + ")");
+                 MessageText{
+                     QT_TRANSLATE_NOOP("stratamesh::Core", "a second %1 (the first is at line %2)"),
+                     {keyword, std::to_string(line)}});
         line = m_in.tokenLine();
     }
 
@@ -188,9 +217,11 @@ private:
     {
         const char c = token[0];
         if ((c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.')
-            fail(m_in.tokenLine(), "found \"" + vtkPrintable(token)
-                                       + "\" where a keyword belongs: the section before it holds "
-                                         "more values than it declares");
+            fail(m_in.tokenLine(),
+                 MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "found \"%1\" where a keyword belongs: the section "
+                                               "before it holds more values than it declares"),
+                             {vtkPrintable(token)}});
         const std::string known =
             !data.empty() ? std::string("SCALARS, COLOR_SCALARS, VECTORS, NORMALS, TENSORS, "
                                         "TEXTURE_COORDINATES, GLOBAL_IDS, PEDIGREE_IDS, ")
@@ -211,11 +242,17 @@ private:
         const long long n = count("POINTS");
         const VtkLegacyType t = type("POINTS", false);
         if (t == VtkLegacyType::Bit)
-            fail(m_in.tokenLine(), "POINTS has type 'bit': it must hold coordinates");
+            fail(m_in.tokenLine(),
+                 QT_TRANSLATE_NOOP("stratamesh::Core",
+                                   "POINTS has type 'bit': it must hold coordinates"));
         m_in.endLine("the POINTS line");
         if (static_cast<unsigned long long>(n) > m_in.remaining())
-            fail(line, "POINTS declares " + std::to_string(n) + " points, more than the file of "
-                           + std::to_string(m_in.fileSize()) + " bytes can hold");
+            fail(line,
+                 MessageText{
+                     QT_TRANSLATE_NOOP(
+                         "stratamesh::Core",
+                         "POINTS declares %1 points, more than the file of %2 bytes can hold"),
+                     {std::to_string(n), std::to_string(m_in.fileSize())}});
         std::vector<int> lines;
         m_data.points =
             readVtkNumbers(m_in, {m_binary, "POINTS", line}, t, 3 * n, m_binary ? nullptr : &lines);
@@ -233,16 +270,21 @@ private:
     {
         const std::string_view token = next(std::string("the ") + name + " of " + keyword);
         if (!vtkKeywordIs(token, name))
-            fail(m_in.tokenLine(), keyword + " of a version 5 file goes on with \"" + name
-                                       + " vtktypeint64\" (or vtktypeint32), found \""
-                                       + vtkPrintable(token) + "\"");
+            fail(m_in.tokenLine(),
+                 MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "%1 of a version 5 file goes on with \"%2 "
+                                               "vtktypeint64\" (or vtktypeint32), found \"%3\""),
+                             {keyword, name, vtkPrintable(token)}});
         const std::string_view t = next(std::string("the type of ") + keyword + " " + name);
         const int bytes = vtkKeywordIs(t, "VTKTYPEINT64")   ? 8
                           : vtkKeywordIs(t, "VTKTYPEINT32") ? 4
                                                             : 0;
         if (bytes == 0)
-            fail(m_in.tokenLine(), keyword + " " + name + " has type '" + vtkPrintable(t)
-                                       + "' (vtktypeint64 or vtktypeint32 expected)");
+            fail(m_in.tokenLine(),
+                 MessageText{QT_TRANSLATE_NOOP(
+                                 "stratamesh::Core",
+                                 "%1 %2 has type '%3' (vtktypeint64 or vtktypeint32 expected)"),
+                             {keyword, name, vtkPrintable(t)}});
         m_in.endLine("the " + std::string(name) + " line");
         return bytes;
     }
@@ -261,8 +303,11 @@ private:
     CellList cellList4(const std::string &keyword, CellList list, long long cells, long long size)
     {
         if (cells > size)
-            fail(list.line, keyword + " declares " + std::to_string(cells) + " cells in "
-                                + std::to_string(size) + " values: a cell takes one at least");
+            fail(list.line,
+                 MessageText{QT_TRANSLATE_NOOP(
+                                 "stratamesh::Core",
+                                 "%1 declares %2 cells in %3 values: a cell takes one at least"),
+                             {keyword, std::to_string(cells), std::to_string(size)}});
         std::vector<int> lines;
         const std::vector<long long> values = readVtkIntegers(m_in, {m_binary, keyword, list.line},
                                                               4, size, m_binary ? nullptr : &lines);
@@ -270,8 +315,12 @@ private:
         for (long long c = 0; c < cells; ++c) {
             const long long n = at < size ? values[static_cast<std::size_t>(at)] : -1;
             if (n < 0 || n > size - at - 1)
-                fail(list.line, keyword + " declares " + std::to_string(size) + " values, cell "
-                                    + std::to_string(c) + " (numbered from 0) runs past them");
+                fail(list.line,
+                     MessageText{
+                         QT_TRANSLATE_NOOP(
+                             "stratamesh::Core",
+                             "%1 declares %2 values, cell %3 (numbered from 0) runs past them"),
+                         {keyword, std::to_string(size), std::to_string(c)}});
             if (!lines.empty())
                 list.cellLines.push_back(lines[static_cast<std::size_t>(at)]);
             list.connectivity.insert(list.connectivity.end(), values.begin() + at + 1,
@@ -280,8 +329,11 @@ private:
             at += 1 + n;
         }
         if (at != size)
-            fail(list.line, keyword + " declares " + std::to_string(size) + " values, its "
-                                + std::to_string(cells) + " cells use " + std::to_string(at));
+            fail(list.line,
+                 MessageText{
+                     QT_TRANSLATE_NOOP("stratamesh::Core",
+                                       "%1 declares %2 values, its %3 cells use %4"),
+                     {keyword, std::to_string(size), std::to_string(cells), std::to_string(at)}});
         return list;
     }
 
@@ -291,8 +343,11 @@ private:
     {
         if (offsets == 0) {
             if (connectivity != 0)
-                fail(list.line, keyword + " declares no offsets but " + std::to_string(connectivity)
-                                    + " connectivity values");
+                fail(list.line,
+                     MessageText{
+                         QT_TRANSLATE_NOOP("stratamesh::Core",
+                                           "%1 declares no offsets but %2 connectivity values"),
+                         {keyword, std::to_string(connectivity)}});
             return list;
         }
         const int offsetBytes = arrayHeader5("OFFSETS", keyword);
@@ -301,22 +356,30 @@ private:
                                        offsetBytes, offsets, m_binary ? nullptr : &offsetLines);
         skipVtkMetadata(m_in, 1);
         if (arrayHeader5("CONNECTIVITY", keyword) != offsetBytes)
-            fail(m_in.tokenLine(), keyword + " OFFSETS and CONNECTIVITY have different types");
+            fail(m_in.tokenLine(),
+                 MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "%1 OFFSETS and CONNECTIVITY have different types"),
+                             {keyword}});
         list.connectivity =
             readVtkIntegers(m_in, {m_binary, keyword + " CONNECTIVITY", m_in.tokenLine()},
                             offsetBytes, connectivity, m_binary ? nullptr : &lines);
         skipVtkMetadata(m_in, 1);
         if (list.offsets.front() != 0)
             fail(list.line,
-                 keyword + " OFFSETS start at " + std::to_string(list.offsets.front()) + ", not 0");
+                 MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 OFFSETS start at %2, not 0"),
+                             {keyword, std::to_string(list.offsets.front())}});
         for (std::size_t c = 1; c < list.offsets.size(); ++c)
             if (list.offsets[c] < list.offsets[c - 1])
-                fail(list.line, keyword + " OFFSETS decrease at cell " + std::to_string(c - 1)
-                                    + " (numbered from 0)");
+                fail(list.line, MessageText{QT_TRANSLATE_NOOP(
+                                                "stratamesh::Core",
+                                                "%1 OFFSETS decrease at cell %2 (numbered from 0)"),
+                                            {keyword, std::to_string(c - 1)}});
         if (list.offsets.back() != connectivity)
-            fail(list.line, keyword + " OFFSETS end at " + std::to_string(list.offsets.back())
-                                + ", " + std::to_string(connectivity)
-                                + " connectivity values are declared");
+            fail(list.line,
+                 MessageText{
+                     QT_TRANSLATE_NOOP("stratamesh::Core",
+                                       "%1 OFFSETS end at %2, %3 connectivity values are declared"),
+                     {keyword, std::to_string(list.offsets.back()), std::to_string(connectivity)}});
         // A cell is where its first point id is written, or its offset when it has none.
         if (!m_binary)
             for (std::size_t c = 0; c + 1 < list.offsets.size(); ++c) {
@@ -340,18 +403,23 @@ private:
     void finishGeometry()
     {
         if (!m_pointsLine)
-            fail(0, "the data set has no POINTS");
+            fail(0, QT_TRANSLATE_NOOP("stratamesh::Core", "the data set has no POINTS"));
         std::vector<int> cellLines;
         if (!m_poly) {
             if (m_grid.line && !m_typesLine)
-                fail(m_grid.line, "CELLS has no CELL_TYPES to go with it");
+                fail(m_grid.line, QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                    "CELLS has no CELL_TYPES to go with it"));
             if (m_typesLine && !m_grid.line)
-                fail(m_typesLine, "CELL_TYPES has no CELLS to go with it");
+                fail(m_typesLine, QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                    "CELL_TYPES has no CELLS to go with it"));
             const long long cells = static_cast<long long>(m_grid.offsets.size()) - 1;
             if (static_cast<long long>(m_data.cellTypes.size()) != cells)
-                fail(m_typesLine, "CELL_TYPES declares " + std::to_string(m_data.cellTypes.size())
-                                      + " values, CELLS at line " + std::to_string(m_grid.line)
-                                      + " declares " + std::to_string(cells));
+                fail(m_typesLine,
+                     MessageText{QT_TRANSLATE_NOOP(
+                                     "stratamesh::Core",
+                                     "CELL_TYPES declares %1 values, CELLS at line %2 declares %3"),
+                                 {std::to_string(m_data.cellTypes.size()),
+                                  std::to_string(m_grid.line), std::to_string(cells)}});
             m_cellsLine = m_grid.line;
             m_data.offsets = std::move(m_grid.offsets);
             m_data.connectivity = std::move(m_grid.connectivity);
@@ -456,9 +524,11 @@ private:
                     keep(a);
             else if (key == "POINTS" || key == "CELLS" || key == "CELL_TYPES" || key == "VERTICES"
                      || key == "LINES" || key == "POLYGONS" || key == "TRIANGLE_STRIPS")
-                fail(m_in.tokenLine(), key
-                                           + " comes after the data of the cells or points: the "
-                                             "geometry goes first");
+                fail(m_in.tokenLine(),
+                     MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                   "%1 comes after the data of the cells or "
+                                                   "points: the geometry goes first"),
+                                 {key}});
             else
                 unknown(token, m_cellSection ? "CELL_DATA" : "POINT_DATA");
         }
@@ -484,9 +554,11 @@ private:
         m_in.endLine("the " + what + " line");
         if (array.components > 0
             && m_tuples > static_cast<long long>(m_in.fileSize()) / array.components)
-            fail(line, what + " declares " + std::to_string(m_tuples) + " x "
-                           + std::to_string(array.components)
-                           + " values, more than the file can hold");
+            fail(line,
+                 MessageText{
+                     QT_TRANSLATE_NOOP("stratamesh::Core",
+                                       "%1 declares %2 x %3 values, more than the file can hold"),
+                     {what, std::to_string(m_tuples), std::to_string(array.components)}});
         array.tuples = m_tuples;
         const VtkValuesAt at{m_binary, what, line};
         if (t == VtkLegacyType::String) {
@@ -512,7 +584,9 @@ private:
             const std::string_view token = next("the dimension of " + what);
             if (!parseInt(token, dim) || dim < 1 || dim > 3)
                 fail(m_in.tokenLine(),
-                     what + " has dimension '" + vtkPrintable(token) + "' (1, 2 or 3 expected)");
+                     MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                   "%1 has dimension '%2' (1, 2 or 3 expected)"),
+                                 {what, vtkPrintable(token)}});
             array.components = static_cast<int>(dim);
         }
         return values(std::move(array), type(what, text), what, line);
@@ -530,13 +604,19 @@ private:
         if (!vtkKeywordIs(token, "LOOKUP_TABLE")) {
             long long components = 0;
             if (!parseInt(token, components) || components < 1 || components > 1 << 20)
-                fail(m_in.tokenLine(), what + " has '" + vtkPrintable(token)
-                                           + "' components (a number from 1 expected)");
+                fail(m_in.tokenLine(),
+                     MessageText{
+                         QT_TRANSLATE_NOOP("stratamesh::Core",
+                                           "%1 has '%2' components (a number from 1 expected)"),
+                         {what, vtkPrintable(token)}});
             array.components = static_cast<int>(components);
             token = next("the LOOKUP_TABLE of " + what);
             if (!vtkKeywordIs(token, "LOOKUP_TABLE"))
-                fail(m_in.tokenLine(), what + " goes on with \"LOOKUP_TABLE default\", found \""
-                                           + vtkPrintable(token) + "\"");
+                fail(m_in.tokenLine(),
+                     MessageText{QT_TRANSLATE_NOOP(
+                                     "stratamesh::Core",
+                                     "%1 goes on with \"LOOKUP_TABLE default\", found \"%2\""),
+                                 {what, vtkPrintable(token)}});
         }
         next("the name of the LOOKUP_TABLE of " + what);
         keep(set.scalars, values(std::move(array), t, what, line));
@@ -553,7 +633,9 @@ private:
         const std::string_view token = next("the components of " + what);
         if (!parseInt(token, components) || components < 1 || components > 1 << 20)
             fail(m_in.tokenLine(),
-                 what + " has '" + vtkPrintable(token) + "' components (a number from 1 expected)");
+                 MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                               "%1 has '%2' components (a number from 1 expected)"),
+                             {what, vtkPrintable(token)}});
         array.components = static_cast<int>(components);
         array = values(std::move(array),
                        m_binary ? VtkLegacyType::UnsignedChar : VtkLegacyType::Float, what, line);
@@ -561,7 +643,10 @@ private:
             for (double &v : array.values) {
                 const double byte = 255.0 * v + 0.5;
                 if (!(byte >= 0 && byte < 256))
-                    fail(line, what + " holds " + doubleText(v) + ", not a colour from 0 to 1");
+                    fail(line,
+                         MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                       "%1 holds %2, not a colour from 0 to 1"),
+                                     {what, doubleText(v)}});
                 v = static_cast<unsigned char>(byte);
             }
         keep(set.scalars, std::move(array));
@@ -575,9 +660,11 @@ private:
         const long long size = count(what);
         m_in.endLine("the " + what + " line");
         if (size > static_cast<long long>(m_in.fileSize()))
-            fail(line, what + " declares " + std::to_string(size)
-                           + " colours, more than the file of " + std::to_string(m_in.fileSize())
-                           + " bytes can hold");
+            fail(line,
+                 MessageText{QT_TRANSLATE_NOOP(
+                                 "stratamesh::Core",
+                                 "%1 declares %2 colours, more than the file of %3 bytes can hold"),
+                             {what, std::to_string(size), std::to_string(m_in.fileSize())}});
         readVtkNumbers(m_in, {m_binary, what, line},
                        m_binary ? VtkLegacyType::UnsignedChar : VtkLegacyType::Float, 4 * size);
     }
@@ -602,14 +689,20 @@ private:
             const std::string what = "array " + array.name;
             const long long components = count(what), tuples = count(what);
             if (components < 1 || components > 1 << 20)
-                fail(header, what + " declares " + std::to_string(components)
-                                 + " components (from 1 to 1048576)");
+                fail(header,
+                     MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                   "%1 declares %2 components (from 1 to 1048576)"),
+                                 {what, std::to_string(components)}});
             const VtkLegacyType t = type(what, true);
             m_in.endLine("the " + what + " line");
             if (tuples > static_cast<long long>(m_in.fileSize()) / components)
-                fail(header, what + " declares " + std::to_string(components) + " x "
-                                 + std::to_string(tuples) + " values, more than the file of "
-                                 + std::to_string(m_in.fileSize()) + " bytes can hold");
+                fail(header,
+                     MessageText{
+                         QT_TRANSLATE_NOOP(
+                             "stratamesh::Core",
+                             "%1 declares %2 x %3 values, more than the file of %4 bytes can hold"),
+                         {what, std::to_string(components), std::to_string(tuples),
+                          std::to_string(m_in.fileSize())}});
             array.components = static_cast<int>(components);
             array.tuples = tuples;
             const VtkValuesAt at{m_binary, what, header};

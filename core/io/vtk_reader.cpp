@@ -39,6 +39,9 @@
 #include <type_traits>
 #include <utility>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -58,9 +61,11 @@ std::vector<std::string> stringsOf(const std::string &path, vtkFieldData *fd, co
         for (vtkIdType i = 0; i < bytes->GetNumberOfValues(); ++i) {
             const double v = bytes->GetComponent(i / components, static_cast<int>(i % components));
             if (!(v >= -128 && v <= 255) || v != std::floor(v))
-                throw FileError(path, 0,
-                                std::string("the ") + name + " field data holds " + doubleText(v)
-                                    + ", not a byte of text");
+                throw FileError(
+                    path, 0,
+                    MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                  "the %1 field data holds %2, not a byte of text"),
+                                {name, doubleText(v)}});
             const char c =
                 static_cast<char>(static_cast<unsigned char>(static_cast<int>(v) & 0xff));
             if (c == '\n') {
@@ -103,7 +108,9 @@ vtkSmartPointer<vtkDataSet> runReader(const std::string &path)
     if (cause.empty() && !out)
         cause = "not a VTK data set";
     if (!cause.empty())
-        throw FileError(path, 0, "VTK cannot read it: " + cause);
+        throw FileError(
+            path, 0,
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "VTK cannot read it: %1"), {cause}});
     return out;
 }
 
@@ -197,9 +204,12 @@ long long groupValue(const std::string &path, vtkDataArray *a, const char *name,
         return 0;
     const double v = a->GetComponent(cell, 0);
     if (!(v >= 0 && v <= std::numeric_limits<int>::max()) || v != std::floor(v))
-        throw FileError(path, 0,
-                        std::string("cell ") + std::to_string(cell) + " has " + name + " "
-                            + doubleText(v) + " (expected a whole number from 0 to 2147483647)");
+        throw FileError(
+            path, 0,
+            MessageText{QT_TRANSLATE_NOOP(
+                            "stratamesh::Core",
+                            "cell %1 has %2 %3 (expected a whole number from 0 to 2147483647)"),
+                        {std::to_string(cell), name, doubleText(v)}});
     return static_cast<long long>(v);
 }
 
@@ -208,7 +218,7 @@ long long groupValue(const std::string &path, vtkDataArray *a, const char *name,
 VolumeMesh readVtk(const std::string &path)
 {
     if (!std::ifstream(path).good())
-        throw FileError(path, 0, "cannot open the file");
+        throw FileError(path, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "cannot open the file"));
     const std::string ext = fileExtension(path);
     vtkSmartPointer<vtkDataSet> data;
     if (ext == ".vtu" || ext == ".vtp")
@@ -220,7 +230,11 @@ VolumeMesh readVtk(const std::string &path)
     else if (ext == ".vtk") {
         data = legacyDataSet(readVtkLegacy(path));
     } else
-        throw FileError(path, 0, "unknown VTK extension '" + ext + "' (use .vtu, .vtp or .vtk)");
+        throw FileError(
+            path, 0,
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "unknown VTK extension '%1' (use .vtu, .vtp or .vtk)"),
+                        {ext}});
 
     VolumeMesh mesh;
     vtkFieldData *fd = data->GetFieldData();
@@ -296,7 +310,10 @@ VolumeMesh readVtk(const std::string &path)
         }
     }
     if (mesh.cells.empty() && mesh.triangles.empty())
-        throw FileError(path, 0, "no triangle and no volume cell in the file (empty model)");
+        throw FileError(
+            path, 0,
+            QT_TRANSLATE_NOOP("stratamesh::Core",
+                              "no triangle and no volume cell in the file (empty model)"));
     if (quality)
         mesh.qualityName = qualityName.front();
     const std::string fallback = fileStem(path);
@@ -339,20 +356,26 @@ VolumeMesh readVtk(const std::string &path)
                                   ? surfaceIndex.indexOf(static_cast<long long>(std::abs(v)) - 1)
                                   : -1;
                 if (s < 0 || v != std::floor(v))
-                    throw FileError(path, 0,
-                                    "the RegionSides field data names surface " + doubleText(v)
-                                        + ", which the file does not have");
+                    throw FileError(
+                        path, 0,
+                        MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                      "the RegionSides field data names surface "
+                                                      "%1, which the file does not have"),
+                                    {doubleText(v)}});
                 list.push_back({s, v > 0});
             }
             mesh.regionBoundaries.push_back(std::move(list));
         }
         if (mesh.regionBoundaries.size() != mesh.regionNames.size())
-            throw FileError(path, 0, "the RegionSides field data does not match the regions");
+            throw FileError(
+                path, 0,
+                QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "the RegionSides field data does not match the regions"));
     }
     try {
         validateMesh(mesh);
     } catch (const InputError &e) {
-        throw FileError(path, 0, e.what());
+        throw FileError(path, 0, causeOf(e));
     }
     return mesh;
 }

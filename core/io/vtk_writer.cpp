@@ -23,6 +23,9 @@
 
 #include <limits>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -222,7 +225,9 @@ void runWriter(Writer *writer, const std::string &target, const std::string &tem
                                                       : std::string("VTK could not write the file");
         if (errors.failed())
             cause += " (" + errors.message() + ")";
-        throw FileError(target, 0, "cannot write: " + cause);
+        throw FileError(
+            target, 0,
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "cannot write: %1"), {cause}});
     }
 }
 
@@ -232,8 +237,10 @@ void writeVtk(const VolumeMesh &mesh, const std::string &path, VtkFileKind kind)
 {
     validateMesh(mesh);
     if (kind == VtkFileKind::Vtp && mesh.hasCells())
-        throw InputError("a .vtp file holds surfaces only: the mesh '" + mesh.name + "' has "
-                         + std::to_string(mesh.cells.size()) + " volume cells (use .vtu or .vtk)");
+        throw InputError(MessageText{
+            QT_TRANSLATE_NOOP("stratamesh::Core", "a .vtp file holds surfaces only: the mesh '%1' "
+                                                  "has %2 volume cells (use .vtu or .vtk)"),
+            {mesh.name, std::to_string(mesh.cells.size())}});
     writeFileAtomically(path, [&](const std::string &temporary) {
         if (kind == VtkFileKind::Vtp) {
             vtkNew<vtkXMLPolyDataWriter> writer;

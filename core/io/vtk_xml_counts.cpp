@@ -9,6 +9,9 @@
 #include <iterator>
 #include <set>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -80,11 +83,14 @@ void checkCompressionHeaders(const std::string &path, const std::string &text, l
         const auto limit = static_cast<unsigned long long>(size);
         if (blocks > limit || blockSize > limit * maxExpansion || last > blockSize
             || (blocks > 0 && blockSize > 0 && blocks - 1 > limit * maxExpansion / blockSize))
-            throw FileError(path, line,
-                            "the header of a compressed array is damaged or too large: "
-                                + std::to_string(blocks) + " blocks of " + std::to_string(blockSize)
-                                + " bytes, the last of " + std::to_string(last) + ", in a file of "
-                                + std::to_string(size) + " bytes");
+            throw FileError(
+                path, line,
+                MessageText{QT_TRANSLATE_NOOP(
+                                "stratamesh::Core",
+                                "the header of a compressed array is damaged or too large: %1 "
+                                "blocks of %2 bytes, the last of %3, in a file of %4 bytes"),
+                            {std::to_string(blocks), std::to_string(blockSize),
+                             std::to_string(last), std::to_string(size)}});
         // VTK 9.1 reads data after a header of no block as if it had one (SEGV).
         if (blocks == 0) {
             std::string body = text.substr(close + 1, text.find('<', close + 1) - close - 1);
@@ -92,19 +98,28 @@ void checkCompressionHeaders(const std::string &path, const std::string &text, l
                                       [](unsigned char c) { return std::isspace(c) != 0; }),
                        body.end());
             if (body.size() > (3 * width + 2) / 3 * 4)
-                throw FileError(path, line, "a compressed array states no block but holds data");
+                throw FileError(
+                    path, line,
+                    QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "a compressed array states no block but holds data"));
         }
         // Each block's compressed size is read (allocated) as stated: none exceeds the file.
         const std::string all = decodeBase64Prefix(text, close + 1, (3 + blocks) * width);
         if (all.size() < (3 + blocks) * width)
-            throw FileError(path, line, "the header of a compressed array is cut short");
+            throw FileError(path, line,
+                            QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "the header of a compressed array is cut short"));
         for (unsigned long long b = 0; b < blocks; ++b)
             if (headerValue(all, 3 + b, width, bigEndian) > limit)
-                throw FileError(path, line,
-                                "block " + std::to_string(b + 1) + " of a compressed array states "
-                                    + std::to_string(headerValue(all, 3 + b, width, bigEndian))
-                                    + " compressed bytes, more than the file of "
-                                    + std::to_string(size) + " bytes");
+                throw FileError(
+                    path, line,
+                    MessageText{
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "block %1 of a compressed array states %2 compressed "
+                                          "bytes, more than the file of %3 bytes"),
+                        {std::to_string(b + 1),
+                         std::to_string(headerValue(all, 3 + b, width, bigEndian)),
+                         std::to_string(size)}});
     }
 }
 
@@ -114,7 +129,7 @@ void checkVtkXmlCounts(const std::string &path)
 {
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw FileError(path, 0, "cannot open the file");
+        throw FileError(path, 0, QT_TRANSLATE_NOOP("stratamesh::Core", "cannot open the file"));
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const long long size = static_cast<long long>(text.size());
     // Raw appended data may hold any bytes: only the XML before it declares sizes.
@@ -135,15 +150,23 @@ void checkVtkXmlCounts(const std::string &path)
                 1 + static_cast<int>(std::count(text.begin(), text.begin() + long(at), '\n'));
             if (end == std::string::npos
                 || !parseInt(std::string_view(text).substr(begin, end - begin), n))
-                throw FileError(path, line, std::string(name) + " is not a whole number");
+                throw FileError(
+                    path, line,
+                    MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 is not a whole number"),
+                                {std::string(name)}});
             if (n < 0)
-                throw FileError(path, line,
-                                std::string(name) + " is negative (" + std::to_string(n) + ")");
+                throw FileError(
+                    path, line,
+                    MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 is negative (%2)"),
+                                {std::string(name), std::to_string(n)}});
             if (n / maxExpansion > size)
-                throw FileError(path, line,
-                                std::string(name) + " is " + std::to_string(n)
-                                    + ", more than the file of " + std::to_string(size)
-                                    + " bytes can hold even compressed");
+                throw FileError(
+                    path, line,
+                    MessageText{
+                        QT_TRANSLATE_NOOP(
+                            "stratamesh::Core",
+                            "%1 is %2, more than the file of %3 bytes can hold even compressed"),
+                        {std::string(name), std::to_string(n), std::to_string(size)}});
         }
     }
     checkCompressionHeaders(path, text, size);
@@ -162,7 +185,10 @@ void checkVtkXmlCounts(const std::string &path)
             const int line =
                 1 + static_cast<int>(std::count(text.begin(), text.begin() + long(at), '\n'));
             throw FileError(path, line,
-                            "a DataArray has type \"" + name + "\", which is not a VTK type");
+                            MessageText{QT_TRANSLATE_NOOP(
+                                            "stratamesh::Core",
+                                            "a DataArray has type \"%1\", which is not a VTK type"),
+                                        {name}});
         }
     }
 }

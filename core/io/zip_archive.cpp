@@ -7,6 +7,9 @@
 
 #include <algorithm>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -39,8 +42,11 @@ ZipReader::ZipReader(std::string path) : m_path(std::move(path))
 {
     m_zip = unzOpen64(m_path.c_str());
     if (!m_zip)
-        throw FileError(m_path, 0,
-                        "not a readable zip archive (missing file, or no zip central directory)");
+        throw FileError(
+            m_path, 0,
+            QT_TRANSLATE_NOOP(
+                "stratamesh::Core",
+                "not a readable zip archive (missing file, or no zip central directory)"));
     char name[4096];
     for (int code = unzGoToFirstFile(m_zip); code != UNZ_END_OF_LIST_OF_FILE;
          code = unzGoToNextFile(m_zip)) {
@@ -50,9 +56,11 @@ ZipReader::ZipReader(std::string path) : m_path(std::move(path))
         if (code != UNZ_OK) {
             unzClose(m_zip);
             m_zip = nullptr;
-            throw FileError(m_path, 0,
-                            "corrupt zip directory after " + std::to_string(m_names.size())
-                                + " entries: " + unzipCause(code));
+            throw FileError(
+                m_path, 0,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "corrupt zip directory after %1 entries: %2"),
+                            {std::to_string(m_names.size()), unzipCause(code)}});
         }
         m_names.emplace_back(name);
     }
@@ -73,28 +81,39 @@ std::string ZipReader::read(const std::string &name, std::size_t maxBytes) const
 {
     const std::string where = m_path + ":" + name;
     if (!contains(name))
-        throw FileError(where, 0, "entry missing from the archive");
+        throw FileError(where, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "entry missing from the archive"));
     if (unzLocateFile(m_zip, name.c_str(), 1) != UNZ_OK)
-        throw FileError(where, 0, "entry cannot be located in the archive");
+        throw FileError(
+            where, 0,
+            QT_TRANSLATE_NOOP("stratamesh::Core", "entry cannot be located in the archive"));
     int code = unzOpenCurrentFile(m_zip);
     if (code != UNZ_OK)
-        throw FileError(where, 0, "cannot open the entry: " + unzipCause(code));
+        throw FileError(
+            where, 0,
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "cannot open the entry: %1"),
+                        {unzipCause(code)}});
     std::string out;
     char buffer[1 << 16];
     for (;;) {
         const int n = unzReadCurrentFile(m_zip, buffer, sizeof buffer);
         if (n < 0) {
             unzCloseCurrentFile(m_zip);
-            throw FileError(where, 0,
-                            "cannot decompress the entry after " + std::to_string(out.size())
-                                + " bytes: " + unzipCause(n));
+            throw FileError(
+                where, 0,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "cannot decompress the entry after %1 bytes: %2"),
+                            {std::to_string(out.size()), unzipCause(n)}});
         }
         if (n == 0)
             break;
         out.append(buffer, std::size_t(n));
         if (out.size() > maxBytes) {
             unzCloseCurrentFile(m_zip);
-            throw FileError(where, 0, "entry larger than " + std::to_string(maxBytes) + " bytes");
+            throw FileError(
+                where, 0,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "entry larger than %1 bytes"),
+                            {std::to_string(maxBytes)}});
         }
     }
     code = unzCloseCurrentFile(m_zip); // reports a CRC mismatch once the entry is read whole
@@ -107,7 +126,8 @@ ZipWriter::ZipWriter(std::string path) : m_path(std::move(path))
 {
     m_zip = zipOpen64(m_path.c_str(), APPEND_STATUS_CREATE);
     if (!m_zip)
-        throw FileError(m_path, 0, "cannot create the zip archive");
+        throw FileError(m_path, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "cannot create the zip archive"));
 }
 
 ZipWriter::~ZipWriter()
@@ -125,18 +145,23 @@ void ZipWriter::add(const std::string &name, const std::string &bytes)
     if (zipOpenNewFileInZip64(m_zip, name.c_str(), &info, nullptr, 0, nullptr, 0, nullptr,
                               Z_DEFLATED, Z_DEFAULT_COMPRESSION, zip64)
         != ZIP_OK)
-        throw FileError(m_path + ":" + name, 0, "cannot add the entry to the zip archive");
+        throw FileError(
+            m_path + ":" + name, 0,
+            QT_TRANSLATE_NOOP("stratamesh::Core", "cannot add the entry to the zip archive"));
     std::size_t done = 0;
     while (done < bytes.size()) {
         const unsigned n = unsigned(std::min<std::size_t>(bytes.size() - done, 1u << 30));
         if (zipWriteInFileInZip(m_zip, bytes.data() + done, n) != ZIP_OK) {
             zipCloseFileInZip(m_zip);
-            throw FileError(m_path + ":" + name, 0, "cannot write the entry (disk full?)");
+            throw FileError(
+                m_path + ":" + name, 0,
+                QT_TRANSLATE_NOOP("stratamesh::Core", "cannot write the entry (disk full?)"));
         }
         done += n;
     }
     if (zipCloseFileInZip(m_zip) != ZIP_OK)
-        throw FileError(m_path + ":" + name, 0, "cannot finish the entry");
+        throw FileError(m_path + ":" + name, 0,
+                        QT_TRANSLATE_NOOP("stratamesh::Core", "cannot finish the entry"));
 }
 
 void ZipWriter::close()
@@ -144,7 +169,9 @@ void ZipWriter::close()
     void *zip = m_zip;
     m_zip = nullptr;
     if (zipClose(zip, nullptr) != ZIP_OK)
-        throw FileError(m_path, 0, "cannot finish the zip archive (disk full?)");
+        throw FileError(
+            m_path, 0,
+            QT_TRANSLATE_NOOP("stratamesh::Core", "cannot finish the zip archive (disk full?)"));
 }
 
 } // namespace stratamesh

@@ -12,6 +12,9 @@
 #include <numeric>
 #include <optional>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -90,8 +93,10 @@ PlcRegion regionSeed(const Model &model, int region)
     std::vector<Candidate> candidates;
     for (const RegionSide &side : r.boundaries) {
         if (side.surface < 0 || side.surface >= static_cast<int>(model.surfaces.size()))
-            throw InputError("region " + r.name + " lists surface " + std::to_string(side.surface)
-                             + " which does not exist");
+            throw InputError(
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                              "region %1 lists surface %2 which does not exist"),
+                            {r.name, std::to_string(side.surface)}});
         const Surface &s = model.surfaces[side.surface];
         for (int t = 0; t < static_cast<int>(s.triangles.size()); ++t) {
             const Triangle &tri = s.triangles[t];
@@ -136,15 +141,20 @@ PlcRegion regionSeed(const Model &model, int region)
     for (std::size_t i = keep; i < candidates.size() && !found; ++i)
         tryCandidate(candidates[i]);
     if (!found)
-        throw InputError("no point strictly inside region " + r.name
-                         + " was found (is its boundary closed and consistently oriented?)");
+        throw InputError(
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "no point strictly inside region %1 was found (is its "
+                                          "boundary closed and consistently oriented?)"),
+                        {r.name}});
     return best;
 }
 
 Plc buildPlc(const Model &input)
 {
     if (input.surfaces.empty())
-        throw InputError("the model has no surface to tetrahedralise");
+        throw InputError(MessageText{
+            QT_TRANSLATE_NOOP("stratamesh::Core", "the model has no surface to tetrahedralise"),
+            {}});
     const Model model = input.hasTopology() ? input : recoverTopology(input);
 
     Plc plc;
@@ -159,8 +169,10 @@ Plc buildPlc(const Model &input)
             const Triangle g{toGlobal[local[0]], toGlobal[local[1]], toGlobal[local[2]]};
             // TetGen reads such a facet as a segment and may crash on it.
             if (g[0] == g[1] || g[1] == g[2] || g[0] == g[2])
-                throw InputError("surface " + surface.name + ": triangle " + std::to_string(t)
-                                 + " has two corners at the same point");
+                throw InputError(MessageText{
+                    QT_TRANSLATE_NOOP("stratamesh::Core",
+                                      "surface %1: triangle %2 has two corners at the same point"),
+                    {surface.name, std::to_string(t)}});
             plc.facets.push_back(g);
             plc.facetMarkers.push_back(s + 1);
         }

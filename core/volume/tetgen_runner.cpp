@@ -25,6 +25,9 @@
 #include <set>
 #include <unistd.h>
 
+// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -42,7 +45,9 @@ public:
         buffer.push_back('\0');
         if (!::mkdtemp(buffer.data()))
             throw FileError(pattern, 0,
-                            std::string("cannot create a work folder: ") + std::strerror(errno));
+                            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                          "cannot create a work folder: %1"),
+                                        {std::strerror(errno)}});
         m_path = buffer.data();
     }
     ~WorkDirectory()
@@ -390,7 +395,10 @@ TetgenResult runTetgen(const Model &model, const std::vector<Vec3> &holes,
     result.switches = tetgenSwitches(params);
     if (!(params.quality >= 0) || !(params.maxVolume >= 0) || !(params.timeLimitSeconds >= 0)
         || !(params.memoryLimitMB >= 0))
-        throw InputError("TetGen parameters must be finite and not negative");
+        throw InputError(
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "TetGen parameters must be finite and not negative"),
+                        {}});
     checkParams(tetgenParamTable(), params);
 
     progress.tick(0.0, "checking the model for TetGen");

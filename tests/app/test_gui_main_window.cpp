@@ -162,6 +162,33 @@ private slots:
         QCOMPARE(m_window->scene()->model(), previous);
     }
 
+    // Issue 17: the reader's sentence reaches Messages in French, its value, file and line kept.
+    void brokenFileIsReportedInFrench()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("broken.off"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("OFF\n3 1 0\n0 0 0\n1 0 nope\n0 1 0\n3 0 1 2\n");
+        file.close();
+
+        QCOMPARE(installTranslations(QStringLiteral("fr")), QStringLiteral("fr"));
+        const bool loaded = load(*m_window, path);
+        installTranslations(QStringLiteral("en"));
+        QVERIFY(!loaded);
+        MessagePanel *panel = m_window->messagePanel();
+        QCOMPARE(panel->count(Message::Severity::Error), 1);
+        int row = 0;
+        while (panel->message(row).severity != Message::Severity::Error)
+            ++row;
+        QCOMPARE(panel->cellText(row, MessagePanel::TextColumn),
+                 QStringLiteral("la coordonnée 'nope' n'est pas un nombre"));
+        QCOMPARE(panel->cellText(row, MessagePanel::LocationColumn),
+                 QStringLiteral("broken.off:4"));
+        QCOMPARE(panel->message(row).file, path);
+    }
+
     void missingFileIsReported()
     {
         QVERIFY(!load(*m_window, QStringLiteral("/nonexistent/dir/model.ml")));

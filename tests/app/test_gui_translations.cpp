@@ -125,7 +125,9 @@ private slots:
                        QStringLiteral(STRATAMESH_WIDGETS_SOURCE_DIR),
                        QStringLiteral(STRATAMESH_PARAMS_SOURCE_DIR),
                        QStringLiteral(STRATAMESH_MODEL_SOURCE_DIR),
-                       QStringLiteral(STRATAMESH_REMESH_SOURCE_DIR), QStringLiteral("-ts"), fresh});
+                       QStringLiteral(STRATAMESH_REMESH_SOURCE_DIR),
+                       QStringLiteral(STRATAMESH_IO_SOURCE_DIR),
+                       QStringLiteral(STRATAMESH_VOLUME_SOURCE_DIR), QStringLiteral("-ts"), fresh});
         QVERIFY(lupdate.waitForFinished(60000));
         QVERIFY2(lupdate.exitCode() == 0, lupdate.readAll().constData());
         QSet<QString> expected, committed;

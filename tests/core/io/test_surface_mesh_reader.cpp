@@ -186,6 +186,32 @@ private slots:
         QVERIFY(!isReadableModelFile("a/b.stl"));
         expectFileError(writeFile(dir, "model.stl", "solid x\n"), "unknown model file extension");
     }
+
+    // Issue 17: a FileError keeps the English pattern and its values for the GUI to translate;
+    // its cause and what() are the filled English text, as before.
+    void fileErrorKeepsItsPattern()
+    {
+        const FileError made("m.off", 4, MessageText{"coordinate '%1' is not a number", {"nope"}});
+        QCOMPARE(made.cause(), std::string("coordinate 'nope' is not a number"));
+        QCOMPARE(made.text().pattern, std::string("coordinate '%1' is not a number"));
+        QCOMPARE(made.text().args, std::vector<std::string>{"nope"});
+        QCOMPARE(std::string(made.what()),
+                 std::string("m.off:4: coordinate 'nope' is not a number"));
+        const FileError plain("m.off", 0, "empty file");
+        QCOMPARE(plain.cause(), std::string("empty file"));
+        QVERIFY(plain.text().pattern.empty());
+
+        QTemporaryDir dir;
+        try {
+            readModel(writeFile(dir, "bad.off", "OFF\n3 1 0\n0 0 0\n1 0 nope\n0 1 0\n3 0 1 2\n"));
+            QFAIL("no FileError raised");
+        } catch (const FileError &e) {
+            QCOMPARE(e.line(), 4);
+            QCOMPARE(e.cause(), std::string("coordinate 'nope' is not a number"));
+            QCOMPARE(e.text().pattern, std::string("coordinate '%1' is not a number"));
+            QCOMPARE(e.text().text(), e.cause());
+        }
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSurfaceMeshReader)
