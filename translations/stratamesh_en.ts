@@ -965,18 +965,6 @@ per cell</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 %2 is not a number</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 %2 is not finite</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 %2 is not an integer</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>too few values, expected &apos;%1&apos;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1962,6 +1950,194 @@ per cell</source>
     </message>
     <message>
         <source>expected &apos;GOCAD &lt;type&gt;&apos; to start the next object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is not finite (non-finite vertex)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is beyond the bound of 1e15 that keeps squared distances and volumes finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coordinate %1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>point %1 (numbered from 0): %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%2 %1 is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%2 %1 is not finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%2 %1 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%2 %1 is not an integer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>x coordinate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>y coordinate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>z coordinate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TFACE id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>BSTONE vertex id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>BORDER id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>BORDER corner vertex id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>BORDER next vertex id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vertex id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>referenced vertex id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TRGL vertex id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot replace the file: %1 (no output was written)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an entity count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an entity id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a boundary id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a geological entity id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a child id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vertex %1 (numbered from 0): %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vertex %1 (numbered from 0, as faces index it): %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>facet %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coordinate &apos;%1&apos; %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cell %1 (numbered from 0, VTK type %2) has %3 point ids, its type needs %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cell %1 (numbered from 0, VTK type %2) has %3 point ids</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cell %1 has VTK type %2, which StrataMesh does not exchange (tets, pyramids, wedges, triangles, lines and vertices only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cell %1 uses point %2 of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is not a whole number from 0 to 18446744073709551615</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is not an integer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is out of range for %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 data is cut short: %2 bits, %3 bytes are left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 data is cut short: %2 values of %3 bytes, %4 bytes are left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 value &apos;%2&apos; %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is out of range for a 4-byte integer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a keyword of %2 (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, the cell section is missing: the file has no cells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, the cell section at line %3 declares %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, POINTS at line %3 declares %4</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

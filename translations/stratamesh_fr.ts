@@ -963,19 +963,7 @@ par cellule</translation>
     </message>
     <message>
         <source>missing %1</source>
-        <translation>%1 manquant</translation>
-    </message>
-    <message>
-        <source>%1 %2 is not a number</source>
-        <translation>%1 %2 n&apos;est pas un nombre</translation>
-    </message>
-    <message>
-        <source>%1 %2 is not finite</source>
-        <translation>%1 %2 n&apos;est pas fini</translation>
-    </message>
-    <message>
-        <source>%1 %2 is not an integer</source>
-        <translation>%1 %2 n&apos;est pas un entier</translation>
+        <translation>valeur manquante : %1</translation>
     </message>
     <message>
         <source>too few values, expected &apos;%1&apos;</source>
@@ -1964,6 +1952,194 @@ par cellule</translation>
     <message>
         <source>expected &apos;GOCAD &lt;type&gt;&apos; to start the next object</source>
         <translation>&apos;GOCAD &lt;type&gt;&apos; attendu pour commencer l&apos;objet suivant</translation>
+    </message>
+    <message>
+        <source>is not finite (non-finite vertex)</source>
+        <translation>n&apos;est pas fini (sommet non fini)</translation>
+    </message>
+    <message>
+        <source>is beyond the bound of 1e15 that keeps squared distances and volumes finite</source>
+        <translation>dépasse la borne de 1e15 qui garde finis les carrés des distances et les volumes</translation>
+    </message>
+    <message>
+        <source>coordinate %1 %2</source>
+        <translation>la coordonnée %1 %2</translation>
+    </message>
+    <message>
+        <source>point %1 (numbered from 0): %2</source>
+        <translation>point %1 (numéroté à partir de 0) : %2</translation>
+    </message>
+    <message>
+        <source>node %1: %2</source>
+        <translation>nœud %1 : %2</translation>
+    </message>
+    <message>
+        <source>%2 %1 is not a number</source>
+        <translation>%2 %1 n&apos;est pas un nombre</translation>
+    </message>
+    <message>
+        <source>%2 %1 is not finite</source>
+        <translation>%2 %1 n&apos;est pas fini</translation>
+    </message>
+    <message>
+        <source>%2 %1 %3</source>
+        <translation>%2 %1 %3</translation>
+    </message>
+    <message>
+        <source>%2 %1 is not an integer</source>
+        <translation>%2 %1 n&apos;est pas un entier</translation>
+    </message>
+    <message>
+        <source>x coordinate</source>
+        <translation>coordonnée x</translation>
+    </message>
+    <message>
+        <source>y coordinate</source>
+        <translation>coordonnée y</translation>
+    </message>
+    <message>
+        <source>z coordinate</source>
+        <translation>coordonnée z</translation>
+    </message>
+    <message>
+        <source>TFACE id</source>
+        <translation>identifiant TFACE</translation>
+    </message>
+    <message>
+        <source>BSTONE vertex id</source>
+        <translation>identifiant de sommet BSTONE</translation>
+    </message>
+    <message>
+        <source>BORDER id</source>
+        <translation>identifiant BORDER</translation>
+    </message>
+    <message>
+        <source>BORDER corner vertex id</source>
+        <translation>identifiant du sommet de coin BORDER</translation>
+    </message>
+    <message>
+        <source>BORDER next vertex id</source>
+        <translation>identifiant du sommet suivant BORDER</translation>
+    </message>
+    <message>
+        <source>vertex id</source>
+        <translation>identifiant de sommet</translation>
+    </message>
+    <message>
+        <source>referenced vertex id</source>
+        <translation>identifiant du sommet référencé</translation>
+    </message>
+    <message>
+        <source>TRGL vertex id</source>
+        <translation>identifiant de sommet TRGL</translation>
+    </message>
+    <message>
+        <source>cannot replace the file: %1 (no output was written)</source>
+        <translation>impossible de remplacer le fichier : %1 (aucune sortie n&apos;a été écrite)</translation>
+    </message>
+    <message>
+        <source>an entity count</source>
+        <translation>un nombre d&apos;entités</translation>
+    </message>
+    <message>
+        <source>an entity id</source>
+        <translation>un identifiant d&apos;entité</translation>
+    </message>
+    <message>
+        <source>a boundary id</source>
+        <translation>un identifiant de bord</translation>
+    </message>
+    <message>
+        <source>a geological entity id</source>
+        <translation>un identifiant d&apos;entité géologique</translation>
+    </message>
+    <message>
+        <source>a child id</source>
+        <translation>un identifiant d&apos;enfant</translation>
+    </message>
+    <message>
+        <source>vertex %1 (numbered from 0): %2</source>
+        <translation>sommet %1 (numéroté à partir de 0) : %2</translation>
+    </message>
+    <message>
+        <source>vertex %1 (numbered from 0, as faces index it): %2</source>
+        <translation>sommet %1 (numéroté à partir de 0, comme les faces l&apos;indexent) : %2</translation>
+    </message>
+    <message>
+        <source>facet %1: %2</source>
+        <translation>facette %1 : %2</translation>
+    </message>
+    <message>
+        <source>coordinate &apos;%1&apos; %2</source>
+        <translation>la coordonnée &apos;%1&apos; %2</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3</source>
+        <translation>%1 %2 : %3</translation>
+    </message>
+    <message>
+        <source>cell %1 (numbered from 0, VTK type %2) has %3 point ids, its type needs %4</source>
+        <translation>la cellule %1 (numérotée à partir de 0, type VTK %2) a %3 identifiants de points, son type en demande %4</translation>
+    </message>
+    <message>
+        <source>cell %1 (numbered from 0, VTK type %2) has %3 point ids</source>
+        <translation>la cellule %1 (numérotée à partir de 0, type VTK %2) a %3 identifiants de points</translation>
+    </message>
+    <message>
+        <source>cell %1 has VTK type %2, which StrataMesh does not exchange (tets, pyramids, wedges, triangles, lines and vertices only)</source>
+        <translation>la cellule %1 est de type VTK %2, que StrataMesh n&apos;échange pas (tétraèdres, pyramides, prismes, triangles, lignes et sommets seulement)</translation>
+    </message>
+    <message>
+        <source>cell %1 uses point %2 of %3</source>
+        <translation>la cellule %1 utilise le point %2 sur %3</translation>
+    </message>
+    <message>
+        <source>is not a number</source>
+        <translation>n&apos;est pas un nombre</translation>
+    </message>
+    <message>
+        <source>is not a whole number from 0 to 18446744073709551615</source>
+        <translation>n&apos;est pas un entier de 0 à 18446744073709551615</translation>
+    </message>
+    <message>
+        <source>is not an integer</source>
+        <translation>n&apos;est pas un entier</translation>
+    </message>
+    <message>
+        <source>is out of range for %1</source>
+        <translation>est hors des limites de %1</translation>
+    </message>
+    <message>
+        <source>%1 data is cut short: %2 bits, %3 bytes are left</source>
+        <translation>les données de %1 sont tronquées : %2 bits, il reste %3 octets</translation>
+    </message>
+    <message>
+        <source>%1 data is cut short: %2 values of %3 bytes, %4 bytes are left</source>
+        <translation>les données de %1 sont tronquées : %2 valeurs de %3 octets, il reste %4 octets</translation>
+    </message>
+    <message>
+        <source>%1 value &apos;%2&apos; %3</source>
+        <translation>%1 : la valeur &apos;%2&apos; %3</translation>
+    </message>
+    <message>
+        <source>is out of range for a 4-byte integer</source>
+        <translation>dépasse les limites d&apos;un entier de 4 octets</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a keyword of %2 (%3)</source>
+        <translation>&quot;%1&quot; n&apos;est pas un mot-clé de %2 (%3)</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, the cell section is missing: the file has no cells</source>
+        <translation>%1 déclare %2 valeurs, la section des cellules manque : le fichier n&apos;a pas de cellules</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, the cell section at line %3 declares %4</source>
+        <translation>%1 déclare %2 valeurs, la section des cellules à la ligne %3 en déclare %4</translation>
+    </message>
+    <message>
+        <source>%1 declares %2 values, POINTS at line %3 declares %4</source>
+        <translation>%1 déclare %2 valeurs, POINTS à la ligne %3 en déclare %4</translation>
     </message>
 </context>
 <context>

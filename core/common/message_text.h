@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace stratamesh {
@@ -12,10 +13,29 @@ namespace stratamesh {
 inline constexpr const char *kCoreTextContext = "stratamesh::Core";
 
 struct MessageText {
+    MessageText() = default;
+    // Not explicit: a reader writes {pattern, {values}} or {pattern, {values}, {parts}}.
+    MessageText(std::string pattern_, std::vector<std::string> args_ = {},
+                std::vector<MessageText> parts_ = {})
+        : pattern(std::move(pattern_)), args(std::move(args_)), parts(std::move(parts_))
+    {
+    }
+
     std::string pattern;
     std::vector<std::string> args;
+    // Sentences filling the places after the values (%(args.size() + 1)…), each translated on its
+    // own: "facet %1: %2" with the coordinate's problem as %2.
+    std::vector<MessageText> parts;
 
-    std::string text() const { return fillPattern(pattern, args); }
+    std::string text() const
+    {
+        if (parts.empty())
+            return fillPattern(pattern, args);
+        std::vector<std::string> values = args;
+        for (const MessageText &part : parts)
+            values.push_back(part.text());
+        return fillPattern(pattern, values);
+    }
 
     // %N (N = 1…9) becomes args[N − 1]; a % not followed by a digit with a value stays.
     static std::string fillPattern(const std::string &pattern, const std::vector<std::string> &args)

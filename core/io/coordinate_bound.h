@@ -3,33 +3,43 @@
 // far below the double overflow (1.8e308), even summed over millions of triangles.
 #pragma once
 
+#include "common/message_text.h"
 #include "io/number_text.h"
 
 #include <cmath>
 #include <string>
 
+#ifndef QT_TRANSLATE_NOOP
+#define QT_TRANSLATE_NOOP(context, text) text
+#endif
+
 namespace stratamesh {
 
 constexpr double maxCoordinate = 1e15;
 
-// Empty when `value` is finite and within maxCoordinate, else what is wrong with it, to follow
-// the coordinate as the file writes it ("x coordinate '1e200' is beyond ...").
-inline std::string coordinateProblem(double value)
+// An empty pattern when `value` is finite and within maxCoordinate, else what is wrong with it,
+// to follow the coordinate as the file writes it ("x coordinate '1e200' is beyond ...").
+inline MessageText coordinateProblem(double value)
 {
     if (!std::isfinite(value))
-        return "is not finite (non-finite vertex)";
+        return {QT_TRANSLATE_NOOP("stratamesh::Core", "is not finite (non-finite vertex)")};
     if (std::abs(value) > maxCoordinate)
-        return "is beyond the bound of 1e15 that keeps squared distances and volumes finite";
+        return {QT_TRANSLATE_NOOP(
+            "stratamesh::Core",
+            "is beyond the bound of 1e15 that keeps squared distances and volumes finite")};
     return {};
 }
 
-// The first problem among three coordinates ("coordinate 1e+200 is beyond ..."), or empty.
+// The first problem among three coordinates ("coordinate 1e+200 is beyond ..."), or an empty
+// pattern.
 template <class Point>
-std::string pointProblem(const Point &p)
+MessageText pointProblem(const Point &p)
 {
     for (int k = 0; k < 3; ++k)
-        if (std::string problem = coordinateProblem(p[k]); !problem.empty())
-            return "coordinate " + doubleText(p[k]) + " " + problem;
+        if (MessageText problem = coordinateProblem(p[k]); !problem.pattern.empty())
+            return {QT_TRANSLATE_NOOP("stratamesh::Core", "coordinate %1 %2"),
+                    {doubleText(p[k])},
+                    {std::move(problem)}};
     return {};
 }
 

@@ -127,8 +127,11 @@ std::vector<Vec3> geogramPoints(const GeogramFile &file, const std::string &wher
     std::vector<Vec3> points(xyz.size() / 3);
     for (std::size_t i = 0; i < points.size(); ++i) {
         points[i] = Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
-        if (const std::string problem = pointProblem(points[i]); !problem.empty())
-            fail(where, "point " + std::to_string(i) + " (numbered from 0): " + problem);
+        if (MessageText problem = pointProblem(points[i]); !problem.pattern.empty())
+            fail(where, MessageText{
+                            QT_TRANSLATE_NOOP("stratamesh::Core", "point %1 (numbered from 0): %2"),
+                            {std::to_string(i)},
+                            {std::move(problem)}});
     }
     return points;
 }

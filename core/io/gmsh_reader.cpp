@@ -201,8 +201,10 @@ private:
         if (xyz.size() < 3)
             c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "expected \"x y z\""));
         const Vec3 p(c.toDouble(xyz[0], "x"), c.toDouble(xyz[1], "y"), c.toDouble(xyz[2], "z"));
-        if (const std::string problem = pointProblem(p); !problem.empty())
-            c.fail("node " + std::to_string(tag) + ": " + problem);
+        if (MessageText problem = pointProblem(p); !problem.pattern.empty())
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "node %1: %2"),
+                               {std::to_string(tag)},
+                               {std::move(problem)}});
         if (!nodeIndex.emplace(tag, static_cast<int>(points.size())).second)
             c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "node %1 is defined twice"),
                                {std::to_string(tag)}});

@@ -28,6 +28,12 @@ std::string quoted(std::string_view s)
     return "'" + std::string(s) + "'";
 }
 
+// What the token is ("x coordinate"), marked for translation where the parsers name it.
+MessageText whatText(std::string_view what)
+{
+    return {std::string(what)};
+}
+
 } // namespace
 
 bool gocadKeywordEquals(std::string_view a, std::string_view b)
@@ -149,11 +155,13 @@ std::string GocadLineTokenizer::joined(std::size_t from) const
 double GocadLineTokenizer::number(std::size_t i, std::string_view what) const
 {
     if (i >= m_tokens.size())
-        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "missing %1"), {std::string(what)}});
+        fail(
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "missing %1"), {}, {whatText(what)}});
     double v = 0.0;
     if (!parseGocadNumber(m_tokens[i], v))
-        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 %2 is not a number"),
-                         {std::string(what), quoted(m_tokens[i])}});
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%2 %1 is not a number"),
+                         {quoted(m_tokens[i])},
+                         {whatText(what)}});
     return v;
 }
 
@@ -161,27 +169,32 @@ double GocadLineTokenizer::finiteNumber(std::size_t i, std::string_view what) co
 {
     const double v = number(i, what);
     if (!std::isfinite(v))
-        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 %2 is not finite"),
-                         {std::string(what), quoted(m_tokens[i])}});
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%2 %1 is not finite"),
+                         {quoted(m_tokens[i])},
+                         {whatText(what)}});
     return v;
 }
 
 double GocadLineTokenizer::coordinate(std::size_t i, std::string_view what) const
 {
     const double v = number(i, what);
-    if (const std::string problem = coordinateProblem(v); !problem.empty())
-        fail(std::string(what) + " " + quoted(m_tokens[i]) + " " + problem);
+    if (MessageText problem = coordinateProblem(v); !problem.pattern.empty())
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%2 %1 %3"),
+                         {quoted(m_tokens[i])},
+                         {whatText(what), std::move(problem)}});
     return v;
 }
 
 long long GocadLineTokenizer::integer(std::size_t i, std::string_view what) const
 {
     if (i >= m_tokens.size())
-        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "missing %1"), {std::string(what)}});
+        fail(
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "missing %1"), {}, {whatText(what)}});
     long long v = 0;
     if (!parseGocadInteger(m_tokens[i], v))
-        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 %2 is not an integer"),
-                         {std::string(what), quoted(m_tokens[i])}});
+        fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%2 %1 is not an integer"),
+                         {quoted(m_tokens[i])},
+                         {whatText(what)}});
     return v;
 }
 

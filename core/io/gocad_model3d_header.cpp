@@ -58,8 +58,10 @@ void readKeyTriangle(GocadLineTokenizer &tok, GocadHeaderFace &face)
                                 "file ends inside the key triangle of TFACE %1 (truncated file?)"),
                             {std::to_string(face.id)}});
         tok.requireTokens(3, "x y z of a key triangle point of TFACE " + std::to_string(face.id));
-        face.key[k] = Vec3(tok.coordinate(0, "x coordinate"), tok.coordinate(1, "y coordinate"),
-                           tok.coordinate(2, "z coordinate"));
+        face.key[k] =
+            Vec3(tok.coordinate(0, QT_TRANSLATE_NOOP("stratamesh::Core", "x coordinate")),
+                 tok.coordinate(1, QT_TRANSLATE_NOOP("stratamesh::Core", "y coordinate")),
+                 tok.coordinate(2, QT_TRANSLATE_NOOP("stratamesh::Core", "z coordinate")));
     }
     face.hasKey = true;
 }
@@ -68,7 +70,7 @@ GocadHeaderFace readFace(GocadLineTokenizer &tok)
 {
     tok.requireTokens(4, "TFACE id geological_type tsurf_name");
     GocadHeaderFace face;
-    face.id = tok.integer(1, "TFACE id");
+    face.id = tok.integer(1, QT_TRANSLATE_NOOP("stratamesh::Core", "TFACE id"));
     face.type = std::string(tok.token(2));
     face.tsurf = tok.joined(3);
     face.line = tok.lineNumber();

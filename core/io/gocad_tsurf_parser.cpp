@@ -52,12 +52,16 @@ private:
             startFace();
         else if (t.is(0, "BSTONE")) {
             t.requireTokens(2, "BSTONE vertex_id");
-            m_stones.push_back({t.integer(1, "BSTONE vertex id"), t.lineNumber()});
+            m_stones.push_back(
+                {t.integer(1, QT_TRANSLATE_NOOP("stratamesh::Core", "BSTONE vertex id")),
+                 t.lineNumber()});
         } else if (t.is(0, "BORDER")) {
             t.requireTokens(4, "BORDER id corner_vertex_id next_vertex_id");
-            m_result.borders.push_back({t.integer(1, "BORDER id"),
-                                        t.integer(2, "BORDER corner vertex id"),
-                                        t.integer(3, "BORDER next vertex id"), t.lineNumber()});
+            m_result.borders.push_back(
+                {t.integer(1, QT_TRANSLATE_NOOP("stratamesh::Core", "BORDER id")),
+                 t.integer(2, QT_TRANSLATE_NOOP("stratamesh::Core", "BORDER corner vertex id")),
+                 t.integer(3, QT_TRANSLATE_NOOP("stratamesh::Core", "BORDER next vertex id")),
+                 t.lineNumber()});
         } else if (t.is(0, "GEOLOGICAL_FEATURE")) {
             m_result.geologicalFeature = t.joined(1);
         } else if (t.is(0, "GEOLOGICAL_TYPE")) {
@@ -99,9 +103,10 @@ private:
     void readVertex()
     {
         m_tok.requireTokens(5, "VRTX id x y z");
-        const long long id = m_tok.integer(1, "vertex id");
-        const Vec3 p(m_tok.coordinate(2, "x coordinate"), m_tok.coordinate(3, "y coordinate"),
-                     m_tok.coordinate(4, "z coordinate"));
+        const long long id = m_tok.integer(1, QT_TRANSLATE_NOOP("stratamesh::Core", "vertex id"));
+        const Vec3 p(m_tok.coordinate(2, QT_TRANSLATE_NOOP("stratamesh::Core", "x coordinate")),
+                     m_tok.coordinate(3, QT_TRANSLATE_NOOP("stratamesh::Core", "y coordinate")),
+                     m_tok.coordinate(4, QT_TRANSLATE_NOOP("stratamesh::Core", "z coordinate")));
         defineVertex(id, p);
     }
 
@@ -110,8 +115,9 @@ private:
     void readAtom()
     {
         m_tok.requireTokens(3, "ATOM id referenced_vertex_id");
-        const long long id = m_tok.integer(1, "vertex id");
-        const long long ref = m_tok.integer(2, "referenced vertex id");
+        const long long id = m_tok.integer(1, QT_TRANSLATE_NOOP("stratamesh::Core", "vertex id"));
+        const long long ref =
+            m_tok.integer(2, QT_TRANSLATE_NOOP("stratamesh::Core", "referenced vertex id"));
         const auto it = m_ids.find(ref);
         if (it == m_ids.end())
             m_tok.fail(MessageText{
@@ -144,9 +150,12 @@ private:
     {
         m_tok.requireTokens(4, "TRGL vertex_id vertex_id vertex_id");
         const int face = currentFace();
-        const long long a = m_tok.integer(1, "TRGL vertex id");
-        const long long b = m_tok.integer(2, "TRGL vertex id");
-        const long long c = m_tok.integer(3, "TRGL vertex id");
+        const long long a =
+            m_tok.integer(1, QT_TRANSLATE_NOOP("stratamesh::Core", "TRGL vertex id"));
+        const long long b =
+            m_tok.integer(2, QT_TRANSLATE_NOOP("stratamesh::Core", "TRGL vertex id"));
+        const long long c =
+            m_tok.integer(3, QT_TRANSLATE_NOOP("stratamesh::Core", "TRGL vertex id"));
         if (a == b || b == c || a == c)
             m_tok.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "TRGL uses the same vertex id twice"));
         const Triangle tri{localVertex(a, face), localVertex(b, face), localVertex(c, face)};

@@ -230,7 +230,7 @@ void OutputPlan::commit()
                                 "internal error: the %1 was never written (nothing was written)"),
                             {o->role}});
     std::size_t done = 0;
-    std::string failure;
+    std::string failure; // the system's reason
     for (; done < m_outputs.size(); ++done) {
         Output &o = *m_outputs[done];
         // A replaced file is kept under a second name until every rename succeeded.
@@ -240,7 +240,7 @@ void OutputPlan::commit()
                 o.backup = backup;
         }
         if (::rename(o.temporary.c_str(), o.path.c_str()) != 0) {
-            failure = "cannot replace the file: " + systemError(errno);
+            failure = systemError(errno);
             break;
         }
         o.temporary.clear();
@@ -256,7 +256,11 @@ void OutputPlan::commit()
         }
         if (!m_outputs[done]->backup.empty())
             (void)::unlink(m_outputs[done]->backup.c_str());
-        throw FileError(m_outputs[done]->path, 0, failure + " (no output was written)");
+        throw FileError(
+            m_outputs[done]->path, 0,
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "cannot replace the file: %1 (no output was written)"),
+                        {failure}});
     }
     m_committed = true;
     for (const auto &o : m_outputs)

@@ -138,7 +138,8 @@ private:
         if (!type)
             m_in.fail(MessageText{
                 QT_TRANSLATE_NOOP("stratamesh::Core", "unknown mesh entity type '%1'"), {f[1]}});
-        const long long n = m_in.integer(f[2], "an entity count");
+        const long long n =
+            m_in.integer(f[2], QT_TRANSLATE_NOOP("stratamesh::Core", "an entity count"));
         // Every entity takes two lines: a larger count cannot be honest.
         if (std::size_t(n) > m_in.size())
             m_in.fail(MessageText{
@@ -163,7 +164,8 @@ private:
                 QT_TRANSLATE_NOOP("stratamesh::Core", "%1 line has %2 fields, version %3 needs %4"),
                 {typeName, std::to_string(f.size()), std::to_string(m_out.version),
                  std::to_string(minFields)}});
-        const long long id = m_in.integer(f[1], "an entity id");
+        const long long id =
+            m_in.integer(f[1], QT_TRANSLATE_NOOP("stratamesh::Core", "an entity id"));
         auto &list = m_out.entities[int(type)];
         if (std::size_t(id) >= list.size())
             m_in.fail(
@@ -190,7 +192,8 @@ private:
         } else {
             // RINGMesh skips the first field ("boundary") without looking at it.
             for (std::size_t i = 1; i < second.size(); ++i)
-                e.boundaries.push_back(int(m_in.integer(second[i], "a boundary id")));
+                e.boundaries.push_back(int(m_in.integer(
+                    second[i], QT_TRANSLATE_NOOP("stratamesh::Core", "a boundary id"))));
         }
     }
 
@@ -306,7 +309,7 @@ std::vector<GmGeologicalEntity> parseGmGeologicalEntities(const std::string &tex
         e.name = line[2];
         e.feature = line[3];
         e.line = in.number();
-        in.integer(line[1], "a geological entity id");
+        in.integer(line[1], QT_TRANSLATE_NOOP("stratamesh::Core", "a geological entity id"));
         const std::vector<std::string> &children =
             in.following(e.type + " " + line[1] + " children");
         std::optional<GmEntityType> childType;
@@ -317,7 +320,7 @@ std::vector<GmGeologicalEntity> parseGmGeologicalEntities(const std::string &tex
         else if (e.type == "Layer")
             childType = GmEntityType::Region;
         for (const std::string &c : children) {
-            const long long id = in.integer(c, "a child id");
+            const long long id = in.integer(c, QT_TRANSLATE_NOOP("stratamesh::Core", "a child id"));
             if (childType && std::size_t(id) >= mesh.of(*childType).size())
                 in.fail(MessageText{
                     QT_TRANSLATE_NOOP("stratamesh::Core",

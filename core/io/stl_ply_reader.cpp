@@ -109,9 +109,12 @@ VolumeMesh readWithOpenMesh(const std::string &path)
     for (const auto v : mesh.vertices()) {
         const auto p = mesh.point(v);
         m.points.push_back({p[0], p[1], p[2]});
-        if (const std::string problem = pointProblem(m.points.back()); !problem.empty())
+        if (MessageText problem = pointProblem(m.points.back()); !problem.pattern.empty())
             throw FileError(path, 0,
-                            "vertex " + std::to_string(v.idx()) + " (numbered from 0): " + problem);
+                            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                          "vertex %1 (numbered from 0): %2"),
+                                        {std::to_string(v.idx())},
+                                        {std::move(problem)}});
     }
     for (const auto f : mesh.faces()) {
         Triangle t;
@@ -217,9 +220,12 @@ VolumeMesh readAsciiPly(const std::string &path)
             if (e.name == "vertex") {
                 if (x < 0 || y < 0 || z < 0)
                     c.fail(QT_TRANSLATE_NOOP("stratamesh::Core", "vertices without x, y and z"));
-                if (const std::string problem = pointProblem(point); !problem.empty())
-                    c.fail("vertex " + std::to_string(m.points.size())
-                           + " (numbered from 0, as faces index it): " + problem);
+                if (MessageText problem = pointProblem(point); !problem.pattern.empty())
+                    c.fail(MessageText{
+                        QT_TRANSLATE_NOOP("stratamesh::Core",
+                                          "vertex %1 (numbered from 0, as faces index it): %2"),
+                        {std::to_string(m.points.size())},
+                        {std::move(problem)}});
                 m.points.push_back(point);
             } else if (e.name == "face" && indices >= 0) {
                 if (face.size() < 3)

@@ -109,8 +109,10 @@ VolumeMesh readAsciiStl(const std::string &path)
             const auto v = expect("vertex", 4);
             const Vec3 p(c.toDouble(v[1], "a coordinate"), c.toDouble(v[2], "a coordinate"),
                          c.toDouble(v[3], "a coordinate"));
-            if (const std::string problem = pointProblem(p); !problem.empty())
-                c.fail("facet " + std::to_string(facet) + ": " + problem);
+            if (MessageText problem = pointProblem(p); !problem.pattern.empty())
+                c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "facet %1: %2"),
+                                   {std::to_string(facet)},
+                                   {std::move(problem)}});
             tri[k] = welder.vertex(p);
         }
         c.nextNonBlank("endloop");
@@ -167,8 +169,11 @@ VolumeMesh readBinaryStl(const std::string &path, const std::string &data)
         for (int k = 0; k < 3; ++k) {
             const char *xyz = corners + 12 * k;
             const Vec3 p(floatAt(xyz), floatAt(xyz + 4), floatAt(xyz + 8));
-            if (const std::string problem = pointProblem(p); !problem.empty())
-                throw FileError(path, 0, "facet " + std::to_string(f + 1) + ": " + problem);
+            if (MessageText problem = pointProblem(p); !problem.pattern.empty())
+                throw FileError(path, 0,
+                                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "facet %1: %2"),
+                                            {std::to_string(f + 1)},
+                                            {std::move(problem)}});
             tri[k] = welder.vertex(p);
         }
         if (degenerate(tri))

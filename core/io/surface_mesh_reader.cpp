@@ -94,8 +94,11 @@ Vec3 readPoint(const std::vector<std::string_view> &w, std::size_t first, const 
                             MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
                                                           "coordinate '%1' is not a number"),
                                         {std::string(token)}});
-        if (const std::string problem = coordinateProblem(p[k]); !problem.empty())
-            throw FileError(path, line, "coordinate '" + std::string(token) + "' " + problem);
+        if (MessageText problem = coordinateProblem(p[k]); !problem.pattern.empty())
+            throw FileError(path, line,
+                            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "coordinate '%1' %2"),
+                                        {std::string(token)},
+                                        {std::move(problem)}});
     }
     return p;
 }

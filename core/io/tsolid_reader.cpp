@@ -212,8 +212,10 @@ private:
                 {t[0]}});
         const long long vid = id(t[1], "a vertex id");
         const Vec3 p(c.toDouble(t[2], "x"), c.toDouble(t[3], "y"), c.toDouble(t[4], "z"));
-        if (const std::string problem = pointProblem(p); !problem.empty())
-            c.fail(t[0] + " " + t[1] + ": " + problem);
+        if (MessageText problem = pointProblem(p); !problem.pattern.empty())
+            c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 %2: %3"),
+                               {std::string(t[0]), std::string(t[1])},
+                               {std::move(problem)}});
         if (!vertices.emplace(vid, Vertex{static_cast<int>(mesh.points.size()), volume}).second)
             c.fail(MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "vertex id %1 is used twice"),
                                {std::to_string(vid)}});

@@ -6,6 +6,8 @@
 #include <vtkNew.h>
 #include <vtkObject.h>
 
+#define QT_TRANSLATE_NOOP(context, text) text
+
 namespace stratamesh {
 
 namespace {
@@ -55,22 +57,29 @@ int pointCountOf(int type)
 
 } // namespace
 
-std::string vtkCellProblem(long long cell, int type, const long long *ids, long long count,
+MessageText vtkCellProblem(long long cell, int type, const long long *ids, long long count,
                            long long points)
 {
     const int expected = pointCountOf(type);
-    if ((expected > 0 && count != expected) || count < 1 || (type == VTK_POLY_LINE && count < 2))
-        return "cell " + std::to_string(cell) + " (numbered from 0, VTK type "
-               + std::to_string(type) + ") has " + std::to_string(count) + " point ids"
-               + (expected > 0 ? ", its type needs " + std::to_string(expected) : "");
+    const std::string c = std::to_string(cell), t = std::to_string(type);
+    if ((expected > 0 && count != expected) || count < 1 || (type == VTK_POLY_LINE && count < 2)) {
+        if (expected > 0)
+            return {QT_TRANSLATE_NOOP("stratamesh::Core", "cell %1 (numbered from 0, VTK type %2) "
+                                                          "has %3 point ids, its type needs %4"),
+                    {c, t, std::to_string(count), std::to_string(expected)}};
+        return {QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "cell %1 (numbered from 0, VTK type %2) has %3 point ids"),
+                {c, t, std::to_string(count)}};
+    }
     if (expected < 0)
-        return "cell " + std::to_string(cell) + " has VTK type " + std::to_string(type)
-               + ", which StrataMesh does not exchange (tets, pyramids, wedges, triangles, lines "
-                 "and vertices only)";
+        return {QT_TRANSLATE_NOOP("stratamesh::Core",
+                                  "cell %1 has VTK type %2, which StrataMesh does not exchange "
+                                  "(tets, pyramids, wedges, triangles, lines and vertices only)"),
+                {c, t}};
     for (long long k = 0; k < count; ++k)
         if (ids[k] < 0 || ids[k] >= points)
-            return "cell " + std::to_string(cell) + " uses point " + std::to_string(ids[k]) + " of "
-                   + std::to_string(points);
+            return {QT_TRANSLATE_NOOP("stratamesh::Core", "cell %1 uses point %2 of %3"),
+                    {c, std::to_string(ids[k]), std::to_string(points)}};
     return {};
 }
 

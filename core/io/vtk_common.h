@@ -1,6 +1,8 @@
 // Names shared by the VTK writer and reader, and capture of VTK's error messages.
 #pragma once
 
+#include "common/message_text.h"
+
 #include <array>
 #include <string>
 
@@ -30,9 +32,9 @@ constexpr std::array<int, 6> vtkWedgeMap{0, 2, 1, 3, 5, 4};
 // Why cell `cell` (numbered from 0) of VTK type `type` with these `count` point ids cannot be
 // read, checked in this order: a point-id count its type does not have, a type StrataMesh does
 // not exchange (tets, pyramids, wedges, triangles, lines, vertices), a point id outside
-// 0..points-1. Empty when it can be read. Shared by the XML path and the legacy parser, so that
-// both refuse the same cells in the same words.
-std::string vtkCellProblem(long long cell, int type, const long long *ids, long long count,
+// 0..points-1. An empty pattern when it can be read. Shared by the XML path and the legacy parser,
+// so that both refuse the same cells in the same words.
+MessageText vtkCellProblem(long long cell, int type, const long long *ids, long long count,
                            long long points);
 
 // Collects the ErrorEvent messages of a VTK object instead of printing them.

@@ -178,7 +178,7 @@ std::string typeText(VtkLegacyType type)
 
 // One ASCII value of a numeric type as VTK stores it, read through GetComponent (a double).
 // Returns false with `problem` set when the token is not such a value.
-bool asciiValue(std::string_view token, VtkLegacyType type, double &value, std::string &problem)
+bool asciiValue(std::string_view token, VtkLegacyType type, double &value, MessageText &problem)
 {
     if (type == VtkLegacyType::Float || type == VtkLegacyType::Double) {
         float f = 0;
@@ -189,13 +189,14 @@ bool asciiValue(std::string_view token, VtkLegacyType type, double &value, std::
         }
         if (parseSpecial(token, value))
             return true;
-        problem = "is not a number";
+        problem = {QT_TRANSLATE_NOOP("stratamesh::Core", "is not a number")};
         return false;
     }
     if (type == VtkLegacyType::UnsignedLong || type == VtkLegacyType::UInt64) {
         unsigned long long u = 0;
         if (!parseUnsigned(token, u)) {
-            problem = "is not a whole number from 0 to 18446744073709551615";
+            problem = {QT_TRANSLATE_NOOP("stratamesh::Core",
+                                         "is not a whole number from 0 to 18446744073709551615")};
             return false;
         }
         value = static_cast<double>(u);
@@ -203,7 +204,7 @@ bool asciiValue(std::string_view token, VtkLegacyType type, double &value, std::
     }
     long long v = 0;
     if (!parseWhole(token, v)) {
-        problem = "is not an integer";
+        problem = {QT_TRANSLATE_NOOP("stratamesh::Core", "is not an integer")};
         return false;
     }
     long long low = std::numeric_limits<int>::min(), high = std::numeric_limits<int>::max();
@@ -226,7 +227,8 @@ bool asciiValue(std::string_view token, VtkLegacyType type, double &value, std::
         break;
     }
     if (v < low || v > high) {
-        problem = "is out of range for " + typeText(type);
+        problem = {QT_TRANSLATE_NOOP("stratamesh::Core", "is out of range for %1"),
+                   {typeText(type)}};
         return false;
     }
     switch (type) {
@@ -289,9 +291,16 @@ std::size_t needBytes(VtkLegacyCursor &in, const VtkValuesAt &at, long long coun
         count >= 0 && (size == 0 ? (n + 7) / 8 <= in.remaining() : n <= in.remaining() / size);
     if (!fits)
         in.fail(at.headerLine,
-                at.what + " data is cut short: " + std::to_string(count)
-                    + (size == 0 ? " bits" : " values of " + std::to_string(size) + " bytes") + ", "
-                    + std::to_string(in.remaining()) + " bytes are left");
+                size == 0
+                    ? MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                    "%1 data is cut short: %2 bits, %3 bytes "
+                                                    "are left"),
+                                  {at.what, std::to_string(count), std::to_string(in.remaining())}}
+                    : MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                    "%1 data is cut short: %2 values of %3 "
+                                                    "bytes, %4 bytes are left"),
+                                  {at.what, std::to_string(count), std::to_string(size),
+                                   std::to_string(in.remaining())}});
     return size == 0 ? static_cast<std::size_t>((n + 7) / 8) : static_cast<std::size_t>(n) * size;
 }
 
@@ -319,8 +328,8 @@ void readTokens(VtkLegacyCursor &in, const VtkValuesAt &at, long long count, Tak
                     MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
                                                   "%1 declares %2 values, the file ends after %3"),
                                 {at.what, std::to_string(count), std::to_string(i)}});
-        const std::string problem = take(token, i);
-        if (!problem.empty()) {
+        MessageText problem = take(token, i);
+        if (!problem.pattern.empty()) {
             const bool word = (token[0] >= 'A' && token[0] <= 'Z') || token[0] == '_'
                               || (token[0] >= 'a' && token[0] <= 'z');
             if (word)
@@ -330,7 +339,10 @@ void readTokens(VtkLegacyCursor &in, const VtkValuesAt &at, long long count, Tak
                         QT_TRANSLATE_NOOP("stratamesh::Core",
                                           "%1 declares %2 values, \"%3\" comes after %4"),
                         {at.what, std::to_string(count), vtkPrintable(token), std::to_string(i)}});
-            in.fail(in.tokenLine(), at.what + " value '" + vtkPrintable(token) + "' " + problem);
+            in.fail(in.tokenLine(),
+                    MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "%1 value '%2' %3"),
+                                {at.what, vtkPrintable(token)},
+                                {std::move(problem)}});
         }
         last = in.tokenLine();
     }
@@ -369,13 +381,13 @@ std::vector<double> readVtkNumbers(VtkLegacyCursor &in, const VtkValuesAt &at, V
     values.reserve(static_cast<std::size_t>(count));
     readTokens(in, at, count, [&](std::string_view token, long long) {
         double v = 0;
-        std::string problem;
+        MessageText problem;
         if (!asciiValue(token, type, v, problem))
             return problem;
         values.push_back(v);
         if (lines)
             lines->push_back(in.tokenLine());
-        return std::string();
+        return MessageText();
     });
     return values;
 }
@@ -401,14 +413,15 @@ std::vector<long long> readVtkIntegers(VtkLegacyCursor &in, const VtkValuesAt &a
     readTokens(in, at, count, [&](std::string_view token, long long) {
         long long v = 0;
         if (!parseWhole(token, v))
-            return std::string("is not an integer");
+            return MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "is not an integer")};
         if (bytes == 4
             && (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()))
-            return std::string("is out of range for a 4-byte integer");
+            return MessageText{
+                QT_TRANSLATE_NOOP("stratamesh::Core", "is out of range for a 4-byte integer")};
         values.push_back(v);
         if (lines)
             lines->push_back(in.tokenLine());
-        return std::string();
+        return MessageText();
     });
     return values;
 }

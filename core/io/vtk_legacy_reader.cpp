@@ -230,10 +230,11 @@ private:
             : m_poly ? "FIELD, POINTS, VERTICES, LINES, POLYGONS, TRIANGLE_STRIPS, CELL_DATA, "
                        "POINT_DATA"
                      : "FIELD, POINTS, CELLS, CELL_TYPES, CELL_DATA, POINT_DATA";
-        fail(m_in.tokenLine(),
-             "\"" + vtkPrintable(token) + "\" is not a keyword of "
-                 + (data.empty() ? m_poly ? "POLYDATA" : "UNSTRUCTURED_GRID" : data) + " (" + known
-                 + ")");
+        fail(
+            m_in.tokenLine(),
+            MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "\"%1\" is not a keyword of %2 (%3)"),
+                        {vtkPrintable(token),
+                         data.empty() ? m_poly ? "POLYDATA" : "UNSTRUCTURED_GRID" : data, known}});
     }
 
     void points()
@@ -259,9 +260,12 @@ private:
         skipVtkMetadata(m_in, 3);
         for (long long i = 0; i < n; ++i) {
             const double *p = &m_data.points[static_cast<std::size_t>(3 * i)];
-            if (const std::string problem = pointProblem(p); !problem.empty())
+            if (MessageText problem = pointProblem(p); !problem.pattern.empty())
                 fail(lines.empty() ? line : lines[static_cast<std::size_t>(3 * i)],
-                     "point " + std::to_string(i) + " (numbered from 0): " + problem);
+                     MessageText{
+                         QT_TRANSLATE_NOOP("stratamesh::Core", "point %1 (numbered from 0): %2"),
+                         {std::to_string(i)},
+                         {std::move(problem)}});
         }
     }
 
@@ -446,10 +450,10 @@ private:
         const auto points = static_cast<long long>(m_data.points.size() / 3);
         for (std::size_t c = 0; c < m_data.cellTypes.size(); ++c) {
             const long long begin = m_data.offsets[c], size = m_data.offsets[c + 1] - begin;
-            const std::string problem = vtkCellProblem(
+            const MessageText problem = vtkCellProblem(
                 static_cast<long long>(c), m_data.cellTypes[c],
                 size > 0 ? m_data.connectivity.data() + begin : nullptr, size, points);
-            if (!problem.empty())
+            if (!problem.pattern.empty())
                 fail(cellLines[c], problem);
         }
     }
@@ -478,14 +482,23 @@ private:
         m_cellSection = key == "CELL_DATA";
         const long long have = m_cellSection ? static_cast<long long>(m_data.cellTypes.size())
                                              : static_cast<long long>(m_data.points.size() / 3);
-        if (n != have)
-            fail(line, key + " declares " + std::to_string(n) + " values, "
-                           + (m_cellSection ? "the cell section" : std::string("POINTS"))
-                           + (m_cellSection && !m_cellsLine
-                                  ? std::string(" is missing: the file has no cells")
-                                  : " at line "
-                                        + std::to_string(m_cellSection ? m_cellsLine : m_pointsLine)
-                                        + " declares " + std::to_string(have)));
+        if (n != have) {
+            if (m_cellSection && !m_cellsLine)
+                fail(line, MessageText{QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                         "%1 declares %2 values, the cell section "
+                                                         "is missing: the file has no cells"),
+                                       {key, std::to_string(n)}});
+            fail(line, MessageText{m_cellSection
+                                       ? QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                           "%1 declares %2 values, the cell "
+                                                           "section at line %3 declares %4")
+                                       : QT_TRANSLATE_NOOP("stratamesh::Core",
+                                                           "%1 declares %2 values, POINTS at line "
+                                                           "%3 declares %4"),
+                                   {key, std::to_string(n),
+                                    std::to_string(m_cellSection ? m_cellsLine : m_pointsLine),
+                                    std::to_string(have)}});
+        }
         m_tuples = n;
     }
 

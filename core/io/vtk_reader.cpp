@@ -246,9 +246,12 @@ VolumeMesh readVtk(const std::string &path)
     for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
         Vec3 &p = mesh.points[static_cast<std::size_t>(i)];
         data->GetPoint(i, p.data());
-        if (const std::string problem = pointProblem(p); !problem.empty())
-            throw FileError(path, 0,
-                            "point " + std::to_string(i) + " (numbered from 0): " + problem);
+        if (MessageText problem = pointProblem(p); !problem.pattern.empty())
+            throw FileError(
+                path, 0,
+                MessageText{QT_TRANSLATE_NOOP("stratamesh::Core", "point %1 (numbered from 0): %2"),
+                            {std::to_string(i)},
+                            {std::move(problem)}});
     }
 
     vtkDataArray *regionIds = intArray(data, vtkarrays::regionId);
@@ -265,9 +268,9 @@ VolumeMesh readVtk(const std::string &path)
         const int type = data->GetCellType(c);
         data->GetCellPoints(c, ids);
         const vtkIdType count = ids->GetNumberOfIds();
-        if (const std::string problem =
+        if (MessageText problem =
                 vtkCellProblem(c, type, ids->GetPointer(0), count, data->GetNumberOfPoints());
-            !problem.empty())
+            !problem.pattern.empty())
             throw FileError(path, 0, problem);
         auto id = [&](vtkIdType k) { return static_cast<int>(ids->GetId(k)); };
         switch (type) {

@@ -187,6 +187,25 @@ private slots:
         QCOMPARE(panel->cellText(row, MessagePanel::LocationColumn),
                  QStringLiteral("broken.off:4"));
         QCOMPARE(panel->message(row).file, path);
+
+        // A sentence inside a sentence (the coordinate's problem) is translated too.
+        const QString far = dir.filePath(QStringLiteral("far.off"));
+        QFile farFile(far);
+        QVERIFY(farFile.open(QIODevice::WriteOnly));
+        farFile.write("OFF\n3 1 0\n0 0 0\n1 0 1e300\n0 1 0\n3 0 1 2\n");
+        farFile.close();
+        QCOMPARE(installTranslations(QStringLiteral("fr")), QStringLiteral("fr"));
+        const bool farLoaded = load(*m_window, far);
+        installTranslations(QStringLiteral("en"));
+        QVERIFY(!farLoaded);
+        QVERIFY(panel->count(Message::Severity::Error) >= 1);
+        int last = panel->count() - 1;
+        while (panel->message(last).severity != Message::Severity::Error)
+            --last;
+        QCOMPARE(panel->cellText(last, MessagePanel::TextColumn),
+                 QStringLiteral("la coordonnée '1e300' dépasse la borne de 1e15 qui garde finis "
+                                "les carrés des distances et les volumes"));
+        QCOMPARE(panel->cellText(last, MessagePanel::LocationColumn), QStringLiteral("far.off:4"));
     }
 
     void missingFileIsReported()

@@ -211,6 +211,21 @@ private slots:
             QCOMPARE(e.text().pattern, std::string("coordinate '%1' is not a number"));
             QCOMPARE(e.text().text(), e.cause());
         }
+        // A coordinate out of bounds: its problem is a sentence of its own, translated apart.
+        try {
+            readModel(writeFile(dir, "far.off", "OFF\n3 1 0\n0 0 0\n1 0 1e300\n0 1 0\n3 0 1 2\n"));
+            QFAIL("no FileError raised");
+        } catch (const FileError &e) {
+            QCOMPARE(e.line(), 4);
+            QCOMPARE(e.text().pattern, std::string("coordinate '%1' %2"));
+            QCOMPARE(e.text().args, std::vector<std::string>{"1e300"});
+            QCOMPARE(e.text().parts.size(), std::size_t(1));
+            QCOMPARE(e.text().parts[0].pattern,
+                     std::string("is beyond the bound of 1e15 that keeps squared distances and "
+                                 "volumes finite"));
+            QCOMPARE(e.cause(), std::string("coordinate '1e300' is beyond the bound of 1e15 that "
+                                            "keeps squared distances and volumes finite"));
+        }
     }
 };
 
