@@ -3526,7 +3526,7 @@ Click to show it in the views</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Refinement rounds put sites on the corners and lines around each topology change, as close as the nearest other feature, and grade the surfaces around them: more features are kept, with up to 4 times the sites asked and more triangles under 30°.</source>
+        <source>Refinement rounds put sites on the corners and lines around each topology change, as close as the nearest other feature, and grade the surfaces around them: more features are kept, with up to 4 times the sites asked plus the sites pinned on the features (9 times in all on an 8-fault network at 1000 sites), and more triangles under 30°.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -109,7 +109,8 @@ ParamTable<RemeshParams> makeTable()
         "stratamesh::Params",
         "Refinement rounds put sites on the corners and lines around each topology change, as "
         "close as the nearest other feature, and grade the surfaces around them: more features "
-        "are kept, with up to 4 times the sites asked and more triangles under 30°.");
+        "are kept, with up to 4 times the sites asked plus the sites pinned on the features (9 "
+        "times in all on an 8-fault network at 1000 sites), and more triangles under 30°.");
     t.add(memberParam(&P::refinementPinsFeatures, i));
 
     i = {};
