@@ -3529,6 +3529,14 @@ Click to show it in the views</source>
         <source>Refinement rounds put sites on the corners and lines around each topology change, as close as the nearest other feature, and grade the surfaces around them: more features are kept, with up to 4 times the sites asked plus the sites pinned on the features (9 times in all on an 8-fault network at 1000 sites), and more triangles under 30°.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Vertex-dual tets, smallest angle:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where four Voronoi cells meet away from the surfaces, the tet of their sites is kept when it and its neighbours have no dihedral angle below this; 180 leaves the whole volume to TetGen&apos;s tets.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ProjectWorkflow</name>

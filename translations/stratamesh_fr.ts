@@ -3532,6 +3532,14 @@ Cliquer pour le montrer dans les vues</translation>
         <source>Refinement rounds put sites on the corners and lines around each topology change, as close as the nearest other feature, and grade the surfaces around them: more features are kept, with up to 4 times the sites asked plus the sites pinned on the features (9 times in all on an 8-fault network at 1000 sites), and more triangles under 30°.</source>
         <translation>Les passes de raffinement placent des sites sur les coins et les lignes autour de chaque changement de topologie, aussi près que l&apos;élément voisin le plus proche, et graduent les surfaces autour : plus d&apos;éléments sont gardés, avec jusqu&apos;à 4 fois les sites demandés plus les sites fixés sur les éléments (9 fois en tout sur un réseau de 8 failles à 1000 sites), et plus de triangles sous 30°.</translation>
     </message>
+    <message>
+        <source>&amp;Vertex-dual tets, smallest angle:</source>
+        <translation>Plus petit angle des tétraèdres duaux des sommets de &amp;Voronoï :</translation>
+    </message>
+    <message>
+        <source>Where four Voronoi cells meet away from the surfaces, the tet of their sites is kept when it and its neighbours have no dihedral angle below this; 180 leaves the whole volume to TetGen&apos;s tets.</source>
+        <translation>Là où quatre cellules de Voronoï se rencontrent loin des surfaces, le tétraèdre de leurs sites est gardé si ni lui ni ses voisins n&apos;ont d&apos;angle dièdre sous cette valeur ; 180 laisse tout le volume aux tétraèdres de TetGen.</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::ProjectWorkflow</name>

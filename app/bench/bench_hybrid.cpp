@@ -58,12 +58,12 @@ int runHybridBench(const std::string &dataDir, int threads, int repeat)
             const VolumeMesh &m = result.mesh;
             if (r == 0) {
                 firstCells = m.cells.size();
-                std::printf("  %zu cells: %zu tets, %zu prisms, %zu pyramids; %s; %zu thesis "
-                            "cells kept, %zu invalid found, %zu repaired\n",
+                std::printf("  %zu cells: %zu tets, %zu prisms, %zu pyramids; %s; %zu segment-dual "
+                            "and %zu vertex-dual cells kept, %zu invalid found, %zu repaired\n",
                             m.cells.size(), m.countCells(CellType::Tet),
                             m.countCells(CellType::Prism), m.countCells(CellType::Pyramid),
                             result.validity.valid() ? "valid" : "NOT valid", result.segmentDualKept,
-                            result.invalidFound, result.repaired);
+                            result.vertexDualKept, result.invalidFound, result.repaired);
             } else if (m.cells.size() != firstCells) {
                 throw std::runtime_error("run " + std::to_string(r + 1)
                                          + " gave another mesh than the first");

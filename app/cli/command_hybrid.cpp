@@ -35,6 +35,7 @@ QJsonObject typesJson(const std::array<TypeQuality, 3> &byType)
         if (s.cells > 0) {
             o["min_dihedral_deg"] = s.minDihedral;
             o["max_dihedral_deg"] = s.maxDihedral;
+            o["mean_min_dihedral_deg"] = s.meanMinDihedral;
         }
         if (t == CellType::Tet)
             o["slivers"] = static_cast<qint64>(s.slivers);
@@ -146,6 +147,18 @@ int runHybrid(CommandArgs &args)
                                {"rejected_taken", static_cast<qint64>(r.segmentDual.rejectedTaken)},
                                {"rejected_quad_on_surface",
                                 static_cast<qint64>(r.segmentDual.rejectedQuadOnSurface)},
+                               {"vertex_dual_cells", static_cast<qint64>(r.vertexDualKept)},
+                               {"vertex_dual",
+                                QJsonObject{
+                                    {"candidates", static_cast<qint64>(r.vertexDual.candidates)},
+                                    {"rejected_shape",
+                                     static_cast<qint64>(r.vertexDual.rejectedShape)},
+                                    {"rejected_near_surface",
+                                     static_cast<qint64>(r.vertexDual.rejectedNearSurface)},
+                                    {"rejected_near_cells",
+                                     static_cast<qint64>(r.vertexDual.rejectedNearCells)},
+                                    {"rejected_outside",
+                                     static_cast<qint64>(r.vertexDual.rejectedOutside)}}},
                                {"repair_rounds", r.repairRounds},
                                {"fell_back_to_tetgen", r.fellBackToTetgen}}},
         {"repair_log",

@@ -56,6 +56,7 @@ QJsonArray regionsJson(const Model &model, const TetmeshSide &side)
             const TypeQuality &q = quality[r][int(CellType::Tet)];
             o["min_dihedral_deg"] = q.minDihedral;
             o["max_dihedral_deg"] = q.maxDihedral;
+            o["mean_min_dihedral_deg"] = q.meanMinDihedral;
             o["slivers"] = static_cast<qint64>(q.slivers);
         }
         regions.append(o);

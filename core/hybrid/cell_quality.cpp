@@ -56,6 +56,7 @@ namespace {
 void addCell(TypeQuality &t, CellType type, const DihedralRange &r)
 {
     ++t.cells;
+    t.meanMinDihedral += (r.minDegrees - t.meanMinDihedral) / static_cast<double>(t.cells);
     t.minDihedral = std::min(t.minDihedral, r.minDegrees);
     t.maxDihedral = std::max(t.maxDihedral, r.maxDegrees);
     if (type == CellType::Tet && (r.minDegrees < 5.0 || r.maxDegrees > 175.0))

@@ -23,6 +23,9 @@ struct TypeQuality {
     std::size_t cells = 0;
     double minDihedral = 180.0; // over the cells of the type; 180/0 when there is none
     double maxDihedral = 0.0;
+    // Mean over the cells of each one's smallest dihedral: the bulk of the shapes, where min and
+    // max only tell the worst cell.
+    double meanMinDihedral = 0.0;
     std::size_t slivers = 0; // tets only: a dihedral below 5 or above 175 degrees
 };
 

@@ -5,6 +5,7 @@
 #include "complexity/box_elements.h"
 #include "hybrid/cell_faces.h"
 #include "hybrid/surface_sites.h"
+#include "hybrid/vertex_dual_cells.h"
 #include "io/mesh_writer.h"
 #include "model/region_volume.h"
 #include "model/topology.h"
@@ -59,11 +60,13 @@ struct Fill {
 
 // Builds the cavity model: the remesh triangles no kept cell lies on, plus per region a surface
 // of the cell faces that face the cavity (normals into it), and runs TetGen on it.
-void fillCavities(const Model &remesh, const std::vector<Cell> &kept,
-                  const std::vector<int> &keptRegion, const HybridParams &params,
-                  const std::string &polyPath, Fill &fill, Progress &progress)
+// Points: the remesh's, then the interior sites of the vertex-dual cells (basePoints), then apexes.
+void fillCavities(const Model &remesh, const std::vector<Vec3> &basePoints,
+                  const std::vector<Cell> &kept, const std::vector<int> &keptRegion,
+                  const HybridParams &params, const std::string &polyPath, Fill &fill,
+                  Progress &progress)
 {
-    const std::vector<Vec3> &p = remesh.vertices;
+    const std::vector<Vec3> &p = basePoints;
     const int nPoints = static_cast<int>(p.size());
     fill.cells = kept;
     fill.region = keptRegion;
@@ -235,12 +238,12 @@ void fillCavities(const Model &remesh, const std::vector<Cell> &kept,
 
 // The final mesh: remesh points, apexes, TetGen's own points; thesis cells, pyramids, tets; the
 // remesh triangles with their surfaces.
-VolumeMesh assemble(const Model &remesh, const Fill &fill)
+VolumeMesh assemble(const Model &remesh, const std::vector<Vec3> &basePoints, const Fill &fill)
 {
     VolumeMesh m;
     m.name = remesh.name;
     m.zPositiveDepth = remesh.zPositiveDepth;
-    m.points = remesh.vertices;
+    m.points = basePoints;
     m.points.insert(m.points.end(), fill.apexes.begin(), fill.apexes.end());
     std::map<PointKey, int> known;
     for (std::size_t i = 0; i < m.points.size(); ++i)
@@ -343,6 +346,12 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     const std::vector<int> pointSite = nearestSites(remesh.vertices, sites);
     result.segmentDual = buildSegmentDualCells(remesh, pointSite, params.cells);
     result.invalidFound = result.segmentDual.rejectedShape;
+    result.vertexDual =
+        buildVertexDualCells(remesh, sites, pointSite, result.segmentDual.cells,
+                             static_cast<int>(remesh.vertices.size()), params.vertexCells);
+    std::vector<Vec3> basePoints = remesh.vertices;
+    basePoints.insert(basePoints.end(), result.vertexDual.points.begin(),
+                      result.vertexDual.points.end());
     result.timings.cellsSeconds = since(t);
 
     MixedMeshCheckParams check;
@@ -352,6 +361,11 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     Progress fillStage = steps.step(4, "Fill and check");
     std::vector<Cell> kept = result.segmentDual.cells;
     std::vector<int> keptRegion = result.segmentDual.region;
+    std::vector<char> keptVertexDual(kept.size(), 0);
+    kept.insert(kept.end(), result.vertexDual.cells.begin(), result.vertexDual.cells.end());
+    keptRegion.insert(keptRegion.end(), result.vertexDual.region.begin(),
+                      result.vertexDual.region.end());
+    keptVertexDual.resize(kept.size(), 1);
     for (int round = 0;; ++round) {
         // Without thesis cells the fill is the last resort already.
         const bool lastResort = round > params.repairRounds || kept.empty();
@@ -359,6 +373,7 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
             result.repaired += kept.size();
             kept.clear();
             keptRegion.clear();
+            keptVertexDual.clear();
             result.fellBackToTetgen = true;
         }
         t = Clock::now();
@@ -366,8 +381,8 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
         // Rounds are few and each shorter than the last: round r gets [1 - 2^-r, 1 - 2^-(r+1)].
         const double from = 1.0 - std::ldexp(1.0, -round), to = 1.0 - std::ldexp(1.0, -round - 1);
         Progress roundPart(fillStage, from, from + 0.8 * (to - from));
-        fillCavities(remesh, kept, keptRegion, params, round == 0 ? params.cavityPolyPath : "",
-                     fill, roundPart);
+        fillCavities(remesh, basePoints, kept, keptRegion, params,
+                     round == 0 ? params.cavityPolyPath : "", fill, roundPart);
         fillStage.tick(from + 0.8 * (to - from), "mixed-mesh check");
         result.timings.fillSeconds += since(t);
         result.tetgenOutcome = fill.tetgen.outcome;
@@ -376,13 +391,15 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
         std::string firstProblem;
         if (fill.tetgen.outcome == TetgenOutcome::Ok) {
             t = Clock::now();
-            VolumeMesh mesh = assemble(remesh, fill);
+            VolumeMesh mesh = assemble(remesh, basePoints, fill);
             MixedMeshValidity validity = checkMixedMesh(mesh, check);
             result.timings.checkSeconds += since(t);
             if (validity.valid() || lastResort) {
                 result.mesh = std::move(mesh);
                 result.validity = std::move(validity);
-                result.segmentDualKept = kept.size();
+                result.vertexDualKept = static_cast<std::size_t>(
+                    std::count(keptVertexDual.begin(), keptVertexDual.end(), 1));
+                result.segmentDualKept = kept.size() - result.vertexDualKept;
                 result.transitionPyramids = fill.pyramids;
                 result.fillTets = fill.tetgen.mesh.cells.size();
                 if (!result.validity.valid())
@@ -425,6 +442,10 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
             // cells with a transition pyramid, the border row of each thin zone.
             for (std::size_t c = kept.size(); c < fill.cells.size(); ++c)
                 remove.insert(fill.owner[c]);
+            if (remove.empty()) // then the vertex-dual cells, before the thin-layer ones
+                for (std::size_t c = 0; c < kept.size(); ++c)
+                    if (keptVertexDual[c])
+                        remove.insert(static_cast<int>(c));
             if (remove.empty())
                 for (std::size_t c = 0; c < kept.size(); ++c)
                     remove.insert(static_cast<int>(c));
@@ -440,13 +461,16 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
         result.repaired += remove.size();
         std::vector<Cell> next;
         std::vector<int> nextRegion;
+        std::vector<char> nextVertexDual;
         for (std::size_t c = 0; c < kept.size(); ++c)
             if (!remove.count(static_cast<int>(c))) {
                 next.push_back(kept[c]);
                 nextRegion.push_back(keptRegion[c]);
+                nextVertexDual.push_back(keptVertexDual[c]);
             }
         kept = std::move(next);
         keptRegion = std::move(nextRegion);
+        keptVertexDual = std::move(nextVertexDual);
     }
     result.timings.totalSeconds = since(start);
     return result;

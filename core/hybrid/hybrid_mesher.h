@@ -3,19 +3,21 @@
 // valid every time:
 //   volumetric CVT of the model's bounding box (§5.2) → surfaces remeshed from those sites
 //   (chapter 4, one point per restricted-cell component, no flips or smoothing so that triangles
-//   stay dual to restricted Voronoi vertices) → segment-dual cells in thin layers (§5.3.2) →
+//   stay dual to restricted Voronoi vertices) → segment-dual cells in thin layers (§5.3.2) and
+//   vertex-dual tets where four Voronoi cells meet away from the surfaces (§5.3.3) →
 //   transition pyramids on their quad faces that face the rest of the region → the rest of each
 //   region filled with tets by TetGen (out of process), constrained to the remesh and to the
 //   triangle faces of the cells, with a hole point in every cell so that TetGen leaves their
 //   zones empty → mixed-mesh check; cells found invalid are removed and the cavity
 //   refilled (repair rounds), down to the plain TetGen mesh of the remesh as the last resort.
-// Not done: the Voronoi-vertex-dual cells of §5.3.3 and the splits of §5.4; TetGen's tets stand in
-// for them (counted as fill tets).
+// Not done: the vertex-dual cells of Voronoi vertices whose cells are cut by surfaces (Fig 5.4)
+// and the splits of §5.4; TetGen's tets stand in for them (counted as fill tets).
 #pragma once
 
 #include "common/progress.h"
 #include "hybrid/mixed_mesh_validity.h"
 #include "hybrid/segment_dual_cells.h"
+#include "hybrid/vertex_dual_cells.h"
 #include "mesh/volume_mesh.h"
 #include "model/model.h"
 #include "volume/tetgen_runner.h"
@@ -36,6 +38,7 @@ struct HybridParams {
     int surfaceIterations = 10;
     unsigned seed = 1;
     SegmentDualParams cells;
+    VertexDualParams vertexCells;
     double pyramidHeightRatio = 0.15; // apex height over the square root of the quad area
     int repairRounds = 4;
     TetgenParams tetgen; // pq1.414AY by default
@@ -53,7 +56,9 @@ struct HybridResult {
     VolumeMesh mesh;                    // empty cells when no valid mesh could be made
     MixedMeshValidity validity;         // of mesh
     SegmentDualCells segmentDual;       // candidates and rejections of §5.3.2
-    std::size_t segmentDualKept = 0;    // thesis cells in the final mesh
+    VertexDualCells vertexDual;         // candidates and rejections of §5.3.3
+    std::size_t segmentDualKept = 0;    // segment-dual cells in the final mesh
+    std::size_t vertexDualKept = 0;     // vertex-dual tets in the final mesh
     std::size_t transitionPyramids = 0; // pyramids on quads facing the tets
     std::size_t fillTets = 0;           // tets from TetGen
     std::size_t invalidFound = 0;       // cells rejected or found invalid (shape, check, TetGen)

@@ -44,6 +44,17 @@ ParamTable<HybridParams> makeTable()
     t.add(nestedParam(&P::cells, &SegmentDualParams::thinRatio, i));
 
     i = {};
+    i.key = "vertex_min_dihedral", i.flag = "--vertex-min-dihedral";
+    i.jsonKey = "vertex_min_dihedral_deg", i.minimum = 0.0, i.maximum = 180.0, i.unit = "°";
+    i.valueName = "DEG", i.decimals = 1, i.thesis = "§5.3.3";
+    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "&Vertex-dual tets, smallest angle:");
+    i.help = QT_TRANSLATE_NOOP("stratamesh::Params",
+                               "Where four Voronoi cells meet away from the surfaces, the tet of "
+                               "their sites is kept when it and its neighbours have no dihedral "
+                               "angle below this; 180 leaves the whole volume to TetGen's tets.");
+    t.add(nestedParam(&P::vertexCells, &VertexDualParams::minDihedralDegrees, i));
+
+    i = {};
     i.key = "iterations", i.flag = "--iterations", i.jsonKey = "iterations";
     i.type = ParamType::Int, i.minimum = 0, i.maximum = 100000, i.valueName = "N";
     i.thesis = "§5.2";

@@ -20,8 +20,8 @@ const ParamTable<ComplexityParams> &complexityParamTable();
 const ParamTable<TetgenParams> &tetgenParamTable();
 // iterations, alpha, lloyd (thesis §4.3).
 const ParamTable<CvtParams> &cvtParamTable();
-// sites, thin_ratio, iterations, surface_iterations, seed, max_warp, pyramid_height, quality
-// (thesis ch. 5).
+// sites, thin_ratio, vertex_min_dihedral, iterations, surface_iterations, seed, max_warp,
+// pyramid_height, quality (thesis ch. 5).
 const ParamTable<HybridParams> &hybridParamTable();
 
 } // namespace stratamesh

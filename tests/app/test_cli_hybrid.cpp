@@ -96,6 +96,8 @@ private slots:
                                 >= all["min_dihedral_deg"].toDouble());
                         QVERIFY(t["max_dihedral_deg"].toDouble()
                                 <= all["max_dihedral_deg"].toDouble());
+                        const double mean = t["mean_min_dihedral_deg"].toDouble(-1.0);
+                        QVERIFY(mean >= t["min_dihedral_deg"].toDouble() && mean <= 70.6);
                     }
                 }
                 qInfo("%s: %lld tets, %lld prisms, %lld pyramids", qPrintable(v["name"].toString()),
@@ -105,6 +107,14 @@ private slots:
             QCOMPARE(byType.value("tet"), tets);
             QCOMPARE(byType.value("prism"), prisms);
             QCOMPARE(byType.value("pyramid"), pyramids);
+            // Every cell has one origin; at 1000 sites modelA1 has a few Voronoi vertices whose
+            // four cells meet no surface (134 vertex-dual tets measured).
+            const QJsonObject origin = r["origin"].toObject();
+            QCOMPARE(
+                origin["segment_dual_cells"].toInteger() + origin["vertex_dual_cells"].toInteger()
+                    + origin["transition_pyramids"].toInteger() + origin["fill_tets"].toInteger(),
+                tets + prisms + pyramids);
+            QVERIFY(origin["vertex_dual_cells"].toInteger() > 0);
             checkCavityWithTetgen(poly);
             const VolumeMesh m = readVolumeMesh(out.toStdString());
             QCOMPARE(qint64(m.countCells(CellType::Tet)), tets);

@@ -194,12 +194,17 @@ private slots:
         HybridParams big;
         big.sites = 5000;
         QVERIFY(hybrid->start(big));
-        QTimer::singleShot(delayMs, this, [&] {
+        // A timer of this scope: when the run ends first, it must not fire into a later test with
+        // references to these locals (it did, and crashed progressOfALongRun).
+        QTimer cancelLater;
+        cancelLater.setSingleShot(true);
+        connect(&cancelLater, &QTimer::timeout, this, [&] {
             if (!job->isBusy())
                 return;
             sinceCancel.start();
             hybrid->cancelAction()->trigger();
         });
+        cancelLater.start(delayMs);
         QVERIFY(finished.wait(kTimeoutMs));
         disconnect(onProgress);
         disconnect(onCancelled);
