@@ -395,6 +395,8 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
             MixedMeshValidity validity = checkMixedMesh(mesh, check);
             result.timings.checkSeconds += since(t);
             if (validity.valid() || lastResort) {
+                // Renumbered only now: the repair above matches the mesh's ids with the cells'.
+                dropUnusedPoints(mesh);
                 result.mesh = std::move(mesh);
                 result.validity = std::move(validity);
                 result.vertexDualKept = static_cast<std::size_t>(

@@ -195,4 +195,38 @@ std::vector<std::vector<RegionSide>> regionSidesFromCells(const VolumeMesh &mesh
     return out;
 }
 
+void dropUnusedPoints(VolumeMesh &mesh)
+{
+    std::vector<int> map(mesh.points.size(), -1);
+    for (const Cell &c : mesh.cells)
+        for (int k = 0; k < c.size(); ++k)
+            map[c.nodes[k]] = 0;
+    for (const Triangle &t : mesh.triangles)
+        for (int v : t)
+            map[v] = 0;
+    for (const auto &e : mesh.edges)
+        map[e[0]] = map[e[1]] = 0;
+    for (int v : mesh.corners)
+        map[v] = 0;
+    std::vector<Vec3> kept;
+    for (std::size_t i = 0; i < map.size(); ++i)
+        if (map[i] == 0) {
+            map[i] = static_cast<int>(kept.size());
+            kept.push_back(mesh.points[i]);
+        }
+    if (kept.size() == mesh.points.size())
+        return;
+    mesh.points = std::move(kept);
+    for (Cell &c : mesh.cells)
+        for (int k = 0; k < c.size(); ++k)
+            c.nodes[k] = map[c.nodes[k]];
+    for (Triangle &t : mesh.triangles)
+        for (int &v : t)
+            v = map[v];
+    for (auto &e : mesh.edges)
+        e = {map[e[0]], map[e[1]]};
+    for (int &v : mesh.corners)
+        v = map[v];
+}
+
 } // namespace stratamesh

@@ -93,6 +93,10 @@ struct VolumeMesh {
 // out of range, repeated nodes in a cell, non-finite coordinates. Writers call it first.
 void validateMesh(const VolumeMesh &mesh);
 
+// Removes the points no cell, triangle, edge or corner uses, and renumbers the rest in order (a
+// surface remesh can leave a vertex whose triangles were all removed; Gmsh warns of such nodes).
+void dropUnusedPoints(VolumeMesh &mesh);
+
 // Signed volume: positive for a cell in the node order above. Quad faces are bilinear, whose
 // volume is the mean of their two diagonal splits (Grandy 1997, "Efficient computation of volume
 // of hexahedral cells"): exact for the trilinear cell and independent of the split, so cells

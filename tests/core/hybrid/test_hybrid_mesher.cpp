@@ -164,6 +164,12 @@ private slots:
         QCOMPARE(r.mesh.cells.size(),
                  r.segmentDualKept + r.vertexDualKept + r.transitionPyramids + r.fillTets);
         QVERIFY2(r.vertexDualKept >= 100, qPrintable(QString::number(r.vertexDualKept)));
+        // Every point is a node of a cell (Gmsh warns of nodes that are not).
+        std::vector<char> used(r.mesh.points.size(), 0);
+        for (const Cell &c : r.mesh.cells)
+            for (int k = 0; k < c.size(); ++k)
+                used[c.nodes[k]] = 1;
+        QCOMPARE(std::count(used.begin(), used.end(), 0), std::ptrdiff_t(0));
         const std::vector<double> &volume = r.validity.regionVolumes;
         const int thin = int(std::min_element(volume.begin(), volume.end()) - volume.begin());
         const int first = int(r.surfaceRemesh->vertices.size());

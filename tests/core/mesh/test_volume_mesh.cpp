@@ -64,6 +64,36 @@ private slots:
         QVERIFY(signedVolume(m, Cell::prism(9, 11, 10, 12, 14, 13)) < 0);
     }
 
+    // Unused points go; the cells, triangles, edges and corners keep their coordinates.
+    void unusedPointsAreDropped()
+    {
+        VolumeMesh m = referenceCells();
+        m.points.insert(m.points.begin() + 2, Vec3(9, 9, 9)); // unused, between used ones
+        for (Cell &c : m.cells)
+            for (int k = 0; k < c.size(); ++k)
+                c.nodes[k] += c.nodes[k] >= 2 ? 1 : 0;
+        m.points.push_back(Vec3(7, 7, 7)); // unused, last
+        m.triangles = {{0, 1, 3}};
+        m.triangleSurface = {-1};
+        m.edges = {{5, 6}};
+        m.edgeLine = {-1};
+        m.points.push_back(Vec3(5, 5, 5)); // a corner only: kept
+        m.corners = {int(m.points.size()) - 1};
+        const VolumeMesh before = m;
+        dropUnusedPoints(m);
+        QCOMPARE(m.points.size(), before.points.size() - 2);
+        validateMesh(m);
+        for (std::size_t c = 0; c < m.cells.size(); ++c)
+            for (int k = 0; k < m.cells[c].size(); ++k)
+                QCOMPARE(m.points[m.cells[c].nodes[k]], before.points[before.cells[c].nodes[k]]);
+        QCOMPARE(m.points[m.triangles[0][2]], before.points[before.triangles[0][2]]);
+        QCOMPARE(m.points[m.edges[0][1]], before.points[before.edges[0][1]]);
+        QCOMPARE(m.points[m.corners[0]], Vec3(5, 5, 5));
+        for (const Vec3 &p : m.points)
+            QVERIFY(p != Vec3(9, 9, 9) && p != Vec3(7, 7, 7));
+        QCOMPARE(signedVolume(m, m.cells[2]), signedVolume(before, before.cells[2]));
+    }
+
     // A prism with one warped quad and a pyramid on that quad: their volumes add up to what the
     // pair covers, whatever diagonal either cell's node order would pick.
     void warpedQuadVolumesAddUp()
