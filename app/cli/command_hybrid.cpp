@@ -140,6 +140,7 @@ int runHybrid(CommandArgs &args)
         {"message", QString::fromStdString(r.message)},
         {"origin", QJsonObject{{"segment_dual_cells", static_cast<qint64>(r.segmentDualKept)},
                                {"transition_pyramids", static_cast<qint64>(r.transitionPyramids)},
+                               {"lowered_pyramids", static_cast<qint64>(r.loweredPyramids)},
                                {"fill_tets", static_cast<qint64>(r.fillTets)},
                                {"candidates", static_cast<qint64>(r.segmentDual.candidates)},
                                {"rejected_shape", static_cast<qint64>(r.segmentDual.rejectedShape)},

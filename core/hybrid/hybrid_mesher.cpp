@@ -11,6 +11,7 @@
 #include "model/topology.h"
 #include "params/param_tables.h"
 #include "remesh/surface_remesher.h"
+#include "remesh/triangle_intersections.h"
 #include "volume/plc.h"
 #include "volume/region_winding.h"
 #include "volume/tetgen_poly_writer.h"
@@ -55,8 +56,59 @@ struct Fill {
     std::vector<int> owner; // for a pyramid, the thesis cell whose quad it covers; else itself
     std::vector<Vec3> apexes;
     std::size_t pyramids = 0;
+    std::size_t loweredPyramids = 0; // apexes brought down to clear a neighbouring facet
+    std::set<int> conflicts;         // kept cells whose faces still cross another facet
     TetgenResult tetgen;
 };
+
+// Transition pyramids stand out of the thin layers and may cross a neighbour's pyramid, a surface
+// or another cell. A pyramid whose sides cross another facet is lowered, halving its height up to
+// three times; crossings that remain name the kept cells to drop before TetGen sees them (rather
+// than every cell with a pyramid, which emptied modelA1@5000 at pyramid height 0.3).
+void resolveCrossings(const Model &remesh, const std::vector<Vec3> &basePoints,
+                      std::size_t keptCount, const std::vector<Triangle> &facets,
+                      const std::vector<int> &facetCell, const std::vector<Vec3> &apexBase,
+                      std::vector<Vec3> apexUp, Fill &fill)
+{
+    std::vector<Triangle> soup;
+    for (std::size_t s = 0; s < remesh.surfaces.size(); ++s)
+        for (const Triangle &t : remesh.surfaces[s].triangles) {
+            const auto &g = remesh.surfaceVertexToGlobal[s];
+            soup.push_back({g[t[0]], g[t[1]], g[t[2]]});
+        }
+    const std::size_t surfaceCount = soup.size();
+    soup.insert(soup.end(), facets.begin(), facets.end());
+    auto cellOf = [&](int t) {
+        return t < static_cast<int>(surfaceCount) ? -1 : facetCell[t - surfaceCount];
+    };
+    std::set<int> lowered;
+    const int halvings = 3;
+    for (int round = 0; round <= halvings; ++round) {
+        std::vector<Vec3> points = basePoints;
+        points.insert(points.end(), fill.apexes.begin(), fill.apexes.end());
+        std::set<int> crossingPyramids, crossingCells;
+        for (const auto &[i, j] : findIntersectingTriangles(points, soup))
+            for (int c : {cellOf(i), cellOf(j)}) {
+                if (c < 0)
+                    continue;
+                (c >= static_cast<int>(keptCount) ? crossingPyramids : crossingCells).insert(c);
+            }
+        if (crossingPyramids.empty() || round == halvings) {
+            for (int c : crossingPyramids)
+                fill.conflicts.insert(fill.owner[c]);
+            for (int c : crossingCells)
+                fill.conflicts.insert(fill.owner[c]);
+            break;
+        }
+        for (int c : crossingPyramids) {
+            const std::size_t k = c - keptCount;
+            apexUp[k] *= 0.5;
+            fill.apexes[k] = apexBase[k] + apexUp[k];
+            lowered.insert(c);
+        }
+    }
+    fill.loweredPyramids = lowered.size();
+}
 
 // Builds the cavity model: the remesh triangles no kept cell lies on, plus per region a surface
 // of the cell faces that face the cavity (normals into it), and runs TetGen on it.
@@ -86,6 +138,9 @@ void fillCavities(const Model &remesh, const std::vector<Vec3> &basePoints,
     // Remesh triangles a cell lies on -> the cell's region (-1: cells on both sides).
     std::map<std::array<int, 3>, int> usedSurface;
     std::vector<std::vector<std::array<int, 3>>> exposed(remesh.regions.size());
+    std::vector<Triangle> facets;       // the cavity's cell facets, for the crossing test below
+    std::vector<int> facetCell;         // index in fill.cells
+    std::vector<Vec3> apexBase, apexUp; // per pyramid: quad centroid, unit normal times height
     for (const auto &[key, uses] : faces) {
         const auto &[c, f] = uses.front();
         const int r = keptRegion[c];
@@ -93,8 +148,11 @@ void fillCavities(const Model &remesh, const std::vector<Vec3> &basePoints,
             const auto k = triKey(f.nodes[0], f.nodes[1], f.nodes[2]);
             if (surfaceKeys.count(k))
                 usedSurface[k] = uses.size() == 1 ? r : -1;
-            else if (uses.size() == 1)
+            else if (uses.size() == 1) {
                 exposed[r].push_back({f.nodes[0], f.nodes[1], f.nodes[2]});
+                facets.push_back({f.nodes[0], f.nodes[1], f.nodes[2]});
+                facetCell.push_back(c);
+            }
             continue;
         }
         if (uses.size() != 1)
@@ -103,16 +161,27 @@ void fillCavities(const Model &remesh, const std::vector<Vec3> &basePoints,
         const Vec3 &a = p[f.nodes[0]], &b = p[f.nodes[1]], &cc = p[f.nodes[2]], &d = p[f.nodes[3]];
         const Vec3 n = (cc - a).cross(d - b);
         const double area = 0.5 * n.norm();
-        const Vec3 apex =
-            (a + b + cc + d) / 4.0 + n.normalized() * params.pyramidHeightRatio * std::sqrt(area);
+        apexBase.push_back((a + b + cc + d) / 4.0);
+        apexUp.push_back(n.normalized() * params.pyramidHeightRatio * std::sqrt(area));
         const int apexId = nPoints + static_cast<int>(fill.apexes.size());
-        fill.apexes.push_back(apex);
+        fill.apexes.push_back(apexBase.back() + apexUp.back());
         fill.cells.push_back(Cell::pyramid(f.nodes[0], f.nodes[1], f.nodes[2], f.nodes[3], apexId));
         fill.region.push_back(r);
         fill.owner.push_back(c);
         ++fill.pyramids;
-        for (int k = 0; k < 4; ++k)
+        for (int k = 0; k < 4; ++k) {
             exposed[r].push_back({f.nodes[k], f.nodes[(k + 1) % 4], apexId});
+            facets.push_back({f.nodes[k], f.nodes[(k + 1) % 4], apexId});
+            facetCell.push_back(static_cast<int>(fill.cells.size()) - 1);
+        }
+    }
+    resolveCrossings(remesh, basePoints, kept.size(), facets, facetCell, apexBase, apexUp, fill);
+    if (!fill.conflicts.empty()) {
+        fill.tetgen = {};
+        fill.tetgen.outcome = TetgenOutcome::InvalidInput;
+        fill.tetgen.message = "TetGen was not run: " + std::to_string(fill.conflicts.size())
+                              + " cells cross a neighbouring facet";
+        return;
     }
 
     // The cavity model, on points 0..nPoints-1 of the remesh and the apexes after them.
@@ -403,6 +472,7 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
                     std::count(keptVertexDual.begin(), keptVertexDual.end(), 1));
                 result.segmentDualKept = kept.size() - result.vertexDualKept;
                 result.transitionPyramids = fill.pyramids;
+                result.loweredPyramids = fill.loweredPyramids;
                 result.fillTets = fill.tetgen.mesh.cells.size();
                 if (!result.validity.valid())
                     result.message = result.validity.firstProblem;
@@ -439,6 +509,8 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
         } else if (lastResort) {
             result.message = "TetGen: " + fill.tetgen.message;
             break;
+        } else if (!fill.conflicts.empty()) {
+            remove = fill.conflicts; // cells whose faces cross a neighbour even with low pyramids
         } else {
             // The cavity is not a valid PLC (a pyramid crossing a surface, most often): drop the
             // cells with a transition pyramid, the border row of each thin zone.

@@ -60,6 +60,7 @@ struct HybridResult {
     std::size_t segmentDualKept = 0;    // segment-dual cells in the final mesh
     std::size_t vertexDualKept = 0;     // vertex-dual tets in the final mesh
     std::size_t transitionPyramids = 0; // pyramids on quads facing the tets
+    std::size_t loweredPyramids = 0;    // of which lowered not to cross a neighbouring facet
     std::size_t fillTets = 0;           // tets from TetGen
     std::size_t invalidFound = 0;       // cells rejected or found invalid (shape, check, TetGen)
     std::size_t repaired = 0;           // thesis cells removed and their place refilled

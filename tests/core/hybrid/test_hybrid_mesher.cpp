@@ -195,6 +195,29 @@ private slots:
         QVERIFY(off.vertexDual.cells.empty());
     }
 
+    // Tall transition pyramids cross their neighbours: they are lowered one by one instead of
+    // their cells being dropped (at height 1.0 on this box: 45 of 67 lowered, no cell repaired).
+    void crossingPyramidsAreLowered()
+    {
+        LayeredBoxParams b;
+        b.horizons = 2;
+        b.thinLayerThickness = 15.0;
+        b.edgeLength = 50.0;
+        const Model model = layeredBox(b);
+        HybridParams params;
+        params.sites = 800;
+        params.pyramidHeightRatio = 1.0;
+        const HybridResult r = buildHybridMesh(model, params);
+        qInfo("height 1.0: %zu of %zu pyramids lowered, %zu repaired, %zu prisms",
+              r.loweredPyramids, r.transitionPyramids, r.repaired,
+              r.mesh.countCells(CellType::Prism));
+        QVERIFY2(r.validity.valid(), r.message.c_str());
+        QVERIFY(r.loweredPyramids > 0);
+        QVERIFY(r.loweredPyramids <= r.transitionPyramids);
+        QCOMPARE(r.repaired, std::size_t(0));
+        QVERIFY(r.mesh.countCells(CellType::Prism) >= 250); // 289, as at the default height
+    }
+
     // Told that no site's cell meets a surface, the builder still keeps no tet across one: the
     // clearance test alone stands between the tets and the surfaces. Checked by point location
     // (winding numbers), not by the builder's own intersection test.
