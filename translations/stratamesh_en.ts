@@ -2573,6 +2573,18 @@ per cell</source>
         <source>Time: %1 s</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Mean min dihedral (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mean over the cells of each cell&apos;s smallest dihedral angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cells between two surfaces: %1  ·  at Voronoi vertices: %2  ·  transition pyramids: %3  ·  TetGen&apos;s tets: %4</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::HybridWorkflow</name>

@@ -2574,6 +2574,18 @@ par cellule</translation>
         <source>Time: %1 s</source>
         <translation>Durée : %1 s</translation>
     </message>
+    <message>
+        <source>Mean min dihedral (°)</source>
+        <translation>Dièdre min. moyen (°)</translation>
+    </message>
+    <message>
+        <source>Mean over the cells of each cell&apos;s smallest dihedral angle</source>
+        <translation>Moyenne sur les cellules du plus petit angle dièdre de chacune</translation>
+    </message>
+    <message>
+        <source>Cells between two surfaces: %1  ·  at Voronoi vertices: %2  ·  transition pyramids: %3  ·  TetGen&apos;s tets: %4</source>
+        <translation>Cellules entre deux surfaces : %1  ·  aux sommets de Voronoï : %2  ·  pyramides de transition : %3  ·  tétraèdres de TetGen : %4</translation>
+    </message>
 </context>
 <context>
     <name>stratamesh::HybridWorkflow</name>

@@ -129,8 +129,11 @@ void HybridPanel::retranslate()
     m_colouring->setItemText(1, tr("Min dihedral angle"));
     m_colouring->setItemText(2, tr("Region"));
     m_table->setHorizontalHeaderLabels({tr("Tetrahedra"), tr("Pyramids"), tr("Prisms")});
-    m_table->setVerticalHeaderLabels(
-        {tr("Cells"), tr("Min dihedral (°)"), tr("Max dihedral (°)"), tr("Slivers")});
+    m_table->setVerticalHeaderLabels({tr("Cells"), tr("Min dihedral (°)"),
+                                      tr("Mean min dihedral (°)"), tr("Max dihedral (°)"),
+                                      tr("Slivers")});
+    m_table->verticalHeaderItem(MeanMinDihedralRow)
+        ->setToolTip(tr("Mean over the cells of each cell's smallest dihedral angle"));
     m_table->verticalHeaderItem(SliversRow)
         ->setToolTip(tr("Tetrahedra with a dihedral angle below 5° or above 175°"));
     fill();
@@ -155,6 +158,7 @@ void HybridPanel::fill()
         const bool any = q.cells > 0;
         set(CellsRow, locale.toString(qulonglong(q.cells)));
         set(MinDihedralRow, any ? locale.toString(q.minDihedral, 'f', 2) : none);
+        set(MeanMinDihedralRow, any ? locale.toString(q.meanMinDihedral, 'f', 2) : none);
         set(MaxDihedralRow, any ? locale.toString(q.maxDihedral, 'f', 2) : none);
         set(SliversRow,
             CellType(t) == CellType::Tet ? locale.toString(qulonglong(q.slivers)) : none);
@@ -171,6 +175,13 @@ void HybridPanel::fill()
                       locale.toString(qulonglong(s.repaired)));
     if (s.fellBackToTetgen)
         lines << tr("No hybrid cell could be kept: this is TetGen's mesh of the remesh");
+    else
+        lines << tr("Cells between two surfaces: %1  ·  at Voronoi vertices: %2  ·  transition "
+                    "pyramids: %3  ·  TetGen's tets: %4")
+                     .arg(locale.toString(qulonglong(s.segmentDual)),
+                          locale.toString(qulonglong(s.vertexDual)),
+                          locale.toString(qulonglong(s.transitionPyramids)),
+                          locale.toString(qulonglong(s.fillTets)));
     lines << tr("Time: %1 s").arg(locale.toString(s.seconds, 'f', s.seconds < 10.0 ? 2 : 1));
     m_summary->setText(lines.join(QLatin1Char('\n')));
 }

@@ -27,6 +27,8 @@ struct HybridStatistics {
     bool valid = false;
     std::size_t invalidFound = 0;
     std::size_t repaired = 0;
+    // Where the cells come from (thesis §5.3.2, §5.3.3, transitions, TetGen's fill).
+    std::size_t segmentDual = 0, vertexDual = 0, transitionPyramids = 0, fillTets = 0;
     bool fellBackToTetgen = false;
     double seconds = 0.0;
     QString message; // why the mesh is not valid
@@ -35,7 +37,7 @@ struct HybridStatistics {
 class HybridPanel : public QWidget {
     Q_OBJECT
 public:
-    enum Row { CellsRow, MinDihedralRow, MaxDihedralRow, SliversRow, RowCount };
+    enum Row { CellsRow, MinDihedralRow, MeanMinDihedralRow, MaxDihedralRow, SliversRow, RowCount };
 
     explicit HybridPanel(QWidget *parent = nullptr);
 

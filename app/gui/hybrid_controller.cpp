@@ -41,6 +41,10 @@ void runHybrid(QPromise<HybridRun> &promise, std::shared_ptr<const Model> model,
         s.valid = result->validity.valid();
         s.invalidFound = result->invalidFound;
         s.repaired = result->repaired;
+        s.segmentDual = result->segmentDualKept;
+        s.vertexDual = result->vertexDualKept;
+        s.transitionPyramids = result->transitionPyramids;
+        s.fillTets = result->fillTets;
         s.fellBackToTetgen = result->fellBackToTetgen;
         s.seconds = result->timings.totalSeconds;
         s.message = QString::fromStdString(result->message);

@@ -106,6 +106,21 @@ private slots:
         }
         QCOMPARE(panel->cellText(HybridPanel::SliversRow, CellType::Tet).toULongLong(),
                  qulonglong(outcome->statistics.byType[0].slivers));
+        // The mean of the smallest angles lies between the type's smallest and largest angle.
+        for (CellType type : kTypes) {
+            const TypeQuality &q = outcome->statistics.byType[std::size_t(type)];
+            if (q.cells == 0)
+                continue;
+            const double mean =
+                QLocale().toDouble(panel->cellText(HybridPanel::MeanMinDihedralRow, type));
+            QVERIFY2(mean >= q.minDihedral - 0.005 && mean <= q.maxDihedral,
+                     qPrintable(panel->cellText(HybridPanel::MeanMinDihedralRow, type)));
+        }
+        // Where the cells come from: the four origins add up to the mesh's cells.
+        const HybridStatistics &st = outcome->statistics;
+        QCOMPARE(st.segmentDual + st.vertexDual + st.transitionPyramids + st.fillTets,
+                 mesh.cells.size());
+        QVERIFY(panel->summaryText().contains(QLocale().toString(qulonglong(st.fillTets))));
         QVERIFY(panel->summaryText().contains(QLatin1String("Invalid cells found")));
         QVERIFY(panel->summaryText().contains(QLatin1String("Time:")));
         QVERIFY(panel->isVisible());
