@@ -1,6 +1,7 @@
 #include "io/atomic_file.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/file_mode.h"
 
 #include <cerrno>
@@ -10,9 +11,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

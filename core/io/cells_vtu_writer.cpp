@@ -1,6 +1,7 @@
 #include "io/cells_vtu_writer.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/atomic_file.h"
 #include "io/vtk_common.h"
 
@@ -13,9 +14,6 @@
 #include <vtkPoints.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

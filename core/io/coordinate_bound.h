@@ -4,13 +4,13 @@
 #pragma once
 
 #include "common/message_text.h"
+#include "common/translate_noop.h"
 #include "io/number_text.h"
 
 #include <cmath>
 #include <string>
 
 #ifndef QT_TRANSLATE_NOOP
-#define QT_TRANSLATE_NOOP(context, text) text
 #endif
 
 namespace stratamesh {

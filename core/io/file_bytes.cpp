@@ -1,13 +1,11 @@
 #include "io/file_bytes.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,13 +1,11 @@
 #include "io/geogram_mesh.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/coordinate_bound.h"
 
 #include <algorithm>
 #include <map>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

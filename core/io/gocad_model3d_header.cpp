@@ -1,7 +1,5 @@
 #include "io/gocad_model3d_header.h"
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
+#include "common/translate_noop.h"
 
 namespace stratamesh {
 

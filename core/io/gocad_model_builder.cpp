@@ -1,14 +1,12 @@
 #include "io/gocad_model_builder.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/gocad_face_matching.h"
 #include "io/surface_names.h"
 
 #include <cstdlib>
 #include <unordered_map>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,9 +1,7 @@
 #include "io/gocad_object_header.h"
+#include "common/translate_noop.h"
 
 #include <string_view>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,6 +1,7 @@
 #include "io/gocad_reader.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/gocad_line_tokenizer.h"
 #include "io/gocad_model3d_header.h"
 #include "io/gocad_model_builder.h"
@@ -9,9 +10,6 @@
 #include <fstream>
 #include <optional>
 #include <vector>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

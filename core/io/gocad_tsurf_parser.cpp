@@ -1,10 +1,8 @@
 #include "io/gocad_tsurf_parser.h"
+#include "common/translate_noop.h"
 
 #include <unordered_map>
 #include <utility>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,6 +1,7 @@
 #include "io/gocad_writer.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/atomic_file.h"
 #include "io/gocad_writer_common.h"
 #include "io/surface_names.h"
@@ -9,9 +10,6 @@
 #include <set>
 #include <unordered_map>
 #include <unordered_set>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

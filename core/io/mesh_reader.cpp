@@ -1,11 +1,9 @@
 #include "io/mesh_reader.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/formats.h"
 #include "mesh/model_conversion.h"
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,13 +1,11 @@
 #include "io/model_reader.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/formats.h"
 
 #include <algorithm>
 #include <filesystem>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

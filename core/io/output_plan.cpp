@@ -1,6 +1,7 @@
 #include "io/output_plan.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/file_mode.h"
 
 #include <cerrno>
@@ -9,9 +10,6 @@
 #include <fstream>
 #include <sys/stat.h>
 #include <unistd.h>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,13 +1,11 @@
 #include "io/ringmesh_archive.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cstring>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,13 +1,11 @@
 #include "io/ringmesh_entities.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 
 #include <cstdlib>
 #include <optional>
 #include <sstream>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,6 +1,7 @@
 #include "io/ringmesh_topology.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/geogram_mesh.h"
 #include "io/ringmesh_archive.h"
 
@@ -8,9 +9,6 @@
 #include <map>
 #include <set>
 #include <sstream>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

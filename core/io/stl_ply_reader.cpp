@@ -1,6 +1,7 @@
 #include "io/stl_ply_reader.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/coordinate_bound.h"
 #include "io/formats.h"
 #include "io/number_text.h"
@@ -19,9 +20,6 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,6 +1,7 @@
 #include "io/stl_reader.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/coordinate_bound.h"
 #include "io/formats.h"
 #include "io/text_cursor.h"
@@ -11,9 +12,6 @@
 #include <functional>
 #include <iterator>
 #include <unordered_map>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,6 +1,7 @@
 #include "io/surface_mesh_reader.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/coordinate_bound.h"
 #include "io/formats.h"
 #include "io/gocad_model_builder.h"
@@ -22,9 +23,6 @@
 #include <limits>
 #include <sstream>
 #include <vector>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,6 +1,7 @@
 #include "io/surface_mesh_writer.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/atomic_file.h"
 #include "io/formats.h"
 #include "io/number_text.h"
@@ -16,9 +17,6 @@
 
 #include <algorithm>
 #include <cctype>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

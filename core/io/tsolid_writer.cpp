@@ -1,13 +1,11 @@
 #include "io/tsolid_writer.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/atomic_file.h"
 #include "io/gocad_writer_common.h"
 
 #include <map>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,12 +1,11 @@
 #include "io/vtk_common.h"
+#include "common/translate_noop.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCellType.h>
 #include <vtkCommand.h>
 #include <vtkNew.h>
 #include <vtkObject.h>
-
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

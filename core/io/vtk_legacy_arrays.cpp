@@ -1,4 +1,5 @@
 #include "io/vtk_legacy_arrays.h"
+#include "common/translate_noop.h"
 
 #include <charconv>
 #include <cmath>
@@ -7,9 +8,6 @@
 #include <cstring>
 #include <limits>
 #include <locale.h>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,12 +1,10 @@
 #include "io/vtk_legacy_cursor.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/file_bytes.h"
 
 #include <algorithm>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,5 +1,6 @@
 #include "io/vtk_legacy_reader.h"
 
+#include "common/translate_noop.h"
 #include "io/coordinate_bound.h"
 #include "io/number_text.h"
 #include "io/vtk_common.h"
@@ -9,9 +10,6 @@
 #include <array>
 #include <cstdio>
 #include <unordered_map>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,6 +1,7 @@
 #include "io/vtk_reader.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/coordinate_bound.h"
 #include "io/formats.h"
 #include "io/group_index.h"
@@ -38,9 +39,6 @@
 #include <set>
 #include <type_traits>
 #include <utility>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,6 +1,7 @@
 #include "io/vtk_writer.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/atomic_file.h"
 #include "io/vtk_common.h"
 
@@ -22,9 +23,6 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <limits>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,6 +1,7 @@
 #include "io/vtk_xml_counts.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "io/number_text.h"
 
 #include <algorithm>
@@ -8,9 +9,6 @@
 #include <fstream>
 #include <iterator>
 #include <set>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,14 +1,12 @@
 #include "io/zip_archive.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 
 #include <unzip.h>
 #include <zip.h>
 
 #include <algorithm>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

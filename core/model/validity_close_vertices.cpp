@@ -2,15 +2,13 @@
 // diagonal. TetGen 1.5 merges such points before meshing ("Point i is replaced by point j",
 // tolerance -T, 1e-8 of the diagonal by default), which turns the triangles around them into
 // duplicated or intersecting facets: a model our exact checks accept would still abort TetGen.
+#include "common/translate_noop.h"
 #include "model/bounding_box.h"
 #include "model/validity_checks.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <numeric>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh::validity_detail {
 

@@ -2,6 +2,7 @@
 // §3.2). Candidate pairs come from CGAL's box intersection; each pair is decided with exact
 // predicates on the stored doubles. With exact vertex merging, two triangles share a point only
 // through a shared global vertex, which gives the three cases below.
+#include "common/translate_noop.h"
 #include "model/shared_edge_overlap.h"
 #include "model/validity_checks.h"
 
@@ -15,9 +16,6 @@
 #include <array>
 #include <initializer_list>
 #include <optional>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh::validity_detail {
 

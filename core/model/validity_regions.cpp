@@ -4,15 +4,13 @@
 // be a closed, consistently oriented shell: every edge is run as often one way as the other. Its
 // volume must then be positive (negative for the Universe). A surface listed with both signs lies
 // inside the region and is left out. Each side of a surface belongs to at most one region.
+#include "common/translate_noop.h"
 #include "model/region_volume.h"
 #include "model/validity_checks.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <map>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh::validity_detail {
 

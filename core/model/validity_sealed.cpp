@@ -2,10 +2,8 @@
 // that are "at the intersection of several surfaces, or on the boundary of only one surface").
 // A border touching nothing is only legitimate for a surface lying inside one region (a dangling
 // fault or a horizon ending inside a layer, Fig 3.1 surface F4), i.e. listed there with both signs.
+#include "common/translate_noop.h"
 #include "model/validity_checks.h"
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh::validity_detail {
 

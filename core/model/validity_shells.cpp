@@ -1,12 +1,10 @@
 // folded_contact and region_pocket (region_shells.h): the region sides agree with the geometry.
+#include "common/translate_noop.h"
 #include "model/region_shells.h"
 #include "model/validity_checks.h"
 
 #include <cstdio>
 #include <set>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh::validity_detail {
 

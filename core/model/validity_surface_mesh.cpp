@@ -1,13 +1,11 @@
 // Per-surface mesh checks: non_manifold_edge, degenerate_triangle, duplicate_triangle,
 // inconsistent_orientation. Degeneracy is exact (CGAL predicates on the stored doubles).
+#include "common/translate_noop.h"
 #include "model/validity_checks.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh::validity_detail {
 

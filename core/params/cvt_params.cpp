@@ -1,8 +1,6 @@
 // The CVT parameters the `cvt` command exposes (thesis §4.3); the defaults are CvtParams'.
+#include "common/translate_noop.h"
 #include "params/param_tables.h"
-
-// lupdate reads the texts from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

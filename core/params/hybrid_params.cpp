@@ -1,8 +1,6 @@
 // The hybrid-mesh parameters (thesis ch. 5); the defaults are HybridParams'.
+#include "common/translate_noop.h"
 #include "params/param_tables.h"
-
-// lupdate reads the texts from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

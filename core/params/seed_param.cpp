@@ -1,7 +1,5 @@
+#include "common/translate_noop.h"
 #include "param_table.h"
-
-// lupdate reads the label from here; core has no Qt.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,8 +1,6 @@
 // The TetGen parameters (thesis §5.2): one entry each; the defaults are TetgenParams'.
+#include "common/translate_noop.h"
 #include "params/param_tables.h"
-
-// lupdate reads the texts from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

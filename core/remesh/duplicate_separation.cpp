@@ -1,5 +1,6 @@
 #include "remesh/duplicate_separation.h"
 
+#include "common/translate_noop.h"
 #include "quality/triangle_quality.h"
 #include "remesh/intersection_repair.h"
 #include "remesh/mesh_cleanup.h"
@@ -16,9 +17,6 @@
 #include <limits>
 #include <map>
 #include <memory>
-
-// lupdate reads the notes from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

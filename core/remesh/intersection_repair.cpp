@@ -1,14 +1,12 @@
 #include "remesh/intersection_repair.h"
 
+#include "common/translate_noop.h"
 #include "remesh/mesh_cleanup.h"
 #include "remesh/triangle_intersections.h"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
-
-// lupdate reads the notes from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

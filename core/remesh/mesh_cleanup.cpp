@@ -1,14 +1,12 @@
 #include "remesh/mesh_cleanup.h"
 
+#include "common/translate_noop.h"
 #include "quality/triangle_quality.h"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
-
-// lupdate reads the notes from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

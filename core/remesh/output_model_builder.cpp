@@ -1,5 +1,6 @@
 #include "remesh/output_model_builder.h"
 
+#include "common/translate_noop.h"
 #include "complexity/element_sizes.h"
 #include "model/topology.h"
 
@@ -9,9 +10,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-
-// lupdate reads the notes from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -1,4 +1,5 @@
 #include "remesh/output_points.h"
+#include "common/translate_noop.h"
 
 #include <CGAL/Simple_cartesian.h>
 
@@ -8,9 +9,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-
-// lupdate reads the notes from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

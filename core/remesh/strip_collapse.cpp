@@ -1,5 +1,6 @@
 #include "remesh/strip_collapse.h"
 
+#include "common/translate_noop.h"
 #include "model/topology.h"
 #include "model/validity.h"
 #include "quality/triangle_quality.h"
@@ -12,9 +13,6 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
-
-// lupdate reads the notes from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

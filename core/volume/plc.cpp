@@ -1,6 +1,7 @@
 #include "volume/plc.h"
 
 #include "common/error.h"
+#include "common/translate_noop.h"
 #include "model/topology.h"
 #include "volume/region_winding.h"
 
@@ -11,9 +12,6 @@
 #include <limits>
 #include <numeric>
 #include <optional>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 

@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "common/progress.h"
+#include "common/translate_noop.h"
 #include "io/number_text.h"
 #include "model/validity.h"
 #include "params/param_tables.h"
@@ -24,9 +25,6 @@
 #include <memory>
 #include <set>
 #include <unistd.h>
-
-// lupdate reads the messages from here; core has no Qt, so the marker only returns its text.
-#define QT_TRANSLATE_NOOP(context, text) text
 
 namespace stratamesh {
 
