@@ -165,10 +165,7 @@ void ComparisonTable::fill()
         }
         m_minDihedral->setHistograms(QString(), m_tetInput->minDihedral, remeshMin, 0);
         m_radiusRatio->setHistograms(QString(), m_tetInput->inverseRadiusRatio, remeshRatio, 2);
-    } else {
-        m_minDihedral->setHistograms(QString(), std::nullopt, std::nullopt, 0);
-        m_radiusRatio->setHistograms(QString(), std::nullopt, std::nullopt, 0);
-    }
+    } // else setTetQuality took their tabs away
     m_charts->setVisible(m_comparison.has_value() || hasTetQuality());
     m_table->setVisible(m_comparison.has_value());
     m_caption->setVisible(m_comparison.has_value());
