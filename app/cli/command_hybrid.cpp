@@ -171,6 +171,14 @@ int runHybrid(CommandArgs &args)
          }()},
         {"remesh", QJsonObject{{"sites", r.remeshSites},
                                {"valid", r.remeshValid},
+                               {"retried", r.remeshRetried},
+                               {"first_problems",
+                                [&] {
+                                    QJsonObject o;
+                                    for (const auto &[check, n] : r.firstRemeshProblems)
+                                        o[QString::fromStdString(check)] = static_cast<qint64>(n);
+                                    return o;
+                                }()},
                                {"problems",
                                 [&] {
                                     QJsonObject o;

@@ -403,6 +403,31 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     remeshParams.refinementRounds = 0;
     Progress remeshPart = steps.step(2, "Surface remesh");
     RemeshResult remeshed = remeshWithSites(model, sites, remeshParams, remeshPart);
+    if (!remeshed.validity.valid) {
+        // No TetGen fill can stand on crossing or unsealed surfaces (fault networks at some
+        // resolutions): remesh from the same sites with the chapter-4 repairs (flips, smoothing,
+        // refinement). Triangles that stay dual still pair into cells; the others fail the
+        // cells' shape and thinness tests and are left to the tets.
+        result.remeshRetried = true;
+        std::string problems;
+        for (const auto &[check, n] : remeshed.validity.counts) {
+            result.firstRemeshProblems[check] = n;
+            problems += (problems.empty() ? "" : ", ") + std::to_string(n) + " " + check;
+        }
+        result.repairLog.push_back("surface remesh: the dual remesh is not valid (" + problems
+                                   + "); the surfaces are remeshed with the chapter-4 repairs");
+        const int surfaceSites = remeshed.siteCount;
+        remeshed = remeshWithSites(model, sites, RemeshParams{}, remeshPart);
+        if (!remeshed.validity.valid) {
+            // Still not valid (an 8-fault network at 1000 volume sites): the chapter-4 remesher's
+            // own run at as many surface sites, valid on every model of its test matrix. Its
+            // triangles are no longer dual to these sites; cells form only where they still fit.
+            RemeshParams own;
+            own.sites = std::max(surfaceSites, static_cast<int>(model.surfaces.size()));
+            own.seed = params.seed;
+            remeshed = remeshModel(model, own, remeshPart);
+        }
+    }
     result.surfaceRemesh = std::make_shared<const Model>(std::move(remeshed.model));
     const Model &remesh = *result.surfaceRemesh;
     result.remeshSites = remeshed.siteCount;

@@ -72,6 +72,10 @@ struct HybridResult {
     // TetGen mesh of the very same surfaces can be compared with the hybrid one.
     std::shared_ptr<const Model> surfaceRemesh;
     std::map<std::string, std::size_t> remeshProblems; // check -> count, when not valid
+    // The dual remesh (no flips, smoothing or refinement) was not valid, and the surfaces are the
+    // chapter-4 remesh of the same sites; what the first one had.
+    bool remeshRetried = false;
+    std::map<std::string, std::size_t> firstRemeshProblems;
     TetgenOutcome tetgenOutcome = TetgenOutcome::Aborted;
     std::string message;                // why the mesh is empty or not valid
     std::vector<std::string> repairLog; // per fill that was not kept: what was wrong, cells dropped
