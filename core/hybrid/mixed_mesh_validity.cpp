@@ -24,11 +24,6 @@ double angleDegrees(const Vec3 &u, const Vec3 &v)
     return std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0)) * 180.0 / pi;
 }
 
-double tetVolume(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d)
-{
-    return (b - a).dot((c - a).cross(d - a)) / 6.0;
-}
-
 std::array<int, 3> triKey(int a, int b, int c)
 {
     std::array<int, 3> k{a, b, c};

@@ -29,11 +29,6 @@ struct Candidate {
     Cell cell;
 };
 
-double tetVolume(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d)
-{
-    return (b - a).dot((c - a).cross(d - a)) / 6.0;
-}
-
 bool wellShaped(const std::vector<Vec3> &p, const Cell &cell, double maxWarp)
 {
     for (const auto &t : cornerTets(cell))

@@ -26,11 +26,6 @@ Kernel::Point_3 cgal(const Vec3 &p)
     return {p.x(), p.y(), p.z()};
 }
 
-double tetVolume(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d)
-{
-    return (b - a).dot((c - a).cross(d - a)) / 6.0;
-}
-
 struct Candidate {
     std::array<int, 4> sites; // positively oriented
     bool ok = true;

@@ -47,12 +47,12 @@ void checkGroupIds(const std::vector<int> &ids, std::size_t count, const char *e
                     + std::to_string(ids[i]) + " (there are " + std::to_string(count) + ")");
 }
 
+} // namespace
+
 double tetVolume(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d)
 {
     return (b - a).dot((c - a).cross(d - a)) / 6.0;
 }
-
-} // namespace
 
 void validateMesh(const VolumeMesh &m)
 {

@@ -97,6 +97,9 @@ void validateMesh(const VolumeMesh &mesh);
 // surface remesh can leave a vertex whose triangles were all removed; Gmsh warns of such nodes).
 void dropUnusedPoints(VolumeMesh &mesh);
 
+// Signed volume of tet abcd: positive when d sees abc counter-clockwise.
+double tetVolume(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d);
+
 // Signed volume: positive for a cell in the node order above. Quad faces are bilinear, whose
 // volume is the mean of their two diagonal splits (Grandy 1997, "Efficient computation of volume
 // of hexahedral cells"): exact for the trilinear cell and independent of the split, so cells
