@@ -2,9 +2,7 @@
 
 #include "common/error.h"
 
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include "voronoi/indexed_delaunay.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -18,22 +16,14 @@ namespace stratamesh {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<int, Kernel>;
-using Tds = CGAL::Triangulation_data_structure_3<VertexBase>;
-using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
+using namespace indexed_delaunay;
 
 std::vector<std::vector<int>> delaunayNeighbours(const std::vector<Vec3> &sites)
 {
-    std::vector<std::pair<Kernel::Point_3, int>> points;
-    points.reserve(sites.size());
-    for (std::size_t i = 0; i < sites.size(); ++i) {
-        const Vec3 &p = sites[i];
-        if (!p.allFinite())
+    for (std::size_t i = 0; i < sites.size(); ++i)
+        if (!sites[i].allFinite())
             throw InputError("Voronoi cells: site " + std::to_string(i) + " is not finite");
-        points.emplace_back(Kernel::Point_3(p.x(), p.y(), p.z()), static_cast<int>(i));
-    }
-    Delaunay dt(points.begin(), points.end());
+    const Delaunay dt = triangulate(sites);
     if (dt.number_of_vertices() != sites.size())
         throw InputError("Voronoi cells: " + std::to_string(sites.size() - dt.number_of_vertices())
                          + " duplicate sites");

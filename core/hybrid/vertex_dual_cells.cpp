@@ -3,10 +3,7 @@
 #include "complexity/triangle_tree.h"
 #include "volume/region_winding.h"
 #include "volume/tet_quality.h"
-
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include "voronoi/indexed_delaunay.h"
 
 #include <algorithm>
 #include <map>
@@ -16,15 +13,7 @@ namespace stratamesh {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<int, Kernel>;
-using Tds = CGAL::Triangulation_data_structure_3<VertexBase>;
-using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
-
-Kernel::Point_3 cgal(const Vec3 &p)
-{
-    return {p.x(), p.y(), p.z()};
-}
+using namespace indexed_delaunay;
 
 struct Candidate {
     std::array<int, 4> sites; // positively oriented
@@ -53,10 +42,7 @@ VertexDualCells buildVertexDualCells(const Model &remesh, const std::vector<Vec3
         if (s >= 0 && s < static_cast<int>(sites.size()))
             cut[s] = 1;
 
-    std::vector<std::pair<Kernel::Point_3, int>> input;
-    for (std::size_t s = 0; s < sites.size(); ++s)
-        input.emplace_back(cgal(sites[s]), static_cast<int>(s));
-    const Delaunay dt(input.begin(), input.end());
+    const Delaunay dt = triangulate(sites);
     if (dt.dimension() != 3)
         return out;
 
