@@ -60,6 +60,14 @@ QJsonArray regionsJson(const VolumeMesh &mesh)
     return regions;
 }
 
+QJsonObject countsJson(const std::map<std::string, std::size_t> &counts)
+{
+    QJsonObject o;
+    for (const auto &[key, n] : counts)
+        o[QString::fromStdString(key)] = static_cast<qint64>(n);
+    return o;
+}
+
 } // namespace
 
 int runHybrid(CommandArgs &args)
@@ -173,19 +181,9 @@ int runHybrid(CommandArgs &args)
                                {"valid", r.remeshValid},
                                {"retried", r.remeshRetried},
                                {"first_problems",
-                                [&] {
-                                    QJsonObject o;
-                                    for (const auto &[check, n] : r.firstRemeshProblems)
-                                        o[QString::fromStdString(check)] = static_cast<qint64>(n);
-                                    return o;
-                                }()},
+                                countsJson(r.firstRemeshProblems)},
                                {"problems",
-                                [&] {
-                                    QJsonObject o;
-                                    for (const auto &[check, n] : r.remeshProblems)
-                                        o[QString::fromStdString(check)] = static_cast<qint64>(n);
-                                    return o;
-                                }()}}},
+                                countsJson(r.remeshProblems)}}},
         {"tetgen_outcome", tetgenOutcomeName(r.tetgenOutcome)},
         {"max_quad_warp_deg", r.validity.maxQuadWarpDegrees},
         {"quality", qualityJson(m)},

@@ -67,6 +67,16 @@ print(low, wedges)
     return {out.value(0).toDouble(), out.value(1).toLong()};
 }
 
+// Two horizons, a 15-thick layer between them, edges of 50: the thin layer the tests mesh.
+Model thinLayerBox()
+{
+    LayeredBoxParams b;
+    b.horizons = 2;
+    b.thinLayerThickness = 15.0;
+    b.edgeLength = 50.0;
+    return layeredBox(b);
+}
+
 } // namespace
 
 class TestHybridMesher : public QObject {
@@ -87,11 +97,7 @@ private slots:
         QFETCH(int, surfaceIterations);
         QFETCH(double, prismShare);
         QFETCH(int, minPrisms);
-        LayeredBoxParams b;
-        b.horizons = 2;
-        b.thinLayerThickness = 15.0;
-        b.edgeLength = 50.0;
-        const Model model = layeredBox(b);
+        const Model model = thinLayerBox();
         HybridParams params;
         params.sites = 800;
         params.surfaceIterations = surfaceIterations;
@@ -145,11 +151,7 @@ private slots:
 
     void vertexDualTetsFillTheThickLayers()
     {
-        LayeredBoxParams b;
-        b.horizons = 2;
-        b.thinLayerThickness = 15.0;
-        b.edgeLength = 50.0;
-        const Model model = layeredBox(b);
+        const Model model = thinLayerBox();
         HybridParams params;
         params.sites = 2000;
         const HybridResult r = buildHybridMesh(model, params);
@@ -199,11 +201,7 @@ private slots:
     // their cells being dropped (at height 1.0 on this box: 45 of 67 lowered, no cell repaired).
     void crossingPyramidsAreLowered()
     {
-        LayeredBoxParams b;
-        b.horizons = 2;
-        b.thinLayerThickness = 15.0;
-        b.edgeLength = 50.0;
-        const Model model = layeredBox(b);
+        const Model model = thinLayerBox();
         HybridParams params;
         params.sites = 800;
         params.pyramidHeightRatio = 1.0;
@@ -245,11 +243,7 @@ private slots:
     // (winding numbers), not by the builder's own intersection test.
     void vertexDualTetsKeepOffTheSurfaces()
     {
-        LayeredBoxParams b;
-        b.horizons = 2;
-        b.thinLayerThickness = 15.0;
-        b.edgeLength = 50.0;
-        const Model model = recoverTopology(layeredBox(b));
+        const Model model = recoverTopology(thinLayerBox());
         Box3 box;
         for (const Vec3 &p : model.vertices)
             box.extend(p);
