@@ -72,7 +72,7 @@ struct RemeshParams {
         1.0; // topology places get at most this fraction of the asked sites
     // A round that only saves topology is kept when its share of triangles below 30° grows by at
     // most this many percentage points over the unrefined remesh (features far below the
-    // resolution cannot be kept without needles).
+    // resolution cannot be kept without needles). The first valid round over it is the last.
     double refinementMaxQualityLoss = 0.75;
 };
 
@@ -99,7 +99,8 @@ struct RemeshResult {
     int sizedSiteCount = 0;   // the sites of the feature sizing field, before refinement rounds
     double smallestCellSize = 0.0; // the smallest size of the sizing field (the edge length
                                    // when nothing is refined)
-    int refinementRounds = 0;      // rounds that added sites
+    int refinementRounds = 0;      // rounds that added sites, up to the one kept
+    int refinementRoundsRun = 0;   // rounds meshed, kept or not
     int remainingTargets = 0;      // places still wrong after the last round (0 when converged)
     int pocketsOpened = 0;         // pockets re-triangulated open (pocket_repair.h)
 };

@@ -360,6 +360,28 @@ private slots:
         QVERIFY(checkValidity(pinned.model).valid);
     }
 
+    // Rounds only add sites: after a valid round over the quality allowance no other round runs,
+    // and that round is not kept; with room in the allowance the rounds go on.
+    void refinementStopsOverTheQualityAllowance()
+    {
+        const Model input = recoverTopology(faultNetworkBox(1, 20, 2, 20, 60));
+        RemeshParams params;
+        params.sites = 300;
+        params.refinementMaxQualityLoss = 100.0; // no round is over it
+        const RemeshResult within = remeshModel(input, params);
+        params.refinementMaxQualityLoss = -100.0; // every round is
+        const RemeshResult over = remeshModel(input, params);
+        qInfo("one fault, 300 sites: %d rounds run (%d kept) within the allowance, %d "
+              "(%d kept) over it",
+              within.refinementRoundsRun, within.refinementRounds, over.refinementRoundsRun,
+              over.refinementRounds);
+        QVERIFY(within.refinementRoundsRun >= 2);
+        QVERIFY(over.validity.valid);
+        QCOMPARE(over.refinementRoundsRun, 1);
+        QCOMPARE(over.refinementRounds, 0);
+        QCOMPARE(over.siteCount, over.sizedSiteCount);
+    }
+
     // Four sheets around one line (a folded horizon crossing a 45° fault with no throw): the
     // dual gave fins along the line, duplicated in two sheets (line_fins.h). Without their
     // removal none of these runs was valid.
