@@ -2,7 +2,7 @@
 
 #include "common/error.h"
 
-#include "voronoi/indexed_delaunay.h"
+#include "complexity/indexed_delaunay.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -1,9 +1,9 @@
 #include "hybrid/vertex_dual_cells.h"
 
+#include "complexity/indexed_delaunay.h"
 #include "complexity/triangle_tree.h"
 #include "volume/region_winding.h"
 #include "volume/tet_quality.h"
-#include "voronoi/indexed_delaunay.h"
 
 #include <algorithm>
 #include <map>
