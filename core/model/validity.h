@@ -74,4 +74,9 @@ struct ValidityReport {
 // Throws Cancelled when progress is cancelled, InputError when topology cannot be recovered.
 ValidityReport checkValidity(const Model &model, Progress &progress = Progress::none());
 
+// Whether one of `triangles` (local ids) of `surface` meets another triangle of the model outside
+// the vertices and edge they share: the surface_intersection test of checkValidity on those
+// triangles only, for edits that must not add an intersection. The model needs its topology.
+bool trianglesMeetOthers(const Model &model, int surface, const std::vector<int> &triangles);
+
 } // namespace stratamesh

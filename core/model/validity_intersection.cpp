@@ -140,28 +140,38 @@ private:
     const Model &m_model;
 };
 
+// The faces the intersection test decides: degenerate ones are reported by degenerate_triangle
+// and meaningless here.
+std::optional<Face> checkedFace(const Model &model, int surface, int triangle)
+{
+    const std::vector<int> &g = model.surfaceVertexToGlobal[surface];
+    const Triangle &t = model.surfaces[surface].triangles[triangle];
+    const Face f{{g[t[0]], g[t[1]], g[t[2]]}, surface, triangle};
+    if (f.v[0] == f.v[1] || f.v[1] == f.v[2] || f.v[0] == f.v[2])
+        return std::nullopt;
+    if (CGAL::collinear(toPoint(model.vertices[f.v[0]]), toPoint(model.vertices[f.v[1]]),
+                        toPoint(model.vertices[f.v[2]])))
+        return std::nullopt;
+    return f;
+}
+
+std::vector<Face> checkedFaces(const Model &model)
+{
+    std::vector<Face> faces;
+    faces.reserve(model.triangleCount());
+    for (std::size_t si = 0; si < model.surfaces.size(); ++si)
+        for (std::size_t ti = 0; ti < model.surfaces[si].triangles.size(); ++ti)
+            if (const auto f = checkedFace(model, static_cast<int>(si), static_cast<int>(ti)))
+                faces.push_back(*f);
+    return faces;
+}
+
 } // namespace
 
 void checkIntersections(const CheckInput &in, ProblemSink &sink, Progress &progress)
 {
     const Model &model = in.model;
-    std::vector<Face> faces;
-    faces.reserve(model.triangleCount());
-    for (std::size_t si = 0; si < model.surfaces.size(); ++si) {
-        const std::vector<int> &g = model.surfaceVertexToGlobal[si];
-        const auto &tris = model.surfaces[si].triangles;
-        for (std::size_t ti = 0; ti < tris.size(); ++ti) {
-            const Face f{{g[tris[ti][0]], g[tris[ti][1]], g[tris[ti][2]]},
-                         static_cast<int>(si),
-                         static_cast<int>(ti)};
-            if (f.v[0] == f.v[1] || f.v[1] == f.v[2] || f.v[0] == f.v[2])
-                continue; // degenerate: reported by degenerate_triangle, meaningless here
-            if (CGAL::collinear(toPoint(model.vertices[f.v[0]]), toPoint(model.vertices[f.v[1]]),
-                                toPoint(model.vertices[f.v[2]])))
-                continue;
-            faces.push_back(f);
-        }
-    }
+    const std::vector<Face> faces = checkedFaces(model);
     std::vector<Box> boxes;
     boxes.reserve(faces.size());
     const PairTester tester(model);
@@ -217,3 +227,29 @@ void checkIntersections(const CheckInput &in, ProblemSink &sink, Progress &progr
 }
 
 } // namespace stratamesh::validity_detail
+
+namespace stratamesh {
+
+bool trianglesMeetOthers(const Model &model, int surface, const std::vector<int> &triangles)
+{
+    using namespace validity_detail;
+    const std::vector<Face> faces = checkedFaces(model);
+    const PairTester tester(model);
+    std::vector<Face> asked;
+    for (int t : triangles)
+        if (const auto f = checkedFace(model, surface, t))
+            asked.push_back(*f);
+    std::vector<Box> mine, all;
+    for (std::size_t i = 0; i < asked.size(); ++i)
+        mine.emplace_back(tester.triangle(asked[i]).bbox(), static_cast<int>(i));
+    for (std::size_t i = 0; i < faces.size(); ++i)
+        all.emplace_back(tester.triangle(faces[i]).bbox(), static_cast<int>(i));
+    bool meets = false;
+    CGAL::box_intersection_d(
+        mine.begin(), mine.end(), all.begin(), all.end(), [&](const Box &x, const Box &y) {
+            meets = meets || tester.test(asked[x.info()], faces[y.info()], false).has_value();
+        });
+    return meets;
+}
+
+} // namespace stratamesh

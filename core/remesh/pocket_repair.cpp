@@ -5,6 +5,7 @@
 #include "model/validity.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <set>
 
@@ -24,6 +25,24 @@ bool better(const ValidityReport &after, const ValidityReport &before)
     for (const auto &[check, count] : before.counts)
         b += count;
     return a < b;
+}
+
+// The triangles of `after` (ids in it) whose vertex sets none of `before` has.
+std::vector<int> addedTriangles(const std::vector<Triangle> &before, const Surface &after)
+{
+    auto key = [](const Triangle &t) {
+        std::array<int, 3> k{t[0], t[1], t[2]};
+        std::sort(k.begin(), k.end());
+        return k;
+    };
+    std::set<std::array<int, 3>> old;
+    for (const Triangle &t : before)
+        old.insert(key(t));
+    std::vector<int> added;
+    for (std::size_t t = 0; t < after.triangles.size(); ++t)
+        if (!old.count(key(after.triangles[t])))
+            added.push_back(static_cast<int>(t));
+    return added;
 }
 
 // The fan of `triangles` (local ids) of surface s around a vertex of their own, as the loop
@@ -205,6 +224,15 @@ PocketRepair repairPockets(Model &model, ValidityReport &validity, Progress &pro
                     }
                     Model candidate = recoverTopology(model);
                     surface.triangles = saved;
+                    // `better` never takes an intersection on a model without one, and a new
+                    // triangle crossing the model is found on the new triangles alone (modelA5
+                    // at 5000 sites: 17 of 33 tries, each a 0.05 s full check).
+                    if (validity.count(validity_check::surfaceIntersection) == 0
+                        && s < static_cast<int>(candidate.surfaces.size())
+                        && candidate.surfaces[s].vertices == surface.vertices
+                        && trianglesMeetOthers(candidate, s,
+                                               addedTriangles(saved, candidate.surfaces[s])))
+                        continue;
                     ValidityReport after = checkValidity(candidate, step);
                     if (better(after, validity)) {
                         model = std::move(candidate);

@@ -254,6 +254,34 @@ private slots:
         const Surface second = triangle("second", {0, 0, 0}, c, d);
         const ValidityReport r = checkValidity(modelOf({first, second}));
         QCOMPARE(r.count(check::surfaceIntersection) > 0, intersects);
+        // The same decision from either triangle alone (what the pocket repair asks).
+        const Model m = recoverTopology(modelOf({first, second}));
+        QCOMPARE(trianglesMeetOthers(m, 0, {0}), intersects);
+        QCOMPARE(trianglesMeetOthers(m, 1, {0}), intersects);
+        QVERIFY(!trianglesMeetOthers(m, 1, {}));
+    }
+
+    // On a model with many triangles, the triangles trianglesMeetOthers flags are exactly those
+    // of the pairs checkValidity reports.
+    void meetingTrianglesAreTheReportedOnes()
+    {
+        const Surface wall =
+            makeSurface("wall", {{0.5, -1, -1}, {0.5, 2, -1}, {0.5, 2, 1}, {0.5, -1, 1}},
+                        {{0, 1, 2}, {0, 2, 3}});
+        const Model m = recoverTopology(modelOf({square("floor"), square("far", 5.0), wall}));
+        const ValidityReport r = checkValidity(m);
+        QVERIFY(r.count(check::surfaceIntersection) >= 1);
+        for (std::size_t s = 0; s < m.surfaces.size(); ++s)
+            for (std::size_t t = 0; t < m.surfaces[s].triangles.size(); ++t) {
+                bool reported = false;
+                const std::string tag =
+                    "triangle " + std::to_string(t) + " of " + m.surfaces[s].name;
+                for (const ValidityProblem &p : r.problems)
+                    reported = reported
+                               || (p.check == check::surfaceIntersection
+                                   && (p.message.find(tag + " ") != std::string::npos));
+                QCOMPARE(trianglesMeetOthers(m, int(s), {int(t)}), reported);
+            }
     }
 
     // A vertex of one surface on the middle of another's edge (a T-junction) is not conformal.
