@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace stratamesh {
 
@@ -81,6 +82,34 @@ RegionShells analyseRegionShells(const Model &model)
         while (j < uses.size() && uses[j].key == uses[i].key)
             ++j;
         const long long key = uses[i].key;
+        if (j - i == 2) {
+            // Two triangles (an edge inside a surface, most of them): each faces the other on
+            // both wedges, whatever the angle between them; the angle only orders the folds as
+            // the general case below does.
+            const Vec3 p = model.vertices[edgeKeyFirst(key)];
+            const Vec3 d = (model.vertices[edgeKeySecond(key)] - p).normalized();
+            Vec3 v0 = model.vertices[uses[i].apex] - p, v1 = model.vertices[uses[i + 1].apex] - p;
+            v0 -= v0.dot(d) * d;
+            v1 -= v1.dot(d) * d;
+            if (v0.squaredNorm() == 0.0 || v1.squaredNorm() == 0.0) {
+                i = j;
+                continue;
+            }
+            const Vec3 e1 = v0.normalized(), e2 = d.cross(e1);
+            const std::size_t first = std::atan2(v1.dot(e2), v1.dot(e1)) < 0.0 ? 1 : 0;
+            for (std::size_t k = 0; k < 2; ++k) {
+                const EdgeUse &a = uses[i + (first + k) % 2], &b = uses[i + (first + k + 1) % 2];
+                const int up = sideNode(a.triangle, a.forward);
+                const int down = sideNode(b.triangle, !b.forward);
+                const int ownerUp = ownerOf(up), ownerDown = ownerOf(down);
+                if (ownerUp >= 0 && ownerDown >= 0 && ownerUp != ownerDown)
+                    result.folds.push_back(
+                        {key, surfaceOf[a.triangle], surfaceOf[b.triangle], ownerUp, ownerDown});
+                shells.join(up, down);
+            }
+            i = j;
+            continue;
+        }
         const Vec3 p = model.vertices[edgeKeyFirst(key)];
         const Vec3 d = (model.vertices[edgeKeySecond(key)] - p).normalized();
         // The half-planes of the triangles, as angles about d from the first one.
@@ -182,6 +211,35 @@ RegionShells analyseRegionShells(const Model &model)
     for (RegionPocket &pocket : result.pockets)
         pocket.centre /= static_cast<double>(std::max<std::size_t>(1, pocket.sides.size()));
     return result;
+}
+
+std::vector<int> vertexSurfaceCounts(const Model &model)
+{
+    std::vector<int> counts(model.vertices.size(), 0);
+    for (const std::vector<int> &g : model.surfaceVertexToGlobal)
+        for (int v : std::set<int>(g.begin(), g.end()))
+            ++counts[v];
+    return counts;
+}
+
+bool flipKeepsShells(const Model &model, int s, const std::vector<int> &counts, int a, int b)
+{
+    int c = -1, d = -1;
+    for (const Triangle &tri : model.surfaces[s].triangles)
+        for (int k = 0; k < 3; ++k) {
+            if (tri[k] == a && tri[(k + 1) % 3] == b)
+                c = tri[(k + 2) % 3];
+            else if (tri[k] == b && tri[(k + 1) % 3] == a)
+                d = tri[(k + 2) % 3];
+        }
+    if (c < 0 || d < 0)
+        return false;
+    const std::vector<int> &g = model.surfaceVertexToGlobal[s];
+    auto own = [&](int v) { return counts[g[v]] == 1; };
+    for (const auto &[x, y] : {std::pair{a, b}, {c, d}, {a, c}, {c, b}, {b, d}, {d, a}})
+        if (!own(x) && !own(y))
+            return false;
+    return true;
 }
 
 } // namespace stratamesh

@@ -43,4 +43,14 @@ struct RegionShells {
 // Requires topology. Sides no region (nor the Universe, when given) claims are left out.
 RegionShells analyseRegionShells(const Model &model);
 
+// How many surfaces hold each global vertex of `model` (with topology).
+std::vector<int> vertexSurfaceCounts(const Model &model);
+
+// True when flipping the edge a–b (local ids) of surface s changes no shell's sides: every edge
+// of its two triangles, before and after, has an end that no other surface holds (`counts` from
+// vertexSurfaceCounts), so it stays between two triangles of s, which link the same sides of s
+// either way. Only the volumes of the shells on its two sides change, by the tetrahedron of the
+// four vertices. False when a–b is not an edge between two triangles of s running it both ways.
+bool flipKeepsShells(const Model &model, int s, const std::vector<int> &counts, int a, int b);
+
 } // namespace stratamesh

@@ -195,6 +195,7 @@ PocketRepair repairPockets(Model &model, ValidityReport &validity, Progress &pro
     int tries = 0;
     for (int guard = 0; guard < 4 * repair.pockets && !shells.pockets.empty(); ++guard) {
         bool changed = false;
+        const std::vector<int> holders = vertexSurfaceCounts(model);
         for (const RegionPocket &pocket : shells.pockets) {
             std::map<int, std::vector<int>> bySurface;
             for (const PocketSide &side : pocket.sides)
@@ -206,6 +207,12 @@ PocketRepair repairPockets(Model &model, ValidityReport &validity, Progress &pro
                 const std::vector<PocketEdit> edits =
                     pocketEdits(model.surfaces[s], triangles, loop);
                 for (std::size_t e = 0; e < edits.size() && !changed; ++e) {
+                    // Most flips of a large pocket (a region piece cut off by a fault) stay
+                    // inside its surface and cannot open it (network5 with faults of 20°
+                    // dip at 5000 sites: 9,575 of 14,783 tries, 5 ms each).
+                    if (edits[e].fanWay < 0
+                        && flipKeepsShells(model, s, holders, edits[e].a, edits[e].b))
+                        continue;
                     // A try that passes the shells costs a validity check: tick on each.
                     ++tries;
                     Progress step(progress, tries / (tries + 8.0), (tries + 1) / (tries + 9.0),
