@@ -107,9 +107,11 @@ int runRemesh(CommandArgs &args)
     parts.comparison = &comparison;
     parts.inputValidity = &review.inputValidity;
     parts.outputValidity = &outValidity;
-    parts.facts = {result.initialSiteCount, result.siteCount,        result.refinementRounds,
-                   result.remainingTargets, result.timings,          result.energy,
-                   result.sizedSiteCount,   result.smallestCellSize, result.pocketsOpened};
+    parts.facts = {result.initialSiteCount, result.siteCount,
+                   result.refinementRounds, result.refinementRoundsRun,
+                   result.remainingTargets, result.timings,
+                   result.energy,           result.sizedSiteCount,
+                   result.smallestCellSize, result.pocketsOpened};
     const QJsonObject report = remeshReportJson(parts);
     if (reportPath)
         plan.writeText(reportPath->toStdString(), [&](std::ostream &o) {

@@ -123,8 +123,9 @@ void applyCamera(const QJsonObject &json, vtkCamera *camera)
 
 RemeshReportFacts factsOf(const RemeshOutcome &o)
 {
-    return {o.initialSiteCount, o.siteCount,      o.refinementRounds, o.remainingTargets, o.timings,
-            o.energy,           o.sizedSiteCount, o.smallestCellSize, o.pocketsOpened};
+    return {o.initialSiteCount, o.siteCount,    o.refinementRounds, o.refinementRoundsRun,
+            o.remainingTargets, o.timings,      o.energy,           o.sizedSiteCount,
+            o.smallestCellSize, o.pocketsOpened};
 }
 
 } // namespace

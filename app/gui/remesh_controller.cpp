@@ -38,6 +38,7 @@ void runRemesh(QPromise<RemeshRun> &promise, std::shared_ptr<const Model> input,
         o.initialSiteCount = result.initialSiteCount;
         o.validity = result.validity;
         o.refinementRounds = result.refinementRounds;
+        o.refinementRoundsRun = result.refinementRoundsRun;
         o.remainingTargets = result.remainingTargets;
         o.sizedSiteCount = result.sizedSiteCount;
         o.smallestCellSize = result.smallestCellSize;

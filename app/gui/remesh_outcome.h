@@ -29,6 +29,7 @@ struct RemeshOutcome {
     qint64 milliseconds = 0;
     // For the run's report in a project (the same report as the command line's).
     int refinementRounds = 0;
+    int refinementRoundsRun = 0;
     int remainingTargets = 0;
     int sizedSiteCount = 0;
     double smallestCellSize = 0.0;

@@ -22,6 +22,7 @@ RemeshOutcome restoredOutcome(std::shared_ptr<const Model> input, const ProjectR
     o.siteCount = refinement.value(QLatin1String("final_sites")).toInt();
     o.initialSiteCount = refinement.value(QLatin1String("initial_sites")).toInt();
     o.refinementRounds = refinement.value(QLatin1String("rounds")).toInt();
+    o.refinementRoundsRun = refinement.value(QLatin1String("rounds_run")).toInt();
     o.remainingTargets = refinement.value(QLatin1String("remaining_places")).toInt();
     o.sizedSiteCount = refinement.value(QLatin1String("sized_sites")).toInt();
     o.smallestCellSize = refinement.value(QLatin1String("smallest_size")).toDouble();

@@ -50,6 +50,7 @@ QJsonObject remeshReportJson(const RemeshReportParts &parts)
                      {QStringLiteral("sized_sites"), facts.sizedSiteCount},
                      {QStringLiteral("smallest_size"), facts.smallestCellSize},
                      {QStringLiteral("rounds"), facts.refinementRounds},
+                     {QStringLiteral("rounds_run"), facts.refinementRoundsRun},
                      {QStringLiteral("remaining_places"), facts.remainingTargets},
                      {QStringLiteral("pockets_opened"), facts.pocketsOpened}}},
         {QStringLiteral("parameters"), parameters},

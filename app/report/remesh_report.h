@@ -20,7 +20,8 @@ namespace stratamesh {
 struct RemeshReportFacts {
     int initialSiteCount = 0;
     int siteCount = 0;
-    int refinementRounds = 0;
+    int refinementRounds = 0;    // up to the round kept
+    int refinementRoundsRun = 0; // all the rounds run
     int remainingTargets = 0;
     RemeshTimings timings;
     std::vector<double> energy;

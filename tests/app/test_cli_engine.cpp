@@ -195,6 +195,10 @@ private slots:
         QCOMPARE(refinement[QStringLiteral("initial_sites")].toInt(), 1000);
         QVERIFY(refinement[QStringLiteral("final_sites")].toInt() > 1000);
         QVERIFY(refinement[QStringLiteral("pockets_opened")].toInt(-1) >= 0);
+        // Sites were added, so a round ran; the kept one is among those run.
+        const int run = refinement[QStringLiteral("rounds_run")].toInt(-1);
+        QVERIFY(run >= 1);
+        QVERIFY(refinement[QStringLiteral("rounds")].toInt(-1) <= run);
         const QJsonObject edits = again[QStringLiteral("topology_edits")].toObject();
         int sum = 0;
         for (const char *k :
