@@ -15,6 +15,7 @@
 #include "remesh/input_projector.h"
 #include "remesh/ledger_reconciliation.h"
 #include "remesh/line_fins.h"
+#include "remesh/line_spacing.h"
 #include "remesh/mesh_smoothing.h"
 #include "remesh/output_model_builder.h"
 #include "remesh/output_points.h"
@@ -146,6 +147,7 @@ RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec
         step.tick(0.4, "duplicates");
         result.duplicates = separateDuplicateTriangles(soup, input, result.ledger);
         step.tick(0.6, "flips");
+        spaceLineVertices(soup);
         if (params.flips)
             result.cleanup.flips += improveByFlips(soup);
         if (params.smoothingPasses > 0) {
