@@ -8,6 +8,7 @@
 #include "hybrid/vertex_dual_cells.h"
 #include "io/mesh_writer.h"
 #include "model/region_volume.h"
+#include "model/surface_edges.h"
 #include "model/topology.h"
 #include "params/param_tables.h"
 #include "remesh/surface_remesher.h"
@@ -34,13 +35,6 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t)
 {
     return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-std::array<int, 3> triKey(int a, int b, int c)
-{
-    std::array<int, 3> k{a, b, c};
-    std::sort(k.begin(), k.end());
-    return k;
 }
 
 using PointKey = std::tuple<double, double, double>;
@@ -129,7 +123,7 @@ void fillCavities(const Model &remesh, const std::vector<Vec3> &basePoints,
     for (std::size_t s = 0; s < remesh.surfaces.size(); ++s)
         for (const Triangle &t : remesh.surfaces[s].triangles) {
             const auto &g = remesh.surfaceVertexToGlobal[s];
-            surfaceKeys.insert(triKey(g[t[0]], g[t[1]], g[t[2]]));
+            surfaceKeys.insert(sortedTriangle(g[t[0]], g[t[1]], g[t[2]]));
         }
     std::map<std::array<int, 4>, std::vector<std::pair<int, CellFace>>> faces;
     for (std::size_t c = 0; c < kept.size(); ++c)
@@ -145,7 +139,7 @@ void fillCavities(const Model &remesh, const std::vector<Vec3> &basePoints,
         const auto &[c, f] = uses.front();
         const int r = keptRegion[c];
         if (!f.isQuad()) {
-            const auto k = triKey(f.nodes[0], f.nodes[1], f.nodes[2]);
+            const auto k = sortedTriangle(f.nodes[0], f.nodes[1], f.nodes[2]);
             if (surfaceKeys.count(k))
                 usedSurface[k] = uses.size() == 1 ? r : -1;
             else if (uses.size() == 1) {
@@ -210,7 +204,7 @@ void fillCavities(const Model &remesh, const std::vector<Vec3> &basePoints,
         std::vector<std::array<int, 3>> tris;
         const auto &g = remesh.surfaceVertexToGlobal[s];
         for (const Triangle &t : remesh.surfaces[s].triangles) {
-            auto used = usedSurface.find(triKey(g[t[0]], g[t[1]], g[t[2]]));
+            auto used = usedSurface.find(sortedTriangle(g[t[0]], g[t[1]], g[t[2]]));
             if (used == usedSurface.end()) {
                 tris.push_back({g[t[0]], g[t[1]], g[t[2]]});
                 continue;

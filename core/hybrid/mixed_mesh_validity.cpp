@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "hybrid/cell_faces.h"
+#include "model/surface_edges.h"
 
 #include <Eigen/Geometry>
 
@@ -22,13 +23,6 @@ double angleDegrees(const Vec3 &u, const Vec3 &v)
     if (nu == 0.0 || nv == 0.0)
         return 180.0; // a degenerate triangle: no normal, as bad as twisted
     return std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0)) * 180.0 / pi;
-}
-
-std::array<int, 3> triKey(int a, int b, int c)
-{
-    std::array<int, 3> k{a, b, c};
-    std::sort(k.begin(), k.end());
-    return k;
 }
 
 // Same cyclic order of the first three nodes of two faces with the same node set?
@@ -116,19 +110,19 @@ MixedMeshValidity checkMixedMesh(const VolumeMesh &mesh, const MixedMeshCheckPar
     // The surface remesh and the triangles lying on a quad face (two per quad, one per split).
     std::map<std::array<int, 3>, int> surfaceTriangles; // -> uses by cells
     for (const Triangle &t : mesh.triangles)
-        surfaceTriangles[triKey(t[0], t[1], t[2])] = 0;
+        surfaceTriangles[sortedTriangle(t[0], t[1], t[2])] = 0;
     std::set<std::array<int, 3>> halfQuads;
     for (const auto &[key, uses] : faces)
         if (uses.front().face.isQuad()) {
             const auto &n = uses.front().face.nodes;
             for (int s = 0; s < 4; ++s)
-                halfQuads.insert(triKey(n[s], n[(s + 1) % 4], n[(s + 2) % 4]));
+                halfQuads.insert(sortedTriangle(n[s], n[(s + 1) % 4], n[(s + 2) % 4]));
         }
 
     for (const auto &[key, uses] : faces) {
         const CellFace &f = uses.front().face;
         auto it = f.isQuad() ? surfaceTriangles.end()
-                             : surfaceTriangles.find(triKey(key[0], key[1], key[2]));
+                             : surfaceTriangles.find(sortedTriangle(key[0], key[1], key[2]));
         const bool onSurface = it != surfaceTriangles.end();
         if (onSurface)
             ++it->second;
@@ -155,7 +149,7 @@ MixedMeshValidity checkMixedMesh(const VolumeMesh &mesh, const MixedMeshCheckPar
                             + std::to_string(uses[1].cell)
                             + " of two regions meet on a face that is no surface triangle");
             }
-        } else if (!f.isQuad() && halfQuads.count(triKey(key[0], key[1], key[2]))) {
+        } else if (!f.isQuad() && halfQuads.count(sortedTriangle(key[0], key[1], key[2]))) {
             ++v.nonConformalFaces;
             markAll();
             note(v, "cell " + std::to_string(uses[0].cell)

@@ -4,6 +4,7 @@
 
 #include "model/model.h"
 
+#include <utility>
 #include <vector>
 
 namespace stratamesh {
@@ -21,6 +22,19 @@ inline int edgeKeyFirst(long long key)
 inline int edgeKeySecond(long long key)
 {
     return static_cast<int>(key & 0xffffffffLL);
+}
+
+// Key of the unoriented triangle {a, b, c}: its vertex ids in increasing order.
+inline Triangle sortedTriangle(int a, int b, int c)
+{
+    Triangle k{a, b, c};
+    if (k[0] > k[1])
+        std::swap(k[0], k[1]);
+    if (k[1] > k[2])
+        std::swap(k[1], k[2]);
+    if (k[0] > k[1])
+        std::swap(k[0], k[1]);
+    return k;
 }
 
 // One distinct local edge of one surface (local vertex ids), mapped to its global vertices.

@@ -1,6 +1,7 @@
 #include "remesh/pocket_repair.h"
 
 #include "model/region_shells.h"
+#include "model/surface_edges.h"
 #include "model/topology.h"
 #include "model/validity.h"
 
@@ -30,11 +31,7 @@ bool better(const ValidityReport &after, const ValidityReport &before)
 // The triangles of `after` (ids in it) whose vertex sets none of `before` has.
 std::vector<int> addedTriangles(const std::vector<Triangle> &before, const Surface &after)
 {
-    auto key = [](const Triangle &t) {
-        std::array<int, 3> k{t[0], t[1], t[2]};
-        std::sort(k.begin(), k.end());
-        return k;
-    };
+    auto key = [](const Triangle &t) { return sortedTriangle(t[0], t[1], t[2]); };
     std::set<std::array<int, 3>> old;
     for (const Triangle &t : before)
         old.insert(key(t));
