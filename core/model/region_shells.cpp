@@ -76,6 +76,18 @@ RegionShells analyseRegionShells(const Model &model)
         return sideOwner[surfaceOf[t]][node % 2];
     };
     UnionFind shells(2 * triangleCount);
+    // Triangle b follows a counter-clockwise about the edge: the side of a that faces increasing
+    // angles (its positive side when it runs the edge forward, its normal being d × v) and the
+    // side of b that faces back see one wedge of space.
+    auto link = [&](long long key, const EdgeUse &a, const EdgeUse &b) {
+        const int up = sideNode(a.triangle, a.forward);
+        const int down = sideNode(b.triangle, !b.forward);
+        const int ownerUp = ownerOf(up), ownerDown = ownerOf(down);
+        if (ownerUp >= 0 && ownerDown >= 0 && ownerUp != ownerDown)
+            result.folds.push_back(
+                {key, surfaceOf[a.triangle], surfaceOf[b.triangle], ownerUp, ownerDown});
+        shells.join(up, down);
+    };
     std::vector<std::pair<double, const EdgeUse *>> around;
     for (std::size_t i = 0; i < uses.size();) {
         std::size_t j = i;
@@ -97,16 +109,8 @@ RegionShells analyseRegionShells(const Model &model)
             }
             const Vec3 e1 = v0.normalized(), e2 = d.cross(e1);
             const std::size_t first = std::atan2(v1.dot(e2), v1.dot(e1)) < 0.0 ? 1 : 0;
-            for (std::size_t k = 0; k < 2; ++k) {
-                const EdgeUse &a = uses[i + (first + k) % 2], &b = uses[i + (first + k + 1) % 2];
-                const int up = sideNode(a.triangle, a.forward);
-                const int down = sideNode(b.triangle, !b.forward);
-                const int ownerUp = ownerOf(up), ownerDown = ownerOf(down);
-                if (ownerUp >= 0 && ownerDown >= 0 && ownerUp != ownerDown)
-                    result.folds.push_back(
-                        {key, surfaceOf[a.triangle], surfaceOf[b.triangle], ownerUp, ownerDown});
-                shells.join(up, down);
-            }
+            for (std::size_t k = 0; k < 2; ++k)
+                link(key, uses[i + (first + k) % 2], uses[i + (first + k + 1) % 2]);
             i = j;
             continue;
         }
@@ -130,20 +134,8 @@ RegionShells analyseRegionShells(const Model &model)
         if (!flat) {
             std::sort(around.begin(), around.end(),
                       [](const auto &x, const auto &y) { return x.first < y.first; });
-            // Between a triangle and the next one counter-clockwise about d: the side of the
-            // first that faces increasing angles (its positive side when it runs the edge
-            // forward, its normal being d × v) and the side of the next that faces back.
-            for (std::size_t k = 0; k < around.size(); ++k) {
-                const EdgeUse &a = *around[k].second;
-                const EdgeUse &b = *around[(k + 1) % around.size()].second;
-                const int up = sideNode(a.triangle, a.forward);
-                const int down = sideNode(b.triangle, !b.forward);
-                const int ownerUp = ownerOf(up), ownerDown = ownerOf(down);
-                if (ownerUp >= 0 && ownerDown >= 0 && ownerUp != ownerDown)
-                    result.folds.push_back(
-                        {key, surfaceOf[a.triangle], surfaceOf[b.triangle], ownerUp, ownerDown});
-                shells.join(up, down);
-            }
+            for (std::size_t k = 0; k < around.size(); ++k)
+                link(key, *around[k].second, *around[(k + 1) % around.size()].second);
         }
         i = j;
     }
