@@ -3546,7 +3546,15 @@ Click to show it in the views</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Where four Voronoi cells meet away from the surfaces, the tet of their sites is kept when it and its neighbours have no dihedral angle below this; 180 leaves the whole volume to TetGen&apos;s tets.</source>
+        <source>Where four Voronoi cells meet, the tet of their sites, or of their points on the surfaces when the cells are cut, is kept when it and its neighbours have no dihedral angle below this; 180 leaves the whole volume to TetGen&apos;s tets.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Leave &amp;cut Voronoi vertices to TetGen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where the four Voronoi cells of a vertex meet a surface, TetGen&apos;s tets fill the place instead of the tet linking their points on the surfaces and their sites (Fig. 5.4).</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -3549,8 +3549,16 @@ Cliquer pour le montrer dans les vues</translation>
         <translation>Plus petit angle des tétraèdres duaux des sommets de &amp;Voronoï :</translation>
     </message>
     <message>
-        <source>Where four Voronoi cells meet away from the surfaces, the tet of their sites is kept when it and its neighbours have no dihedral angle below this; 180 leaves the whole volume to TetGen&apos;s tets.</source>
-        <translation>Là où quatre cellules de Voronoï se rencontrent loin des surfaces, le tétraèdre de leurs sites est gardé si ni lui ni ses voisins n&apos;ont d&apos;angle dièdre sous cette valeur ; 180 laisse tout le volume aux tétraèdres de TetGen.</translation>
+        <source>Where four Voronoi cells meet, the tet of their sites, or of their points on the surfaces when the cells are cut, is kept when it and its neighbours have no dihedral angle below this; 180 leaves the whole volume to TetGen&apos;s tets.</source>
+        <translation>Là où quatre cellules de Voronoï se rencontrent, le tétraèdre de leurs sites, ou de leurs points sur les surfaces quand les cellules sont coupées, est gardé si ni lui ni ses voisins n&apos;ont d&apos;angle dièdre sous cette valeur ; 180 laisse tout le volume aux tétraèdres de TetGen.</translation>
+    </message>
+    <message>
+        <source>Leave &amp;cut Voronoi vertices to TetGen</source>
+        <translation>Laisser à TetGen les sommets de Voronoï &amp;coupés</translation>
+    </message>
+    <message>
+        <source>Where the four Voronoi cells of a vertex meet a surface, TetGen&apos;s tets fill the place instead of the tet linking their points on the surfaces and their sites (Fig. 5.4).</source>
+        <translation>Là où les quatre cellules de Voronoï d&apos;un sommet rencontrent une surface, les tétraèdres de TetGen remplissent la place au lieu du tétraèdre reliant leurs points sur les surfaces et leurs sites (Fig. 5.4).</translation>
     </message>
 </context>
 <context>

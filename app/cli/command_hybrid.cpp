@@ -60,6 +60,18 @@ QJsonArray regionsJson(const VolumeMesh &mesh)
     return regions;
 }
 
+QJsonObject cutVertexJson(const VertexDualCells &v)
+{
+    return {{"candidates", static_cast<qint64>(v.cut.candidates)},
+            {"no_region", static_cast<qint64>(v.cut.noRegion)},
+            {"many_points", static_cast<qint64>(v.cut.manyPoints)},
+            {"rejected_shape", static_cast<qint64>(v.cut.rejectedShape)},
+            {"rejected_surface", static_cast<qint64>(v.cut.rejectedSurface)},
+            {"beside_sliver", static_cast<qint64>(v.cut.besideSliver)},
+            {"rejected_crossing", static_cast<qint64>(v.cutRejectedCrossing)},
+            {"kept", static_cast<qint64>(v.cutKept)}};
+}
+
 QJsonObject countsJson(const std::map<std::string, std::size_t> &counts)
 {
     QJsonObject o;
@@ -167,7 +179,9 @@ int runHybrid(CommandArgs &args)
                                     {"rejected_near_cells",
                                      static_cast<qint64>(r.vertexDual.rejectedNearCells)},
                                     {"rejected_outside",
-                                     static_cast<qint64>(r.vertexDual.rejectedOutside)}}},
+                                     static_cast<qint64>(r.vertexDual.rejectedOutside)},
+                                    {"cut", cutVertexJson(r.vertexDual)}}},
+                               {"cut_vertex_dual_cells", static_cast<qint64>(r.cutVertexDualKept)},
                                {"repair_rounds", r.repairRounds},
                                {"fell_back_to_tetgen", r.fellBackToTetgen}}},
         {"repair_log",

@@ -15,6 +15,7 @@
 #include "remesh/triangle_intersections.h"
 #include "volume/plc.h"
 #include "volume/region_winding.h"
+#include "volume/tet_quality.h"
 #include "volume/tetgen_poly_writer.h"
 
 #include <Eigen/Geometry>
@@ -356,6 +357,55 @@ VolumeMesh assemble(const Model &remesh, const std::vector<Vec3> &basePoints, co
     return m;
 }
 
+void dropCells(const std::set<int> &remove, std::vector<Cell> &kept, std::vector<int> &keptRegion,
+               std::vector<char> &keptVertexDual)
+{
+    std::vector<Cell> next;
+    std::vector<int> nextRegion;
+    std::vector<char> nextVertexDual;
+    for (std::size_t c = 0; c < kept.size(); ++c)
+        if (!remove.count(static_cast<int>(c))) {
+            next.push_back(kept[c]);
+            nextRegion.push_back(keptRegion[c]);
+            nextVertexDual.push_back(keptVertexDual[c]);
+        }
+    kept = std::move(next);
+    keptRegion = std::move(nextRegion);
+    keptVertexDual = std::move(nextVertexDual);
+}
+
+// Fills after a valid one whose slivers lie against cut-vertex tets (each drops those tets).
+constexpr int kSliverRounds = 3;
+
+// The kept cut-vertex tets (keptVertexDual 2) sharing a point with a fill tet that is a sliver.
+// The mesh's first `fillCells` cells are the kept ones then the pyramids, in kept's order.
+std::set<int> cutTetsBesideFillSlivers(const VolumeMesh &mesh, std::size_t fillCells,
+                                       const std::vector<Cell> &kept,
+                                       const std::vector<char> &keptVertexDual)
+{
+    std::map<int, std::vector<int>> cutAt; // node -> cut-vertex tets
+    for (std::size_t c = 0; c < kept.size(); ++c)
+        if (keptVertexDual[c] == 2)
+            for (int k = 0; k < 4; ++k)
+                cutAt[kept[c].nodes[k]].push_back(static_cast<int>(c));
+    std::set<int> out;
+    if (cutAt.empty())
+        return out;
+    for (std::size_t c = fillCells; c < mesh.cells.size(); ++c) {
+        const auto &n = mesh.cells[c].nodes;
+        const auto angles = dihedralAnglesDeg(mesh.points[n[0]], mesh.points[n[1]],
+                                              mesh.points[n[2]], mesh.points[n[3]]);
+        if (*std::min_element(angles.begin(), angles.end()) >= kSliverDihedralDeg)
+            continue;
+        for (int k = 0; k < 4; ++k) {
+            auto it = cutAt.find(n[k]);
+            if (it != cutAt.end())
+                out.insert(it->second.begin(), it->second.end());
+        }
+    }
+    return out;
+}
+
 } // namespace
 
 HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Progress &progress)
@@ -434,9 +484,11 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     const std::vector<int> pointSite = nearestSites(remesh.vertices, sites);
     result.segmentDual = buildSegmentDualCells(remesh, pointSite, params.cells);
     result.invalidFound = result.segmentDual.rejectedShape;
+    VertexDualParams vertexParams = params.vertexCells;
+    vertexParams.pyramidHeightRatio = params.pyramidHeightRatio;
     result.vertexDual =
         buildVertexDualCells(remesh, sites, pointSite, result.segmentDual.cells,
-                             static_cast<int>(remesh.vertices.size()), params.vertexCells);
+                             static_cast<int>(remesh.vertices.size()), vertexParams);
     std::vector<Vec3> basePoints = remesh.vertices;
     basePoints.insert(basePoints.end(), result.vertexDual.points.begin(),
                       result.vertexDual.points.end());
@@ -454,6 +506,10 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
     keptRegion.insert(keptRegion.end(), result.vertexDual.region.begin(),
                       result.vertexDual.region.end());
     keptVertexDual.resize(kept.size(), 1);
+    // The cut-vertex tets come last among the vertex-dual cells: 2 tells them apart.
+    std::fill(keptVertexDual.end() - static_cast<std::ptrdiff_t>(result.vertexDual.cutKept),
+              keptVertexDual.end(), 2);
+    int sliverRounds = 0;
     for (int round = 0;; ++round) {
         // Without thesis cells the fill is the last resort already.
         const bool lastResort = round > params.repairRounds || kept.empty();
@@ -467,10 +523,12 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
         t = Clock::now();
         Fill fill;
         // Rounds are few and each shorter than the last: round r gets [1 - 2^-r, 1 - 2^-(r+1)].
-        const double from = 1.0 - std::ldexp(1.0, -round), to = 1.0 - std::ldexp(1.0, -round - 1);
+        const int attempt = round + sliverRounds;
+        const double from = 1.0 - std::ldexp(1.0, -attempt),
+                     to = 1.0 - std::ldexp(1.0, -attempt - 1);
         Progress roundPart(fillStage, from, from + 0.8 * (to - from));
         fillCavities(remesh, basePoints, kept, keptRegion, params,
-                     round == 0 ? params.cavityPolyPath : "", fill, roundPart);
+                     attempt == 0 ? params.cavityPolyPath : "", fill, roundPart);
         fillStage.tick(from + 0.8 * (to - from), "mixed-mesh check");
         result.timings.fillSeconds += since(t);
         result.tetgenOutcome = fill.tetgen.outcome;
@@ -482,13 +540,32 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
             VolumeMesh mesh = assemble(remesh, basePoints, fill);
             MixedMeshValidity validity = checkMixedMesh(mesh, check);
             result.timings.checkSeconds += since(t);
+            // Fill slivers pressed between cut-vertex tets and the surfaces (four surface points
+            // on one face, most often): those tets go and TetGen fills the wider place.
+            std::set<int> pressing =
+                validity.valid() && !lastResort && sliverRounds < kSliverRounds
+                    ? cutTetsBesideFillSlivers(mesh, fill.cells.size(), kept, keptVertexDual)
+                    : std::set<int>{};
+            if (!pressing.empty()) {
+                ++sliverRounds;
+                result.timings.checkSeconds += since(t);
+                result.repairLog.push_back("fill " + std::to_string(round) + ": "
+                                           + std::to_string(pressing.size())
+                                           + " cut-vertex tets beside fill slivers dropped");
+                dropCells(pressing, kept, keptRegion, keptVertexDual);
+                --round; // not a repair: the mesh was valid
+                continue;
+            }
             if (validity.valid() || lastResort) {
                 // Renumbered only now: the repair above matches the mesh's ids with the cells'.
                 dropUnusedPoints(mesh);
                 result.mesh = std::move(mesh);
                 result.validity = std::move(validity);
-                result.vertexDualKept = static_cast<std::size_t>(
-                    std::count(keptVertexDual.begin(), keptVertexDual.end(), 1));
+                result.cutVertexDualKept = static_cast<std::size_t>(
+                    std::count(keptVertexDual.begin(), keptVertexDual.end(), 2));
+                result.vertexDualKept = result.cutVertexDualKept
+                                        + static_cast<std::size_t>(std::count(
+                                            keptVertexDual.begin(), keptVertexDual.end(), 1));
                 result.segmentDualKept = kept.size() - result.vertexDualKept;
                 result.transitionPyramids = fill.pyramids;
                 result.loweredPyramids = fill.loweredPyramids;
@@ -552,18 +629,7 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
                                    + "; " + std::to_string(remove.size()) + " cells dropped");
         result.invalidFound += remove.size();
         result.repaired += remove.size();
-        std::vector<Cell> next;
-        std::vector<int> nextRegion;
-        std::vector<char> nextVertexDual;
-        for (std::size_t c = 0; c < kept.size(); ++c)
-            if (!remove.count(static_cast<int>(c))) {
-                next.push_back(kept[c]);
-                nextRegion.push_back(keptRegion[c]);
-                nextVertexDual.push_back(keptVertexDual[c]);
-            }
-        kept = std::move(next);
-        keptRegion = std::move(nextRegion);
-        keptVertexDual = std::move(nextVertexDual);
+        dropCells(remove, kept, keptRegion, keptVertexDual);
     }
     result.timings.totalSeconds = since(start);
     return result;

@@ -10,8 +10,9 @@
 //   triangle faces of the cells, with a hole point in every cell so that TetGen leaves their
 //   zones empty → mixed-mesh check; cells found invalid are removed and the cavity
 //   refilled (repair rounds), down to the plain TetGen mesh of the remesh as the last resort.
-// Not done: the vertex-dual cells of Voronoi vertices whose cells are cut by surfaces (Fig 5.4)
-// and the splits of §5.4; TetGen's tets stand in for them (counted as fill tets).
+// Vertex-dual cells at Voronoi vertices whose cells are cut by surfaces are tets when each cell
+// part gives one point (Fig 5.4 with 4 vertices); the 5–8-vertex cells and the splits of §5.4
+// are not built: TetGen's tets stand in for them (counted as fill tets).
 #pragma once
 
 #include "common/progress.h"
@@ -59,6 +60,7 @@ struct HybridResult {
     VertexDualCells vertexDual;         // candidates and rejections of §5.3.3
     std::size_t segmentDualKept = 0;    // segment-dual cells in the final mesh
     std::size_t vertexDualKept = 0;     // vertex-dual tets in the final mesh
+    std::size_t cutVertexDualKept = 0;  // of which at cut Voronoi vertices (cut_vertex_cells.h)
     std::size_t transitionPyramids = 0; // pyramids on quads facing the tets
     std::size_t loweredPyramids = 0;    // of which lowered not to cross a neighbouring facet
     std::size_t fillTets = 0;           // tets from TetGen

@@ -2,12 +2,17 @@
 
 #include "complexity/indexed_delaunay.h"
 #include "complexity/triangle_tree.h"
+#include "hybrid/cell_faces.h"
+#include "model/surface_edges.h"
+#include "remesh/triangle_intersections.h"
 #include "volume/region_winding.h"
 #include "volume/tet_quality.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 
 namespace stratamesh {
 
@@ -25,6 +30,103 @@ int findRoot(std::vector<int> &parent, int i)
     while (parent[i] != i)
         i = parent[i] = parent[parent[i]];
     return i;
+}
+
+// The cut-cell tets whose faces cross no remesh triangle, thin-layer cell, transition pyramid to
+// be, interior tet candidate or other cut-cell tet. Ids: remesh vertices, then nV + site, then
+// the pyramid apexes.
+std::vector<CutVertexTet>
+keptCutTets(const Delaunay &dt, const Model &remesh, const std::vector<Vec3> &sites,
+            const std::vector<int> &pointSite, const std::vector<char> &cut,
+            const std::vector<Cell> &segmentCells, const std::vector<Candidate> &interior,
+            const VertexDualParams &params, VertexDualCells &out)
+{
+    std::vector<CutVertexTet> tets =
+        findCutVertexTets(dt, remesh, sites, pointSite, cut, params.minDihedralDegrees, out.cut);
+    const int nV = static_cast<int>(remesh.vertices.size());
+    std::vector<Vec3> points = remesh.vertices;
+    points.insert(points.end(), sites.begin(), sites.end());
+    // The same four points from two Voronoi vertices: one tet.
+    std::set<std::array<int, 4>> distinct;
+    tets.erase(std::remove_if(tets.begin(), tets.end(),
+                              [&](const CutVertexTet &t) {
+                                  std::array<int, 4> key = t.nodes;
+                                  std::sort(key.begin(), key.end());
+                                  return !distinct.insert(key).second;
+                              }),
+               tets.end());
+    // Each distinct face once, with the cut tets it bounds (-1: a surface, -2: another cell).
+    std::map<std::array<int, 3>, std::vector<int>> owners;
+    std::vector<Triangle> soup;
+    std::vector<std::array<int, 3>> soupKey;
+    auto add = [&](int a, int b, int c, int owner) {
+        const auto key = sortedTriangle(a, b, c);
+        auto [it, fresh] = owners.try_emplace(key);
+        if (fresh) {
+            soup.push_back({a, b, c});
+            soupKey.push_back(key);
+        }
+        it->second.push_back(owner);
+    };
+    for (std::size_t s = 0; s < remesh.surfaces.size(); ++s) {
+        const auto &g = remesh.surfaceVertexToGlobal[s];
+        for (const Triangle &t : remesh.surfaces[s].triangles)
+            add(g[t[0]], g[t[1]], g[t[2]], -1);
+    }
+    std::map<std::array<int, 4>, int> quadUses;
+    for (const Cell &cell : segmentCells)
+        for (const CellFace &f : outwardFaces(cell))
+            if (f.isQuad())
+                ++quadUses[faceKey(f)];
+    for (const Cell &cell : segmentCells)
+        for (const CellFace &f : outwardFaces(cell)) {
+            const auto &n = f.nodes;
+            if (!f.isQuad()) {
+                add(n[0], n[1], n[2], -2);
+                continue;
+            }
+            add(n[0], n[1], n[2], -2);
+            add(n[0], n[2], n[3], -2);
+            if (quadUses[faceKey(f)] != 1)
+                continue;
+            const Vec3 &a = points[n[0]], &b = points[n[1]], &c = points[n[2]], &d = points[n[3]];
+            const Vec3 normal = (c - a).cross(d - b);
+            const int apex = static_cast<int>(points.size());
+            points.push_back((a + b + c + d) / 4.0
+                             + normal.normalized() * params.pyramidHeightRatio
+                                   * std::sqrt(0.5 * normal.norm()));
+            for (int k = 0; k < 4; ++k)
+                add(n[k], n[(k + 1) % 4], apex, -2);
+        }
+    for (const Candidate &c : interior)
+        if (c.ok)
+            for (int k = 0; k < 4; ++k)
+                add(nV + c.sites[k], nV + c.sites[(k + 1) % 4], nV + c.sites[(k + 2) % 4], -2);
+    for (std::size_t i = 0; i < tets.size(); ++i) {
+        const auto &n = tets[i].nodes;
+        for (int k = 0; k < 4; ++k)
+            add(n[k], n[(k + 1) % 4], n[(k + 2) % 4], static_cast<int>(i));
+    }
+    std::vector<char> crossing(tets.size(), 0);
+    for (const auto &[i, j] : findIntersectingTriangles(points, soup))
+        for (int t : {i, j})
+            for (int owner : owners[soupKey[t]])
+                if (owner >= 0)
+                    crossing[owner] = 1;
+    // A face of more than two cells: they overlap, and the cut tets on it go too.
+    for (const auto &[key, list] : owners)
+        if (std::count_if(list.begin(), list.end(), [](int o) { return o != -1; }) > 2)
+            for (int owner : list)
+                if (owner >= 0)
+                    crossing[owner] = 1;
+    std::vector<CutVertexTet> kept;
+    for (std::size_t i = 0; i < tets.size(); ++i) {
+        if (crossing[i])
+            ++out.cutRejectedCrossing;
+        else
+            kept.push_back(tets[i]);
+    }
+    return kept;
 }
 
 } // namespace
@@ -135,6 +237,11 @@ VertexDualCells buildVertexDualCells(const Model &remesh, const std::vector<Vec3
             }
     }
 
+    const std::vector<CutVertexTet> cutTets =
+        !params.fillCutCells
+            ? keptCutTets(dt, remesh, sites, pointSite, cut, segmentCells, candidates, params, out)
+            : std::vector<CutVertexTet>{};
+
     // Kept tets do not meet the surfaces, so each group linked by shared sites lies in one region:
     // one point location per group.
     std::vector<int> parent(sites.size());
@@ -171,6 +278,25 @@ VertexDualCells buildVertexDualCells(const Model &remesh, const std::vector<Vec3
         }
         out.cells.push_back(cell);
         out.region.push_back(it->second);
+    }
+    const int nV = static_cast<int>(remesh.vertices.size());
+    for (const CutVertexTet &t : cutTets) {
+        Cell cell = Cell::tet(0, 0, 0, 0);
+        for (int k = 0; k < 4; ++k) {
+            if (t.nodes[k] < nV) {
+                cell.nodes[k] = t.nodes[k];
+                continue;
+            }
+            int &id = pointOf[t.nodes[k] - nV];
+            if (id < 0) {
+                id = firstPointId + static_cast<int>(out.points.size());
+                out.points.push_back(sites[t.nodes[k] - nV]);
+            }
+            cell.nodes[k] = id;
+        }
+        out.cells.push_back(cell);
+        out.region.push_back(t.region);
+        ++out.cutKept;
     }
     return out;
 }

@@ -1,8 +1,8 @@
 // Vertex-dual cells (thesis §5.3.3, Table 5.1 "vertex, 0 intersections → 1 cell"): a Voronoi
 // vertex inside a region is dual to the Delaunay tet of the four sites whose cells meet there.
-// Built here where the four cells meet no surface (each is "1 interior vertex", its site), so the
-// tet needs none of the §5.4 case analysis; the cells cut by surfaces are left to the constrained
-// fill, which stands in for the 5–8-vertex cells of Fig 5.4 and their splits.
+// Built where the four cells meet no surface (each is "1 interior vertex", its site), and where
+// each cut cell gives one point on the vertex's side (cut_vertex_cells.h: tets linking sites and
+// remesh points); the cells with 5–8 vertices (Fig 5.4, §5.4) are left to the constrained fill.
 //
 // Beyond the thesis, a tet is kept only when TetGen could not do better around it:
 //   - its smallest dihedral angle is at least minDihedralDegrees (a CVT's Delaunay tets hold a
@@ -14,6 +14,7 @@
 //     pyramids stand out of the thin layers).
 #pragma once
 
+#include "hybrid/cut_vertex_cells.h"
 #include "mesh/volume_mesh.h"
 #include "model/model.h"
 
@@ -25,6 +26,10 @@ namespace stratamesh {
 struct VertexDualParams {
     double minDihedralDegrees = 15.0; // 180 turns the cells off
     double clearance = 0.5;           // of the tet's size, towards surfaces and thin-layer cells
+    bool fillCutCells = false; // no tets of Voronoi vertices whose cells are cut: TetGen's instead
+    // The transition pyramids the fill will stand on the thin-layer cells' free quads (apex height
+    // over the square root of the quad area): cut-cell tets must not cross them either.
+    double pyramidHeightRatio = 0.15;
 };
 
 struct VertexDualCells {
@@ -36,6 +41,9 @@ struct VertexDualCells {
     std::size_t rejectedNearSurface = 0; // within the clearance of a remesh triangle
     std::size_t rejectedNearCells = 0;   // within the clearance of a segment-dual cell
     std::size_t rejectedOutside = 0;     // in no region of the model
+    CutVertexStats cut;                  // the cut Voronoi vertices (cut_vertex_cells.h)
+    std::size_t cutRejectedCrossing = 0; // cut-cell tets crossing a surface or another cell
+    std::size_t cutKept = 0;             // of cells, the last ones
 };
 
 // `remesh` has topology; pointSite[v] is the site of Model::vertices[v]. The sites without a remesh

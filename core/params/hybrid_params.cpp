@@ -47,10 +47,27 @@ ParamTable<HybridParams> makeTable()
     i.valueName = "DEG", i.decimals = 1, i.thesis = "§5.3.3";
     i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "&Vertex-dual tets, smallest angle:");
     i.help = QT_TRANSLATE_NOOP("stratamesh::Params",
-                               "Where four Voronoi cells meet away from the surfaces, the tet of "
-                               "their sites is kept when it and its neighbours have no dihedral "
-                               "angle below this; 180 leaves the whole volume to TetGen's tets.");
+                               "Where four Voronoi cells meet, the tet of their sites, or of "
+                               "their points on the surfaces when the cells are cut, is kept when "
+                               "it and its neighbours have no dihedral angle below this; 180 "
+                               "leaves the whole volume to TetGen's tets.");
     t.add(nestedParam(&P::vertexCells, &VertexDualParams::minDihedralDegrees, i));
+
+    i = {};
+    i.key = "fill_cut_cells", i.flag = "--fill-cut-cells", i.jsonKey = "fill_cut_cells";
+    i.type = ParamType::Flag, i.thesis = "§5.3.3";
+    i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "Leave &cut Voronoi vertices to TetGen");
+    i.help = QT_TRANSLATE_NOOP("stratamesh::Params",
+                               "Where the four Voronoi cells of a vertex meet a surface, TetGen's "
+                               "tets fill the place instead of the tet linking their points on "
+                               "the surfaces and their sites (Fig. 5.4).");
+    {
+        Param<HybridParams> p;
+        p.info = i;
+        p.get = [](const P &params) { return params.vertexCells.fillCutCells ? 1.0 : 0.0; };
+        p.set = [](P &params, double v) { params.vertexCells.fillCutCells = v != 0.0; };
+        t.add(std::move(p));
+    }
 
     i = {};
     i.key = "iterations", i.flag = "--iterations", i.jsonKey = "iterations";

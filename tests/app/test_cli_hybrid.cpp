@@ -115,6 +115,12 @@ private slots:
                     + origin["transition_pyramids"].toInteger() + origin["fill_tets"].toInteger(),
                 tets + prisms + pyramids);
             QVERIFY(origin["vertex_dual_cells"].toInteger() > 0);
+            // Most Voronoi vertices near the surfaces give a tet of their cells' surface points.
+            const qint64 cut = origin["cut_vertex_dual_cells"].toInteger();
+            QVERIFY2(cut > 0 && cut <= origin["vertex_dual_cells"].toInteger(),
+                     qPrintable(QString::number(cut)));
+            QCOMPARE(origin["vertex_dual"].toObject()["cut"].toObject()["kept"].toInteger() >= cut,
+                     true);
             checkCavityWithTetgen(poly);
             const VolumeMesh m = readVolumeMesh(out.toStdString());
             QCOMPARE(qint64(m.countCells(CellType::Tet)), tets);

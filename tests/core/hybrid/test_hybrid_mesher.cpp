@@ -175,7 +175,8 @@ private slots:
         const std::vector<double> &volume = r.validity.regionVolumes;
         const int thin = int(std::min_element(volume.begin(), volume.end()) - volume.begin());
         const int first = int(r.surfaceRemesh->vertices.size());
-        for (std::size_t c = 0; c < v.cells.size(); ++c) {
+        // The tets of cut Voronoi vertices come last (cutVertexTetsStandOnTheSurfaces).
+        for (std::size_t c = 0; c + v.cutKept < v.cells.size(); ++c) {
             std::array<Vec3, 4> q;
             for (int k = 0; k < 4; ++k) {
                 const int id = v.cells[c].nodes[k] - first;
@@ -195,6 +196,74 @@ private slots:
         QVERIFY2(off.validity.valid(), off.message.c_str());
         QCOMPARE(off.vertexDualKept, std::size_t(0));
         QVERIFY(off.vertexDual.cells.empty());
+    }
+
+    // Where the Voronoi cells of a vertex are cut by the surfaces, the tet links their points on
+    // the surfaces and the sites of the uncut ones (Fig 5.4 with one point per cell part): each
+    // has a surface point, keeps its shape bound, lies in its region (winding numbers), and the
+    // mesh stays valid, positive for meshio, with no more slivers and fewer TetGen tets than when
+    // TetGen fills those places.
+    void cutVertexTetsStandOnTheSurfaces()
+    {
+        const Model model = thinLayerBox();
+        HybridParams params;
+        params.sites = 2000;
+        const HybridResult r = buildHybridMesh(model, params);
+        HybridParams fillParams = params;
+        fillParams.vertexCells.fillCutCells = true;
+        const HybridResult f = buildHybridMesh(model, fillParams);
+        const CutVertexStats &cut = r.vertexDual.cut;
+        qInfo("layered box @2000: %zu cut-vertex tets kept of %zu candidates (no region %zu, "
+              "several points %zu, shape %zu, surface %zu, beside slivers %zu, crossing %zu); "
+              "fill tets %zu (TetGen alone there: %zu); %.2f s",
+              r.cutVertexDualKept, cut.candidates, cut.noRegion, cut.manyPoints, cut.rejectedShape,
+              cut.rejectedSurface, cut.besideSliver, r.vertexDual.cutRejectedCrossing, r.fillTets,
+              f.fillTets, r.timings.totalSeconds);
+        for (const std::string &line : r.repairLog)
+            qInfo("%s", line.c_str());
+        QVERIFY2(r.validity.valid(), r.message.c_str());
+        QVERIFY2(f.validity.valid(), f.message.c_str());
+        QVERIFY(!r.fellBackToTetgen);
+        QCOMPARE(f.cutVertexDualKept, std::size_t(0));
+        QVERIFY2(r.cutVertexDualKept >= 200, qPrintable(QString::number(r.cutVertexDualKept)));
+        QVERIFY(r.fillTets < f.fillTets);
+        QVERIFY(r.mesh.cells.size() > 0);
+
+        const VertexDualCells &v = r.vertexDual;
+        const Model &remesh = *r.surfaceRemesh;
+        const int first = int(remesh.vertices.size());
+        QVERIFY(v.cutKept >= r.cutVertexDualKept);
+        for (std::size_t c = v.cells.size() - v.cutKept; c < v.cells.size(); ++c) {
+            std::array<Vec3, 4> q;
+            int onSurface = 0;
+            for (int k = 0; k < 4; ++k) {
+                const int id = v.cells[c].nodes[k];
+                onSurface += id < first;
+                q[k] = id < first ? remesh.vertices[id] : v.points[id - first];
+            }
+            QVERIFY(onSurface >= 1);
+            const TetQuality t = tetQuality(q[0], q[1], q[2], q[3]);
+            QVERIFY(t.volume > 0.0);
+            QVERIFY(t.minDihedralDeg >= params.vertexCells.minDihedralDegrees);
+            QCOMPARE(locateRegion(remesh, (q[0] + q[1] + q[2] + q[3]) / 4.0), v.region[c]);
+        }
+        auto slivers = [](const VolumeMesh &m) {
+            std::size_t n = 0;
+            for (const Cell &c : m.cells)
+                if (c.type == CellType::Tet
+                    && tetQuality(m.points[c.nodes[0]], m.points[c.nodes[1]], m.points[c.nodes[2]],
+                                  m.points[c.nodes[3]])
+                               .minDihedralDeg
+                           < kSliverDihedralDeg)
+                    ++n;
+            return n;
+        };
+        QVERIFY2(slivers(r.mesh) <= slivers(f.mesh),
+                 qPrintable(QString("%1 > %2").arg(slivers(r.mesh)).arg(slivers(f.mesh))));
+        const MeshioView view = readWithMeshio(r.mesh);
+        if (std::isnan(view.smallest))
+            QSKIP("python3 with meshio is not installed");
+        QVERIFY(view.smallest > 0.0);
     }
 
     // Tall transition pyramids cross their neighbours: they are lowered one by one instead of

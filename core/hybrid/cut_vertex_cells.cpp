@@ -1,0 +1,264 @@
+#include "hybrid/cut_vertex_cells.h"
+
+#include "complexity/triangle_tree.h"
+#include "mesh/volume_mesh.h"
+#include "volume/region_winding.h"
+#include "volume/tet_quality.h"
+
+#include <algorithm>
+#include <deque>
+#include <map>
+#include <numeric>
+
+namespace stratamesh {
+
+namespace {
+
+using namespace indexed_delaunay;
+
+int findRoot(std::vector<int> &parent, int i)
+{
+    while (parent[i] != i)
+        i = parent[i] = parent[parent[i]];
+    return i;
+}
+
+class SurfaceCrossing {
+public:
+    explicit SurfaceCrossing(const Model &remesh)
+        : m_remesh(remesh), m_tree(remesh, allSurfaces(remesh))
+    {
+    }
+
+    // Whether the closed segment meets a remesh triangle other than at its own end points
+    // `skipA`, `skipB` (remesh vertex ids, or -1).
+    bool segment(const Vec3 &a, const Vec3 &b, int skipA = -1, int skipB = -1) const
+    {
+        Box3 box;
+        box.extend(a);
+        box.extend(b);
+        const Kernel::Segment_3 seg(cgal(a), cgal(b));
+        for (const TriangleRef &t : m_tree.trianglesInBox(box)) {
+            const auto &g = m_remesh.surfaceVertexToGlobal[t.surface];
+            const Triangle &tri = m_remesh.surfaces[t.surface].triangles[t.triangle];
+            bool touches = false;
+            for (int k = 0; k < 3; ++k)
+                touches = touches || g[tri[k]] == skipA || g[tri[k]] == skipB;
+            if (touches)
+                continue; // meets it at its end point, which is on the surface
+            const Kernel::Triangle_3 k(cgal(m_remesh.vertices[g[tri[0]]]),
+                                       cgal(m_remesh.vertices[g[tri[1]]]),
+                                       cgal(m_remesh.vertices[g[tri[2]]]));
+            if (CGAL::do_intersect(seg, k))
+                return true;
+        }
+        return false;
+    }
+
+    // Whether a remesh vertex other than the tet's own lies in the closed tet.
+    bool holdsVertex(const std::array<Vec3, 4> &q, const std::array<int, 4> &ids) const
+    {
+        Box3 box;
+        for (const Vec3 &p : q)
+            box.extend(p);
+        const Kernel::Tetrahedron_3 tet(cgal(q[0]), cgal(q[1]), cgal(q[2]), cgal(q[3]));
+        for (const TriangleRef &t : m_tree.trianglesInBox(box)) {
+            const auto &g = m_remesh.surfaceVertexToGlobal[t.surface];
+            for (int v : m_remesh.surfaces[t.surface].triangles[t.triangle]) {
+                const int id = g[v];
+                if (std::find(ids.begin(), ids.end(), id) != ids.end())
+                    continue;
+                if (!tet.has_on_unbounded_side(cgal(m_remesh.vertices[id])))
+                    return true;
+            }
+        }
+        return false;
+    }
+
+private:
+    static std::vector<int> allSurfaces(const Model &m)
+    {
+        std::vector<int> all(m.surfaces.size());
+        std::iota(all.begin(), all.end(), 0);
+        return all;
+    }
+    const Model &m_remesh;
+    TriangleTree m_tree;
+};
+
+} // namespace
+
+std::vector<CutVertexTet> findCutVertexTets(const Delaunay &dt, const Model &remesh,
+                                            const std::vector<Vec3> &sites,
+                                            const std::vector<int> &pointSite,
+                                            const std::vector<char> &cut, double minDihedralDegrees,
+                                            CutVertexStats &stats)
+{
+    std::vector<CutVertexTet> out;
+    const int nV = static_cast<int>(remesh.vertices.size());
+    const SurfaceCrossing crossing(remesh);
+
+    // Uncut sites linked by Delaunay edges that cross no surface share a region: one point
+    // location per group.
+    std::vector<int> parent(sites.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+        const int a = e->first->vertex(e->second)->info(), b = e->first->vertex(e->third)->info();
+        if (!cut[a] && !cut[b] && !crossing.segment(sites[a], sites[b]))
+            parent[findRoot(parent, a)] = findRoot(parent, b);
+    }
+    std::map<int, int> groupRegion;
+    auto siteRegion = [&](int s) {
+        const int root = findRoot(parent, s);
+        auto [it, fresh] = groupRegion.emplace(root, -1);
+        if (fresh)
+            it->second = locateRegion(remesh, sites[root]);
+        return it->second;
+    };
+
+    // The cut Voronoi vertices and their regions: from an uncut site, then along Voronoi edges.
+    std::map<Delaunay::Cell_handle, int> index;
+    std::vector<Delaunay::Cell_handle> cells;
+    std::vector<Vec3> voronoi;
+    std::vector<int> region;
+    const Box3 bounds = [&] {
+        Box3 b;
+        for (const Vec3 &p : remesh.vertices)
+            b.extend(p);
+        return b;
+    }();
+    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+        bool anyCut = false;
+        for (int k = 0; k < 4; ++k)
+            anyCut = anyCut || cut[c->vertex(k)->info()];
+        if (!anyCut)
+            continue;
+        ++stats.candidates;
+        const auto cc = CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
+                                           c->vertex(2)->point(), c->vertex(3)->point());
+        const Vec3 v(cc.x(), cc.y(), cc.z());
+        int r = -1;
+        if (bounds.contains(v))
+            for (int k = 0; k < 4 && r < 0; ++k) {
+                const int s = c->vertex(k)->info();
+                if (!cut[s] && !crossing.segment(sites[s], v))
+                    r = siteRegion(s);
+            }
+        index[c] = static_cast<int>(cells.size());
+        cells.push_back(c);
+        voronoi.push_back(v);
+        region.push_back(bounds.contains(v) ? r : -2); // -2: outside, never reached
+    }
+    std::deque<int> queue;
+    for (std::size_t i = 0; i < cells.size(); ++i)
+        if (region[i] >= 0)
+            queue.push_back(static_cast<int>(i));
+    while (!queue.empty()) {
+        const int i = queue.front();
+        queue.pop_front();
+        for (int k = 0; k < 4; ++k) {
+            auto it = index.find(cells[i]->neighbor(k));
+            if (it == index.end() || region[it->second] != -1)
+                continue;
+            if (crossing.segment(voronoi[i], voronoi[it->second]))
+                continue;
+            region[it->second] = region[i];
+            queue.push_back(it->second);
+        }
+    }
+
+    // The points of each cut site on each region's boundary.
+    std::vector<std::vector<int>> vertexSurfaces(nV);
+    for (std::size_t s = 0; s < remesh.surfaces.size(); ++s)
+        for (int g : remesh.surfaceVertexToGlobal[s])
+            vertexSurfaces[g].push_back(static_cast<int>(s));
+    std::vector<std::vector<char>> bounds_(remesh.regions.size(),
+                                           std::vector<char>(remesh.surfaces.size(), 0));
+    for (std::size_t r = 0; r < remesh.regions.size(); ++r)
+        for (const RegionSide &side : remesh.regions[r].boundaries)
+            bounds_[r][side.surface] = 1;
+    std::vector<std::vector<int>> sitePoints(sites.size());
+    for (int v = 0; v < nV && v < static_cast<int>(pointSite.size()); ++v)
+        if (pointSite[v] >= 0)
+            sitePoints[pointSite[v]].push_back(v);
+
+    std::vector<char> sliver(cells.size(), 0);
+    std::vector<int> candidate(cells.size(), -1); // index in out
+    auto pointAt = [&](int id) -> const Vec3 & {
+        return id < nV ? remesh.vertices[id] : sites[id - nV];
+    };
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        const int r = region[i];
+        if (r < 0) {
+            ++stats.noRegion;
+            continue;
+        }
+        CutVertexTet tet;
+        tet.region = r;
+        tet.dual = cells[i];
+        std::array<int, 4> s;
+        bool single = true;
+        for (int k = 0; k < 4 && single; ++k) {
+            s[k] = cells[i]->vertex(k)->info();
+            if (!cut[s[k]]) {
+                tet.nodes[k] = nV + s[k];
+                continue;
+            }
+            int found = -1, count = 0;
+            for (int v : sitePoints[s[k]])
+                for (int surface : vertexSurfaces[v])
+                    if (bounds_[r][surface]) {
+                        if (found != v)
+                            ++count;
+                        found = v;
+                        break;
+                    }
+            single = count == 1;
+            tet.nodes[k] = found;
+        }
+        if (!single) {
+            ++stats.manyPoints;
+            continue;
+        }
+        // Positively oriented like the Delaunay tet of the sites, which CGAL gives positive.
+        if (tetVolume(sites[s[0]], sites[s[1]], sites[s[2]], sites[s[3]]) < 0)
+            std::swap(tet.nodes[0], tet.nodes[1]);
+        std::array<Vec3, 4> q;
+        for (int k = 0; k < 4; ++k)
+            q[k] = pointAt(tet.nodes[k]);
+        const auto angles = dihedralAnglesDeg(q[0], q[1], q[2], q[3]);
+        if (tetVolume(q[0], q[1], q[2], q[3]) <= 0
+            || *std::min_element(angles.begin(), angles.end()) < minDihedralDegrees) {
+            ++stats.rejectedShape;
+            sliver[i] = 1;
+            continue;
+        }
+        std::array<int, 4> ids;
+        for (int k = 0; k < 4; ++k)
+            ids[k] = tet.nodes[k] < nV ? tet.nodes[k] : -1;
+        const Vec3 g = (q[0] + q[1] + q[2] + q[3]) / 4.0;
+        if (crossing.holdsVertex(q, ids) || crossing.segment(voronoi[i], g)) {
+            ++stats.rejectedSurface;
+            continue;
+        }
+        candidate[i] = static_cast<int>(out.size());
+        out.push_back(tet);
+    }
+    std::vector<char> drop(out.size(), 0);
+    for (std::size_t i = 0; i < cells.size(); ++i)
+        for (int k = 0; k < 4 && candidate[i] >= 0; ++k) {
+            auto it = index.find(cells[i]->neighbor(k));
+            if (it != index.end() && sliver[it->second]) {
+                drop[candidate[i]] = 1;
+                ++stats.besideSliver;
+                break;
+            }
+        }
+    std::vector<CutVertexTet> kept;
+    for (std::size_t i = 0; i < out.size(); ++i)
+        if (!drop[i])
+            kept.push_back(out[i]);
+    return kept;
+}
+
+} // namespace stratamesh

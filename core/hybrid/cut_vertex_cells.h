@@ -1,0 +1,51 @@
+// Vertex-dual cells of Voronoi vertices whose cells are cut by the surfaces (thesis §5.3.3,
+// Fig 5.4, Fig 5.5): each of the four Voronoi cells meeting at the vertex gives the points of its
+// part on the vertex's side, its site when the cell meets no surface, else the remesh points of
+// the site on the surfaces bounding the vertex's region. When each part gives exactly one point
+// (one intersection component, Table 5.1 "cell part, 1 → 1 boundary vertex") the cell is a tet
+// linking interior sites and remesh points. Parts with two or more points (cells crossing a thin
+// layer, the 5–8-vertex cells of §5.4) are left to the constrained fill.
+//
+// The region of a Voronoi vertex comes from its uncut sites (their cells meet no surface, so the
+// vertex lies in their region) and is carried to the other vertices along Voronoi edges that cross
+// no surface (Algorithm 5.1's propagation, here from inside). A tet is kept only when it keeps
+// the orientation of the sites' Delaunay tet, has no dihedral angle under the bound, holds no
+// remesh vertex and is reached from its Voronoi vertex without crossing a surface; the caller
+// then rejects those whose faces cross the surfaces or other cells. A tet beside one rejected for
+// its shape goes too: the lone place left would be filled with the same sliver (a flat tet of
+// four surface points, most often).
+#pragma once
+
+#include "complexity/indexed_delaunay.h"
+#include "model/model.h"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace stratamesh {
+
+struct CutVertexTet {
+    // Remesh vertex ids (< remesh.vertices.size()), or remesh.vertices.size() + site index.
+    std::array<int, 4> nodes{};
+    int region = -1;
+    indexed_delaunay::Delaunay::Cell_handle dual; // the Delaunay tet of the four sites
+};
+
+struct CutVertexStats {
+    std::size_t candidates = 0;      // finite Delaunay tets with a cut site
+    std::size_t noRegion = 0;        // Voronoi vertex outside the model or not reached
+    std::size_t manyPoints = 0;      // a cell part with no point or more than one (5–8 vertices)
+    std::size_t rejectedShape = 0;   // inverted, or a dihedral angle under the bound
+    std::size_t rejectedSurface = 0; // holds a remesh vertex, or its centroid is across a surface
+    std::size_t besideSliver = 0;    // a face neighbour was rejected for its shape
+};
+
+// `cut[s]`: site s has remesh points (pointSite[v] == s for some v).
+std::vector<CutVertexTet> findCutVertexTets(const indexed_delaunay::Delaunay &dt,
+                                            const Model &remesh, const std::vector<Vec3> &sites,
+                                            const std::vector<int> &pointSite,
+                                            const std::vector<char> &cut, double minDihedralDegrees,
+                                            CutVertexStats &stats);
+
+} // namespace stratamesh
