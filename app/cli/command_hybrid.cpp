@@ -65,6 +65,8 @@ QJsonObject cutVertexJson(const VertexDualCells &v)
     return {{"candidates", static_cast<qint64>(v.cut.candidates)},
             {"no_region", static_cast<qint64>(v.cut.noRegion)},
             {"many_points", static_cast<qint64>(v.cut.manyPoints)},
+            {"split", static_cast<qint64>(v.cut.split)},
+            {"split_tets_kept", static_cast<qint64>(v.cutSplitKept)},
             {"rejected_shape", static_cast<qint64>(v.cut.rejectedShape)},
             {"rejected_surface", static_cast<qint64>(v.cut.rejectedSurface)},
             {"beside_sliver", static_cast<qint64>(v.cut.besideSliver)},

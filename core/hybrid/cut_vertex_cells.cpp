@@ -86,16 +86,52 @@ private:
     TriangleTree m_tree;
 };
 
+// The faces of the convex hull of 5–8 points, each as indices ordered with the outward normal
+// (exact orientation tests); empty when a point is inside the hull or four are coplanar on it
+// (the thesis's invalid cells, left to the fill).
+std::vector<std::array<int, 3>> hullTriangles(const std::vector<Vec3> &q)
+{
+    const int n = static_cast<int>(q.size());
+    std::vector<Kernel::Point_3> p;
+    for (const Vec3 &v : q)
+        p.push_back(cgal(v));
+    std::vector<std::array<int, 3>> faces;
+    std::vector<char> onHull(n, 0);
+    for (int a = 0; a < n; ++a)
+        for (int b = a + 1; b < n; ++b)
+            for (int c = b + 1; c < n; ++c) {
+                int above = 0, below = 0;
+                for (int d = 0; d < n; ++d) {
+                    if (d == a || d == b || d == c)
+                        continue;
+                    const auto o = CGAL::orientation(p[a], p[b], p[c], p[d]);
+                    if (o == CGAL::COPLANAR)
+                        return {};
+                    (o == CGAL::POSITIVE ? above : below) += 1;
+                }
+                if (above && below)
+                    continue;
+                // Outward: the other points below, i.e. negative orientation with (a, b, c).
+                faces.push_back(above ? std::array<int, 3>{a, c, b} : std::array<int, 3>{a, b, c});
+                onHull[a] = onHull[b] = onHull[c] = 1;
+            }
+    if (std::count(onHull.begin(), onHull.end(), 1) != n
+        || static_cast<int>(faces.size()) != 2 * n - 4)
+        return {};
+    return faces;
+}
+
 } // namespace
 
 std::vector<CutVertexTet> findCutVertexTets(const Delaunay &dt, const Model &remesh,
                                             const std::vector<Vec3> &sites,
                                             const std::vector<int> &pointSite,
                                             const std::vector<char> &cut, double minDihedralDegrees,
-                                            CutVertexStats &stats)
+                                            std::vector<Vec3> &centroids, CutVertexStats &stats)
 {
     std::vector<CutVertexTet> out;
     const int nV = static_cast<int>(remesh.vertices.size());
+    const int nSites = static_cast<int>(sites.size());
     const SurfaceCrossing crossing(remesh);
 
     // Uncut sites linked by Delaunay edges that cross no surface share a region: one point
@@ -183,9 +219,13 @@ std::vector<CutVertexTet> findCutVertexTets(const Delaunay &dt, const Model &rem
             sitePoints[pointSite[v]].push_back(v);
 
     std::vector<char> sliver(cells.size(), 0);
-    std::vector<int> candidate(cells.size(), -1); // index in out
+    std::vector<std::vector<int>> members(cells.size()); // indices in out
     auto pointAt = [&](int id) -> const Vec3 & {
-        return id < nV ? remesh.vertices[id] : sites[id - nV];
+        if (id < nV)
+            return remesh.vertices[id];
+        if (id < nV + nSites)
+            return sites[id - nV];
+        return centroids[id - nV - nSites];
     };
     for (std::size_t i = 0; i < cells.size(); ++i) {
         const int r = region[i];
@@ -193,63 +233,93 @@ std::vector<CutVertexTet> findCutVertexTets(const Delaunay &dt, const Model &rem
             ++stats.noRegion;
             continue;
         }
-        CutVertexTet tet;
-        tet.region = r;
-        tet.dual = cells[i];
+        // One point per uncut site, one or two (a cell part crossed twice) per cut one.
         std::array<int, 4> s;
-        bool single = true;
-        for (int k = 0; k < 4 && single; ++k) {
+        std::vector<int> nodes;
+        bool defined = true;
+        for (int k = 0; k < 4; ++k) {
             s[k] = cells[i]->vertex(k)->info();
             if (!cut[s[k]]) {
-                tet.nodes[k] = nV + s[k];
+                nodes.push_back(nV + s[k]);
                 continue;
             }
-            int found = -1, count = 0;
+            int count = 0;
             for (int v : sitePoints[s[k]])
                 for (int surface : vertexSurfaces[v])
                     if (bounds_[r][surface]) {
-                        if (found != v)
-                            ++count;
-                        found = v;
+                        nodes.push_back(v);
+                        ++count;
                         break;
                     }
-            single = count == 1;
-            tet.nodes[k] = found;
+            defined = defined && count >= 1 && count <= 2;
         }
-        if (!single) {
+        if (!defined) {
             ++stats.manyPoints;
             continue;
         }
-        // Positively oriented like the Delaunay tet of the sites, which CGAL gives positive.
-        if (tetVolume(sites[s[0]], sites[s[1]], sites[s[2]], sites[s[3]]) < 0)
-            std::swap(tet.nodes[0], tet.nodes[1]);
-        std::array<Vec3, 4> q;
-        for (int k = 0; k < 4; ++k)
-            q[k] = pointAt(tet.nodes[k]);
-        const auto angles = dihedralAnglesDeg(q[0], q[1], q[2], q[3]);
-        if (tetVolume(q[0], q[1], q[2], q[3]) <= 0
-            || *std::min_element(angles.begin(), angles.end()) < minDihedralDegrees) {
+        std::vector<std::array<int, 4>> tets;
+        if (nodes.size() == 4) {
+            std::array<int, 4> t{nodes[0], nodes[1], nodes[2], nodes[3]};
+            // Positively oriented like the Delaunay tet of the sites, which CGAL gives positive.
+            if (tetVolume(sites[s[0]], sites[s[1]], sites[s[2]], sites[s[3]]) < 0)
+                std::swap(t[0], t[1]);
+            tets.push_back(t);
+        } else {
+            std::vector<Vec3> q;
+            for (int id : nodes)
+                q.push_back(pointAt(id));
+            const auto faces = hullTriangles(q);
+            if (faces.empty()) {
+                ++stats.rejectedShape;
+                sliver[i] = 1;
+                continue;
+            }
+            Vec3 g = Vec3::Zero();
+            for (const Vec3 &p : q)
+                g += p / static_cast<double>(q.size());
+            const int centroid = nV + nSites + static_cast<int>(centroids.size());
+            centroids.push_back(g);
+            for (const auto &f : faces) // outward faces: the centroid is behind each
+                tets.push_back({nodes[f[1]], nodes[f[0]], nodes[f[2]], centroid});
+            ++stats.split;
+        }
+        bool shaped = true, clear = true;
+        for (const auto &t : tets) {
+            std::array<Vec3, 4> q;
+            for (int k = 0; k < 4; ++k)
+                q[k] = pointAt(t[k]);
+            const auto angles = dihedralAnglesDeg(q[0], q[1], q[2], q[3]);
+            shaped = shaped && tetVolume(q[0], q[1], q[2], q[3]) > 0
+                     && *std::min_element(angles.begin(), angles.end()) >= minDihedralDegrees;
+            if (!shaped)
+                break;
+            std::array<int, 4> ids;
+            for (int k = 0; k < 4; ++k)
+                ids[k] = t[k] < nV ? t[k] : -1;
+            const Vec3 g = (q[0] + q[1] + q[2] + q[3]) / 4.0;
+            clear = clear && !crossing.holdsVertex(q, ids) && !crossing.segment(voronoi[i], g);
+        }
+        if (!shaped) {
             ++stats.rejectedShape;
             sliver[i] = 1;
             continue;
         }
-        std::array<int, 4> ids;
-        for (int k = 0; k < 4; ++k)
-            ids[k] = tet.nodes[k] < nV ? tet.nodes[k] : -1;
-        const Vec3 g = (q[0] + q[1] + q[2] + q[3]) / 4.0;
-        if (crossing.holdsVertex(q, ids) || crossing.segment(voronoi[i], g)) {
+        if (!clear) {
             ++stats.rejectedSurface;
             continue;
         }
-        candidate[i] = static_cast<int>(out.size());
-        out.push_back(tet);
+        for (const auto &t : tets) {
+            members[i].push_back(static_cast<int>(out.size()));
+            out.push_back({t, r, cells[i]});
+        }
     }
     std::vector<char> drop(out.size(), 0);
     for (std::size_t i = 0; i < cells.size(); ++i)
-        for (int k = 0; k < 4 && candidate[i] >= 0; ++k) {
+        for (int k = 0; k < 4 && !members[i].empty(); ++k) {
             auto it = index.find(cells[i]->neighbor(k));
             if (it != index.end() && sliver[it->second]) {
-                drop[candidate[i]] = 1;
+                for (int m : members[i])
+                    drop[m] = 1;
                 ++stats.besideSliver;
                 break;
             }

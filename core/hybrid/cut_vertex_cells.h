@@ -3,8 +3,10 @@
 // part on the vertex's side, its site when the cell meets no surface, else the remesh points of
 // the site on the surfaces bounding the vertex's region. When each part gives exactly one point
 // (one intersection component, Table 5.1 "cell part, 1 → 1 boundary vertex") the cell is a tet
-// linking interior sites and remesh points. Parts with two or more points (cells crossing a thin
-// layer, the 5–8-vertex cells of §5.4) are left to the constrained fill.
+// linking interior sites and remesh points. A part crossed twice gives two points (Fig 5.4): the
+// 5–8-vertex cells are split from their centroid into the tets of their hull faces (§5.4) when
+// their points are in convex position with no four coplanar on the hull; the others (parts with
+// more points, undefined or invalid cells) are left to the constrained fill.
 //
 // The region of a Voronoi vertex comes from its uncut sites (their cells meet no surface, so the
 // vertex lies in their region) and is carried to the other vertices along Voronoi edges that cross
@@ -26,7 +28,8 @@
 namespace stratamesh {
 
 struct CutVertexTet {
-    // Remesh vertex ids (< remesh.vertices.size()), or remesh.vertices.size() + site index.
+    // Remesh vertex ids (< remesh.vertices.size()), remesh.vertices.size() + site index, or after
+    // those remesh.vertices.size() + sites.size() + index in the centroids of split cells.
     std::array<int, 4> nodes{};
     int region = -1;
     indexed_delaunay::Delaunay::Cell_handle dual; // the Delaunay tet of the four sites
@@ -35,7 +38,8 @@ struct CutVertexTet {
 struct CutVertexStats {
     std::size_t candidates = 0;      // finite Delaunay tets with a cut site
     std::size_t noRegion = 0;        // Voronoi vertex outside the model or not reached
-    std::size_t manyPoints = 0;      // a cell part with no point or more than one (5–8 vertices)
+    std::size_t manyPoints = 0;      // a cut cell part with no point or more than two
+    std::size_t split = 0;           // 5–8-vertex cells split from their centroid (before checks)
     std::size_t rejectedShape = 0;   // inverted, or a dihedral angle under the bound
     std::size_t rejectedSurface = 0; // holds a remesh vertex, or its centroid is across a surface
     std::size_t besideSliver = 0;    // a face neighbour was rejected for its shape
@@ -46,6 +50,6 @@ std::vector<CutVertexTet> findCutVertexTets(const indexed_delaunay::Delaunay &dt
                                             const Model &remesh, const std::vector<Vec3> &sites,
                                             const std::vector<int> &pointSite,
                                             const std::vector<char> &cut, double minDihedralDegrees,
-                                            CutVertexStats &stats);
+                                            std::vector<Vec3> &centroids, CutVertexStats &stats);
 
 } // namespace stratamesh

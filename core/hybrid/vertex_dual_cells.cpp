@@ -34,18 +34,19 @@ int findRoot(std::vector<int> &parent, int i)
 
 // The cut-cell tets whose faces cross no remesh triangle, thin-layer cell, transition pyramid to
 // be, interior tet candidate or other cut-cell tet. Ids: remesh vertices, then nV + site, then
-// the pyramid apexes.
+// the centroids of split cells, then the pyramid apexes.
 std::vector<CutVertexTet>
 keptCutTets(const Delaunay &dt, const Model &remesh, const std::vector<Vec3> &sites,
             const std::vector<int> &pointSite, const std::vector<char> &cut,
             const std::vector<Cell> &segmentCells, const std::vector<Candidate> &interior,
-            const VertexDualParams &params, VertexDualCells &out)
+            const VertexDualParams &params, std::vector<Vec3> &centroids, VertexDualCells &out)
 {
-    std::vector<CutVertexTet> tets =
-        findCutVertexTets(dt, remesh, sites, pointSite, cut, params.minDihedralDegrees, out.cut);
+    std::vector<CutVertexTet> tets = findCutVertexTets(
+        dt, remesh, sites, pointSite, cut, params.minDihedralDegrees, centroids, out.cut);
     const int nV = static_cast<int>(remesh.vertices.size());
     std::vector<Vec3> points = remesh.vertices;
     points.insert(points.end(), sites.begin(), sites.end());
+    points.insert(points.end(), centroids.begin(), centroids.end());
     // The same four points from two Voronoi vertices: one tet.
     std::set<std::array<int, 4>> distinct;
     tets.erase(std::remove_if(tets.begin(), tets.end(),
@@ -237,10 +238,11 @@ VertexDualCells buildVertexDualCells(const Model &remesh, const std::vector<Vec3
             }
     }
 
+    std::vector<Vec3> centroids; // of the cells split from their centroid
     const std::vector<CutVertexTet> cutTets =
-        !params.fillCutCells
-            ? keptCutTets(dt, remesh, sites, pointSite, cut, segmentCells, candidates, params, out)
-            : std::vector<CutVertexTet>{};
+        !params.fillCutCells ? keptCutTets(dt, remesh, sites, pointSite, cut, segmentCells,
+                                           candidates, params, centroids, out)
+                             : std::vector<CutVertexTet>{};
 
     // Kept tets do not meet the surfaces, so each group linked by shared sites lies in one region:
     // one point location per group.
@@ -280,6 +282,7 @@ VertexDualCells buildVertexDualCells(const Model &remesh, const std::vector<Vec3
         out.region.push_back(it->second);
     }
     const int nV = static_cast<int>(remesh.vertices.size());
+    std::vector<int> centroidOf(centroids.size(), -1);
     for (const CutVertexTet &t : cutTets) {
         Cell cell = Cell::tet(0, 0, 0, 0);
         for (int k = 0; k < 4; ++k) {
@@ -287,16 +290,21 @@ VertexDualCells buildVertexDualCells(const Model &remesh, const std::vector<Vec3
                 cell.nodes[k] = t.nodes[k];
                 continue;
             }
-            int &id = pointOf[t.nodes[k] - nV];
+            const int nSites = static_cast<int>(sites.size());
+            const bool site = t.nodes[k] < nV + nSites;
+            int &id = site ? pointOf[t.nodes[k] - nV] : centroidOf[t.nodes[k] - nV - nSites];
             if (id < 0) {
                 id = firstPointId + static_cast<int>(out.points.size());
-                out.points.push_back(sites[t.nodes[k] - nV]);
+                out.points.push_back(site ? sites[t.nodes[k] - nV]
+                                          : centroids[t.nodes[k] - nV - nSites]);
             }
             cell.nodes[k] = id;
         }
         out.cells.push_back(cell);
         out.region.push_back(t.region);
         ++out.cutKept;
+        out.cutSplitKept += *std::max_element(t.nodes.begin(), t.nodes.end())
+                            >= nV + static_cast<int>(sites.size());
     }
     return out;
 }

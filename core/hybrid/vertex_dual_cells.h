@@ -44,6 +44,7 @@ struct VertexDualCells {
     CutVertexStats cut;                  // the cut Voronoi vertices (cut_vertex_cells.h)
     std::size_t cutRejectedCrossing = 0; // cut-cell tets crossing a surface or another cell
     std::size_t cutKept = 0;             // of cells, the last ones
+    std::size_t cutSplitKept = 0;        // of those, tets of cells split from their centroid
 };
 
 // `remesh` has topology; pointSite[v] is the site of Model::vertices[v]. The sites without a remesh
