@@ -13,6 +13,7 @@
 #include "io/mesh_writer.h"
 #include "model/synthetic_models.h"
 #include "model/topology.h"
+#include "support/sanitizer.h"
 #include "volume/region_winding.h"
 #include "volume/tet_quality.h"
 
@@ -207,18 +208,18 @@ private slots:
     {
         const Model model = thinLayerBox();
         HybridParams params;
-        params.sites = 2000;
+        params.sites = test::kSanitized ? 1000 : 2000; // two meshes; instrumented, the smaller
         const HybridResult r = buildHybridMesh(model, params);
         HybridParams fillParams = params;
         fillParams.vertexCells.fillCutCells = true;
         const HybridResult f = buildHybridMesh(model, fillParams);
         const CutVertexStats &cut = r.vertexDual.cut;
-        qInfo("layered box @2000: %zu cut-vertex tets kept of %zu candidates (no region %zu, "
+        qInfo("layered box @%d: %zu cut-vertex tets kept of %zu candidates (no region %zu, "
               "several points %zu, shape %zu, surface %zu, beside slivers %zu, crossing %zu); "
               "fill tets %zu (TetGen alone there: %zu); %.2f s",
-              r.cutVertexDualKept, cut.candidates, cut.noRegion, cut.manyPoints, cut.rejectedShape,
-              cut.rejectedSurface, cut.besideSliver, r.vertexDual.cutRejectedCrossing, r.fillTets,
-              f.fillTets, r.timings.totalSeconds);
+              params.sites, r.cutVertexDualKept, cut.candidates, cut.noRegion, cut.manyPoints,
+              cut.rejectedShape, cut.rejectedSurface, cut.besideSliver,
+              r.vertexDual.cutRejectedCrossing, r.fillTets, f.fillTets, r.timings.totalSeconds);
         for (const std::string &line : r.repairLog)
             qInfo("%s", line.c_str());
         QVERIFY2(r.validity.valid(), r.message.c_str());
