@@ -66,6 +66,7 @@ QJsonObject cutVertexJson(const VertexDualCells &v)
             {"no_region", static_cast<qint64>(v.cut.noRegion)},
             {"many_points", static_cast<qint64>(v.cut.manyPoints)},
             {"split", static_cast<qint64>(v.cut.split)},
+            {"undefined_chosen", static_cast<qint64>(v.cut.undefinedChosen)},
             {"split_tets_kept", static_cast<qint64>(v.cutSplitKept)},
             {"rejected_shape", static_cast<qint64>(v.cut.rejectedShape)},
             {"rejected_surface", static_cast<qint64>(v.cut.rejectedSurface)},

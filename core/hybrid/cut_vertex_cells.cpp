@@ -86,6 +86,16 @@ private:
     TriangleTree m_tree;
 };
 
+// The points one undefined cut site may offer (its choices are its single points and pairs).
+constexpr int kMostChoices = 6;
+
+struct Built {
+    std::vector<std::array<int, 4>> tets;
+    bool split = false;
+    Vec3 centroid = Vec3::Zero();
+    double quality = -1.0; // smallest dihedral angle; -1 when a tet is not positive
+};
+
 // The faces of the convex hull of 5–8 points, each as indices ordered with the outward normal
 // (exact orientation tests); empty when a point is inside the hull or four are coplanar on it
 // (the thesis's invalid cells, left to the fill).
@@ -220,12 +230,53 @@ std::vector<CutVertexTet> findCutVertexTets(const Delaunay &dt, const Model &rem
 
     std::vector<char> sliver(cells.size(), 0);
     std::vector<std::vector<int>> members(cells.size()); // indices in out
+    Vec3 pending = Vec3::Zero(); // the centroid of the cell being built, not yet kept
     auto pointAt = [&](int id) -> const Vec3 & {
         if (id < nV)
             return remesh.vertices[id];
         if (id < nV + nSites)
             return sites[id - nV];
-        return centroids[id - nV - nSites];
+        const std::size_t c = id - nV - nSites;
+        return c < centroids.size() ? centroids[c] : pending;
+    };
+    // The tets of a cell on these points (4: itself, in the orientation of the sites s; 5–8:
+    // split from the centroid), with their smallest dihedral angle, or no tet.
+    auto build = [&](const std::vector<int> &nodes, const std::array<int, 4> &s) {
+        Built b;
+        if (nodes.size() == 4) {
+            std::array<int, 4> t{nodes[0], nodes[1], nodes[2], nodes[3]};
+            // Positively oriented like the Delaunay tet of the sites, which CGAL gives positive.
+            if (tetVolume(sites[s[0]], sites[s[1]], sites[s[2]], sites[s[3]]) < 0)
+                std::swap(t[0], t[1]);
+            b.tets.push_back(t);
+        } else {
+            std::vector<Vec3> q;
+            for (int id : nodes)
+                q.push_back(pointAt(id));
+            const auto faces = hullTriangles(q);
+            if (faces.empty())
+                return b;
+            b.split = true;
+            b.centroid = Vec3::Zero();
+            for (const Vec3 &p : q)
+                b.centroid += p / static_cast<double>(q.size());
+            pending = b.centroid;
+            const int centroid = nV + nSites + static_cast<int>(centroids.size());
+            for (const auto &f : faces) // outward faces: the centroid is behind each
+                b.tets.push_back({nodes[f[1]], nodes[f[0]], nodes[f[2]], centroid});
+        }
+        b.quality = 180.0;
+        for (const auto &t : b.tets) {
+            const Vec3 &p0 = pointAt(t[0]), &p1 = pointAt(t[1]), &p2 = pointAt(t[2]),
+                       &p3 = pointAt(t[3]);
+            const auto angles = dihedralAnglesDeg(p0, p1, p2, p3);
+            b.quality = tetVolume(p0, p1, p2, p3) > 0
+                            ? std::min(b.quality, *std::min_element(angles.begin(), angles.end()))
+                            : -1.0;
+            if (b.quality < 0)
+                break;
+        }
+        return b;
     };
     for (std::size_t i = 0; i < cells.size(); ++i) {
         const int r = region[i];
@@ -233,76 +284,84 @@ std::vector<CutVertexTet> findCutVertexTets(const Delaunay &dt, const Model &rem
             ++stats.noRegion;
             continue;
         }
-        // One point per uncut site, one or two (a cell part crossed twice) per cut one.
+        // One point per uncut site, one or two (a cell part crossed twice) per cut one. A cut
+        // site with more points on the region's boundary is undefined (Fig 5.6): with one such
+        // site, its one or two points are those giving the best-shaped cell (§5.4).
         std::array<int, 4> s;
-        std::vector<int> nodes;
+        std::vector<std::vector<int>> choices(1);
+        int undefined = 0;
         bool defined = true;
         for (int k = 0; k < 4; ++k) {
             s[k] = cells[i]->vertex(k)->info();
-            if (!cut[s[k]]) {
-                nodes.push_back(nV + s[k]);
-                continue;
+            std::vector<int> points;
+            if (!cut[s[k]])
+                points.push_back(nV + s[k]);
+            else
+                for (int v : sitePoints[s[k]])
+                    for (int surface : vertexSurfaces[v])
+                        if (bounds_[r][surface]) {
+                            points.push_back(v);
+                            break;
+                        }
+            const int count = static_cast<int>(points.size());
+            if (count == 0 || count > kMostChoices) {
+                defined = false;
+                break;
             }
-            int count = 0;
-            for (int v : sitePoints[s[k]])
-                for (int surface : vertexSurfaces[v])
-                    if (bounds_[r][surface]) {
-                        nodes.push_back(v);
-                        ++count;
-                        break;
-                    }
-            defined = defined && count >= 1 && count <= 2;
+            std::vector<std::vector<int>> next;
+            if (count <= 2) {
+                for (auto c : choices) {
+                    c.insert(c.end(), points.begin(), points.end());
+                    next.push_back(std::move(c));
+                }
+            } else {
+                if (++undefined > 1) {
+                    defined = false;
+                    break;
+                }
+                for (const auto &c : choices)
+                    for (int x = 0; x < count; ++x)
+                        for (int y = x; y < count; ++y) {
+                            auto d = c;
+                            d.push_back(points[x]);
+                            if (y != x)
+                                d.push_back(points[y]);
+                            next.push_back(std::move(d));
+                        }
+            }
+            choices = std::move(next);
         }
         if (!defined) {
             ++stats.manyPoints;
             continue;
         }
-        std::vector<std::array<int, 4>> tets;
-        if (nodes.size() == 4) {
-            std::array<int, 4> t{nodes[0], nodes[1], nodes[2], nodes[3]};
-            // Positively oriented like the Delaunay tet of the sites, which CGAL gives positive.
-            if (tetVolume(sites[s[0]], sites[s[1]], sites[s[2]], sites[s[3]]) < 0)
-                std::swap(t[0], t[1]);
-            tets.push_back(t);
-        } else {
-            std::vector<Vec3> q;
-            for (int id : nodes)
-                q.push_back(pointAt(id));
-            const auto faces = hullTriangles(q);
-            if (faces.empty()) {
-                ++stats.rejectedShape;
-                sliver[i] = 1;
-                continue;
-            }
-            Vec3 g = Vec3::Zero();
-            for (const Vec3 &p : q)
-                g += p / static_cast<double>(q.size());
-            const int centroid = nV + nSites + static_cast<int>(centroids.size());
-            centroids.push_back(g);
-            for (const auto &f : faces) // outward faces: the centroid is behind each
-                tets.push_back({nodes[f[1]], nodes[f[0]], nodes[f[2]], centroid});
+        Built best;
+        for (const auto &nodes : choices) {
+            Built b = build(nodes, s);
+            if (best.tets.empty() || b.quality > best.quality)
+                best = std::move(b);
+        }
+        stats.undefinedChosen += undefined;
+        if (best.tets.empty() || best.quality < minDihedralDegrees) {
+            ++stats.rejectedShape;
+            sliver[i] = 1;
+            continue;
+        }
+        if (best.split) {
+            centroids.push_back(best.centroid);
             ++stats.split;
         }
-        bool shaped = true, clear = true;
+        const std::vector<std::array<int, 4>> &tets = best.tets;
+        bool clear = true;
         for (const auto &t : tets) {
             std::array<Vec3, 4> q;
             for (int k = 0; k < 4; ++k)
                 q[k] = pointAt(t[k]);
-            const auto angles = dihedralAnglesDeg(q[0], q[1], q[2], q[3]);
-            shaped = shaped && tetVolume(q[0], q[1], q[2], q[3]) > 0
-                     && *std::min_element(angles.begin(), angles.end()) >= minDihedralDegrees;
-            if (!shaped)
-                break;
             std::array<int, 4> ids;
             for (int k = 0; k < 4; ++k)
                 ids[k] = t[k] < nV ? t[k] : -1;
             const Vec3 g = (q[0] + q[1] + q[2] + q[3]) / 4.0;
             clear = clear && !crossing.holdsVertex(q, ids) && !crossing.segment(voronoi[i], g);
-        }
-        if (!shaped) {
-            ++stats.rejectedShape;
-            sliver[i] = 1;
-            continue;
         }
         if (!clear) {
             ++stats.rejectedSurface;

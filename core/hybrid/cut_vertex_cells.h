@@ -5,8 +5,10 @@
 // (one intersection component, Table 5.1 "cell part, 1 → 1 boundary vertex") the cell is a tet
 // linking interior sites and remesh points. A part crossed twice gives two points (Fig 5.4): the
 // 5–8-vertex cells are split from their centroid into the tets of their hull faces (§5.4) when
-// their points are in convex position with no four coplanar on the hull; the others (parts with
-// more points, undefined or invalid cells) are left to the constrained fill.
+// their points are in convex position with no four coplanar on the hull. A site with more points
+// on the region's boundary is undefined (Fig 5.6): when there is one such site, the one or two of
+// its points giving the best smallest dihedral angle are taken (§5.4 "chosen by quality"). The
+// others (and cells still inverted, flat or not convex) are left to the constrained fill.
 //
 // The region of a Voronoi vertex comes from its uncut sites (their cells meet no surface, so the
 // vertex lies in their region) and is carried to the other vertices along Voronoi edges that cross
@@ -38,7 +40,8 @@ struct CutVertexTet {
 struct CutVertexStats {
     std::size_t candidates = 0;      // finite Delaunay tets with a cut site
     std::size_t noRegion = 0;        // Voronoi vertex outside the model or not reached
-    std::size_t manyPoints = 0;      // a cut cell part with no point or more than two
+    std::size_t manyPoints = 0;      // a cut site with no point or over 6, or two with over 2
+    std::size_t undefinedChosen = 0; // cells with a site of 3–6 points, its best 1 or 2 taken
     std::size_t split = 0;           // 5–8-vertex cells split from their centroid (before checks)
     std::size_t rejectedShape = 0;   // inverted, or a dihedral angle under the bound
     std::size_t rejectedSurface = 0; // holds a remesh vertex, or its centroid is across a surface

@@ -308,9 +308,11 @@ private slots:
         QVERIFY(r.mesh.countCells(CellType::Prism) > 0);
         // The chapter-4 surfaces give sites two points on a region's boundary: cells of 5-8
         // points, split from their centroids (§5.4), some of them kept in this valid mesh.
-        qInfo("cut cells split %zu, tets kept %zu", r.vertexDual.cut.split,
-              r.vertexDual.cutSplitKept);
+        // Sites with more points there are undefined (Fig 5.6): their best 1 or 2 are chosen.
+        qInfo("cut cells split %zu, tets kept %zu, undefined sites chosen %zu",
+              r.vertexDual.cut.split, r.vertexDual.cutSplitKept, r.vertexDual.cut.undefinedChosen);
         QVERIFY(r.vertexDual.cut.split > 0);
+        QVERIFY(r.vertexDual.cut.undefinedChosen > 0);
         QVERIFY(r.vertexDual.cutSplitKept > 0);
     }
 
