@@ -539,16 +539,15 @@ HybridResult buildHybridMesh(const Model &input, const HybridParams &params, Pro
             t = Clock::now();
             VolumeMesh mesh = assemble(remesh, basePoints, fill);
             MixedMeshValidity validity = checkMixedMesh(mesh, check);
-            result.timings.checkSeconds += since(t);
             // Fill slivers pressed between cut-vertex tets and the surfaces (four surface points
             // on one face, most often): those tets go and TetGen fills the wider place.
             std::set<int> pressing =
                 validity.valid() && !lastResort && sliverRounds < kSliverRounds
                     ? cutTetsBesideFillSlivers(mesh, fill.cells.size(), kept, keptVertexDual)
                     : std::set<int>{};
+            result.timings.checkSeconds += since(t);
             if (!pressing.empty()) {
                 ++sliverRounds;
-                result.timings.checkSeconds += since(t);
                 result.repairLog.push_back("fill " + std::to_string(round) + ": "
                                            + std::to_string(pressing.size())
                                            + " cut-vertex tets beside fill slivers dropped");
