@@ -1,5 +1,6 @@
 #include "hybrid/cut_vertex_cells.h"
 
+#include "common/union_find.h"
 #include "complexity/triangle_tree.h"
 #include "mesh/volume_mesh.h"
 #include "volume/region_winding.h"
@@ -15,13 +16,6 @@ namespace stratamesh {
 namespace {
 
 using namespace indexed_delaunay;
-
-int findRoot(std::vector<int> &parent, int i)
-{
-    while (parent[i] != i)
-        i = parent[i] = parent[parent[i]];
-    return i;
-}
 
 class SurfaceCrossing {
 public:
@@ -146,16 +140,15 @@ std::vector<CutVertexTet> findCutVertexTets(const Delaunay &dt, const Model &rem
 
     // Uncut sites linked by Delaunay edges that cross no surface share a region: one point
     // location per group.
-    std::vector<int> parent(sites.size());
-    std::iota(parent.begin(), parent.end(), 0);
+    UnionFind groups(static_cast<int>(sites.size()));
     for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
         const int a = e->first->vertex(e->second)->info(), b = e->first->vertex(e->third)->info();
         if (!cut[a] && !cut[b] && !crossing.segment(sites[a], sites[b]))
-            parent[findRoot(parent, a)] = findRoot(parent, b);
+            groups.join(a, b);
     }
     std::map<int, int> groupRegion;
     auto siteRegion = [&](int s) {
-        const int root = findRoot(parent, s);
+        const int root = groups.find(s);
         auto [it, fresh] = groupRegion.emplace(root, -1);
         if (fresh)
             it->second = locateRegion(remesh, sites[root]);
