@@ -30,7 +30,8 @@ struct CleanupCounts {
     int contactTriangles = 0;
     int interiorCollapses = 0;
     int flips = 0;
-    int relaxed = 0; // vertex moves of the relaxation (mesh_smoothing.h)
+    int relaxed = 0;   // vertex moves of the relaxation (mesh_smoothing.h)
+    int stripRows = 0; // vertices added down the middle of strips (strip_rows.h)
 };
 
 // The input model gives names to the ledger records (point.surfaces/lines/corners index it).

@@ -22,6 +22,7 @@
 #include "remesh/pocket_repair.h"
 #include "remesh/sizing_refinement.h"
 #include "remesh/strip_collapse.h"
+#include "remesh/strip_rows.h"
 #include "remesh/topology_refinement.h"
 #include "voronoi/restricted_voronoi.h"
 #include "voronoi/restriction_domain.h"
@@ -159,6 +160,8 @@ RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec
             step.tick(0.9, "flips");
             if (params.flips)
                 result.cleanup.flips += improveByFlips(soup);
+            step.tick(0.95, "strip rows");
+            result.cleanup.stripRows = addStripRows(soup, projector);
         }
     }
     {
