@@ -6,7 +6,6 @@
 #include "remesh/mesh_smoothing.h"
 
 #include <algorithm>
-#include <array>
 #include <set>
 #include <utility>
 
@@ -28,12 +27,6 @@ int trianglesBelow(const EditableSoup &soup, double angleDeg)
     return n;
 }
 
-double angleAt(const Vec3 &apex, const Vec3 &b, const Vec3 &c)
-{
-    const Vec3 u = (b - apex).normalized(), w = (c - apex).normalized();
-    return std::acos(std::clamp(u.dot(w), -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
-}
-
 // The rungs of the strip triangles: (a, b) and (a, c) of a triangle whose only feature edge is
 // (b, c) and whose apex a lies on another line, with the angle at a under the limit.
 std::set<std::pair<int, int>> stripRungs(const EditableSoup &soup, double minAngleDeg)
@@ -47,7 +40,8 @@ std::set<std::pair<int, int>> stripRungs(const EditableSoup &soup, double minAng
             const int a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
             if (!soup.isFeatureEdge(b, c) || soup.isFeatureEdge(a, b) || soup.isFeatureEdge(a, c)
                 || soup.vertexClass(a) == VertexClass::Interior
-                || angleAt(soup.position(a), soup.position(b), soup.position(c)) >= minAngleDeg)
+                || triangleShape(soup.position(a), soup.position(b), soup.position(c)).anglesDeg[0]
+                       >= minAngleDeg)
                 continue;
             for (int e : {b, c})
                 if (soup.vertexClass(e) != VertexClass::Interior)

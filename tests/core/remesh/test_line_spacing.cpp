@@ -3,12 +3,10 @@
 // dense as the surfaces on either side, and nothing moves when they are not.
 #include "remesh/line_spacing.h"
 
-#include "quality/triangle_quality.h"
+#include "flat_soup_shape.h"
 
-#include <Eigen/Geometry>
 #include <QtTest>
 
-#include <map>
 #include <vector>
 
 using namespace stratamesh;
@@ -78,25 +76,13 @@ OutputMesh strip(double width, double lineStep)
 }
 
 struct Shape {
-    int small = 0; // triangles under 30°
-    int flipped = 0;
-    std::map<int, double> area; // per surface
+    test::FlatSoupShape flat;
     double lineLength[2] = {0.0, 0.0};
 };
 
 Shape shapeOf(const EditableSoup &soup)
 {
-    Shape s;
-    for (int t = 0; t < soup.triangleCapacity(); ++t) {
-        if (!soup.alive(t))
-            continue;
-        const auto &v = soup.triangle(t).v;
-        const Vec3 p = soup.position(v[0]), q = soup.position(v[1]), r = soup.position(v[2]);
-        s.small += triangleMinAngleDeg(p, q, r) < 30.0 ? 1 : 0;
-        const Vec3 n = (q - p).cross(r - p);
-        s.flipped += n.z() <= 0.0 ? 1 : 0;
-        s.area[soup.triangle(t).surface] += 0.5 * n.norm();
-    }
+    Shape s{test::flatSoupShape(soup)};
     // The contacts: edges between the strip and a surface beside it, by the height they run at.
     for (int v = 0; v < soup.pointCount(); ++v)
         for (int w : soup.neighbours(v))
@@ -122,18 +108,18 @@ private slots:
         EditableSoup soup(strip(1.0, 0.5));
         const Shape before = shapeOf(soup);
         // Every strip triangle and the half-cell ones beside it: 26.6°.
-        QCOMPARE(before.small, 64);
+        QCOMPARE(before.flat.small, 64);
         const int removed = spaceLineVertices(soup);
         const Shape after = shapeOf(soup);
-        qInfo("  %d line vertices removed, triangles under 30°: %d → %d", removed, before.small,
-              after.small);
+        qInfo("  %d line vertices removed, triangles under 30°: %d → %d", removed,
+              before.flat.small, after.flat.small);
         QVERIFY(removed >= 8);
-        QVERIFY(after.small <= before.small / 4);
-        QCOMPARE(after.flipped, 0);
+        QVERIFY(after.flat.small <= before.flat.small / 4);
+        QCOMPARE(after.flat.flipped, 0);
         // Same surfaces, same area each, same two contacts end to end.
-        QCOMPARE(after.area.size(), std::size_t(3));
-        for (const auto &[surface, area] : before.area)
-            QVERIFY(std::abs(after.area.at(surface) - area) < 1e-9);
+        QCOMPARE(after.flat.area.size(), std::size_t(3));
+        for (const auto &[surface, area] : before.flat.area)
+            QVERIFY(std::abs(after.flat.area.at(surface) - area) < 1e-9);
         QVERIFY(std::abs(after.lineLength[0] - 8.0) < 1e-9);
         QVERIFY(std::abs(after.lineLength[1] - 8.0) < 1e-9);
         for (int v = 0; v < soup.pointCount(); ++v)

@@ -3,13 +3,11 @@
 // surfaces on either side, so that thinning the lines (line_spacing.h) cannot mend it.
 #include "remesh/strip_rows.h"
 
+#include "flat_soup_shape.h"
 #include "model/model.h"
-#include "quality/triangle_quality.h"
 
-#include <Eigen/Geometry>
 #include <QtTest>
 
-#include <map>
 #include <vector>
 
 using namespace stratamesh;
@@ -80,28 +78,13 @@ Model input(double width)
 }
 
 struct Shape {
-    int small = 0; // triangles under 30°
-    int flipped = 0;
+    test::FlatSoupShape flat;
     int featureEdges = 0;
-    double offPlane = 0.0;
-    std::map<int, double> area; // per surface
 };
 
 Shape shapeOf(const EditableSoup &soup)
 {
-    Shape s;
-    for (int t = 0; t < soup.triangleCapacity(); ++t) {
-        if (!soup.alive(t))
-            continue;
-        const auto &v = soup.triangle(t).v;
-        const Vec3 p = soup.position(v[0]), q = soup.position(v[1]), r = soup.position(v[2]);
-        s.small += triangleMinAngleDeg(p, q, r) < 30.0 ? 1 : 0;
-        const Vec3 n = (q - p).cross(r - p);
-        s.flipped += n.z() <= 0.0 ? 1 : 0;
-        s.area[soup.triangle(t).surface] += 0.5 * n.norm();
-        for (int k = 0; k < 3; ++k)
-            s.offPlane = std::max(s.offPlane, std::abs(soup.position(v[k]).z()));
-    }
+    Shape s{test::flatSoupShape(soup)};
     for (int v = 0; v < soup.pointCount(); ++v)
         for (int w : soup.neighbours(v))
             s.featureEdges += v < w && soup.isFeatureEdge(v, w) ? 1 : 0;
@@ -120,19 +103,19 @@ private slots:
         InputProjector projector(model);
         EditableSoup soup(strip(1.0));
         const Shape before = shapeOf(soup);
-        QCOMPARE(before.small, 32); // the strip's 0.5 × 1 right triangles: 26.6°
+        QCOMPARE(before.flat.small, 32); // the strip's 0.5 × 1 right triangles: 26.6°
         const int added = addStripRows(soup, projector);
         const Shape after = shapeOf(soup);
-        qInfo("  %d vertices added, triangles under 30°: %d → %d", added, before.small,
-              after.small);
+        qInfo("  %d vertices added, triangles under 30°: %d → %d", added, before.flat.small,
+              after.flat.small);
         QVERIFY(added >= 8);
-        QVERIFY(after.small <= before.small / 4);
-        QCOMPARE(after.flipped, 0);
-        QCOMPARE(after.offPlane, 0.0);
+        QVERIFY(after.flat.small <= before.flat.small / 4);
+        QCOMPARE(after.flat.flipped, 0);
+        QCOMPARE(after.flat.offPlane, 0.0);
         // Same surfaces, same area each, and the contacts and borders untouched.
-        QCOMPARE(after.area.size(), std::size_t(3));
-        for (const auto &[surface, area] : before.area)
-            QVERIFY(std::abs(after.area.at(surface) - area) < 1e-9);
+        QCOMPARE(after.flat.area.size(), std::size_t(3));
+        for (const auto &[surface, area] : before.flat.area)
+            QVERIFY(std::abs(after.flat.area.at(surface) - area) < 1e-9);
         QCOMPARE(after.featureEdges, before.featureEdges);
     }
 
