@@ -24,7 +24,9 @@ Vec3 edgeMidpoint(const Model &model, long long key)
 
 } // namespace validity_detail
 
-ValidityReport checkValidity(const Model &model, Progress &progress)
+namespace {
+
+ValidityReport runChecks(const Model &model, bool intersections, Progress &progress)
 {
     using namespace validity_detail;
     std::optional<Model> withTopology;
@@ -44,9 +46,22 @@ ValidityReport checkValidity(const Model &model, Progress &progress)
     if (sink.count(validity_check::regionBoundary) == 0)
         checkRegionShells(in, sink);
     progress.tick(0.2, "validity: intersections");
-    checkIntersections(in, sink, progress);
+    if (intersections)
+        checkIntersections(in, sink, progress);
     progress.tick(1.0, "validity: done");
     return sink.take();
+}
+
+} // namespace
+
+ValidityReport checkValidity(const Model &model, Progress &progress)
+{
+    return runChecks(model, true, progress);
+}
+
+ValidityReport checkValidityExceptIntersections(const Model &model, Progress &progress)
+{
+    return runChecks(model, false, progress);
 }
 
 } // namespace stratamesh

@@ -74,6 +74,12 @@ struct ValidityReport {
 // Throws Cancelled when progress is cancelled, InputError when topology cannot be recovered.
 ValidityReport checkValidity(const Model &model, Progress &progress = Progress::none());
 
+// Every check but surface_intersection: for an edit of one surface on a model without
+// intersections whose new triangles trianglesMeetOthers (below) has cleared, the full check would
+// find none again, and that search is most of its time.
+ValidityReport checkValidityExceptIntersections(const Model &model,
+                                                Progress &progress = Progress::none());
+
 // Whether one of `triangles` (local ids) of `surface` meets another triangle of the model outside
 // the vertices and edge they share: the surface_intersection test of checkValidity on those
 // triangles only, for edits that must not add an intersection. The model needs its topology.

@@ -10,6 +10,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <map>
 
 using namespace stratamesh;
 using namespace stratamesh::test;
@@ -226,6 +227,27 @@ private slots:
                 QVERIFY(std::abs(p.position.x() - 0.5) < 1e-12); // on both planes
                 QVERIFY(std::abs(p.position.z()) < 1e-12);
             }
+    }
+
+    // The pocket repair's check for edits cleared by trianglesMeetOthers: the same report but for
+    // the intersections.
+    void everyCheckButTheIntersections()
+    {
+        const Surface wall =
+            makeSurface("wall", {{0.5, -1, -1}, {0.5, 2, -1}, {0.5, 2, 1}, {0.5, -1, 1}},
+                        {{0, 1, 2}, {0, 2, 3}});
+        const Surface flipped = makeSurface("flipped", {{0, 0, 5}, {1, 0, 5}, {1, 1, 5}, {0, 1, 5}},
+                                            {{0, 1, 2}, {0, 3, 2}});
+        const Model m = modelOf({square("floor"), wall, flipped});
+        const ValidityReport all = checkValidity(m);
+        const ValidityReport rest = checkValidityExceptIntersections(m);
+        QVERIFY(all.count(check::surfaceIntersection) >= 1);
+        QCOMPARE(rest.count(check::surfaceIntersection), std::size_t(0));
+        QCOMPARE(rest.count(check::inconsistentOrientation), std::size_t(1));
+        std::map<std::string, std::size_t> expected = all.counts;
+        expected.erase(check::surfaceIntersection);
+        QCOMPARE(rest.counts, expected);
+        QVERIFY(!rest.valid);
     }
 
     // Exact decisions for triangles sharing a vertex or an edge.
