@@ -60,7 +60,6 @@ int addStripRows(EditableSoup &soup, InputProjector &projector, const StripRowPa
         return 0;
     const EditableSoup start = soup;
     const int below = trianglesBelow(soup, params.minAngleDeg);
-    const std::size_t crossings = soupIntersections(soup).size();
     int added = 0;
     std::vector<int> row;
     for (const auto &[u, w] : rungs) {
@@ -100,8 +99,12 @@ int addStripRows(EditableSoup &soup, InputProjector &projector, const StripRowPa
     smoothing.passes = params.relaxPasses;
     relaxVertices(soup, projector, smoothing);
     improveByFlips(soup);
-    if (trianglesBelow(soup, params.minAngleDeg) >= below
-        || soupIntersections(soup).size() > crossings) {
+    // The start's crossings are counted only when the result has some (it seldom does).
+    const auto moreCrossings = [&] {
+        const std::size_t crossings = soupIntersections(soup).size();
+        return crossings > 0 && crossings > soupIntersections(start).size();
+    };
+    if (trianglesBelow(soup, params.minAngleDeg) >= below || moreCrossings()) {
         soup = start;
         return 0;
     }
