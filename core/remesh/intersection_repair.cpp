@@ -202,6 +202,15 @@ std::vector<std::pair<int, int>> soupIntersections(const EditableSoup &soup)
     return pairs;
 }
 
+bool CrossingsAtStart::exceededBy(std::size_t pairs)
+{
+    if (pairs == 0)
+        return false;
+    if (!count_)
+        count_ = soupIntersections(start_).size();
+    return pairs > *count_;
+}
+
 IntersectionRepairResult repairIntersections(EditableSoup &soup, const Model &input,
                                              const IntersectionRepairParams &params,
                                              SimplificationLedger &ledger, Progress &progress)

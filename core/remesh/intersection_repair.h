@@ -10,6 +10,9 @@
 #include "remesh/editable_soup.h"
 #include "remesh/simplification_ledger.h"
 
+#include <cstddef>
+#include <optional>
+
 namespace stratamesh {
 
 struct IntersectionRepairParams {
@@ -35,5 +38,20 @@ int intersectionsAroundVertices(const EditableSoup &soup, const std::vector<int>
 
 // Pairs of alive triangles of the soup that intersect (triangle ids of the soup).
 std::vector<std::pair<int, int>> soupIntersections(const EditableSoup &soup);
+
+// The crossing pairs of a soup kept as a post-processing step's start, searched for only when a
+// result with crossings is compared with it: the search of a whole soup is most of such a step's
+// time, and most results have no crossing at all. The soup must outlive the count.
+class CrossingsAtStart {
+public:
+    explicit CrossingsAtStart(const EditableSoup &start) : start_(start) {}
+
+    // Whether a result with `pairs` crossing pairs has more than the start (never when 0).
+    bool exceededBy(std::size_t pairs);
+
+private:
+    const EditableSoup &start_;
+    std::optional<std::size_t> count_;
+};
 
 } // namespace stratamesh

@@ -9,7 +9,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -167,14 +166,7 @@ int spaceLineVertices(EditableSoup &soup, const LineSpacingParams &params)
     // triangle through another surface nearby. Then the whole run is made again from the
     // start without the collapses onto the crossing triangles' vertices.
     const EditableSoup start = soup;
-    // The start's own crossings are counted only when a run leaves some: most leave none, and
-    // the search of the whole soup is most of this step's time.
-    std::optional<std::size_t> crossings;
-    const auto crossingsAtStart = [&] {
-        if (!crossings)
-            crossings = soupIntersections(start).size();
-        return *crossings;
-    };
+    CrossingsAtStart atStart(start);
     std::set<int> banned;
     std::vector<std::pair<int, int>> done;
     for (int attempt = 0; attempt < 4; ++attempt) {
@@ -182,7 +174,7 @@ int spaceLineVertices(EditableSoup &soup, const LineSpacingParams &params)
         if (done.empty())
             return 0;
         const std::vector<std::pair<int, int>> pairs = soupIntersections(soup);
-        if (pairs.empty() || pairs.size() <= crossingsAtStart())
+        if (!atStart.exceededBy(pairs.size()))
             return static_cast<int>(done.size());
         std::set<int> touched;
         for (const auto &[a, b] : pairs)

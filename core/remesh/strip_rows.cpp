@@ -99,12 +99,8 @@ int addStripRows(EditableSoup &soup, InputProjector &projector, const StripRowPa
     smoothing.passes = params.relaxPasses;
     relaxVertices(soup, projector, smoothing);
     improveByFlips(soup);
-    // The start's crossings are counted only when the result has some (it seldom does).
-    const auto moreCrossings = [&] {
-        const std::size_t crossings = soupIntersections(soup).size();
-        return crossings > 0 && crossings > soupIntersections(start).size();
-    };
-    if (trianglesBelow(soup, params.minAngleDeg) >= below || moreCrossings()) {
+    if (trianglesBelow(soup, params.minAngleDeg) >= below
+        || CrossingsAtStart(start).exceededBy(soupIntersections(soup).size())) {
         soup = start;
         return 0;
     }

@@ -4,6 +4,7 @@
 #include "remesh/line_spacing.h"
 
 #include "flat_soup_shape.h"
+#include "remesh/intersection_repair.h"
 
 #include <QtTest>
 
@@ -125,6 +126,35 @@ private slots:
         for (int v = 0; v < soup.pointCount(); ++v)
             if (!soup.vertexTriangles(v).empty() && !soup.point(v).corners.empty())
                 QCOMPARE(soup.vertexClass(v), VertexClass::Fixed);
+    }
+
+    void aCrossingAlreadyThereDoesNotUndoTheThinning()
+    {
+        // The collapses are undone when they add crossings; one the soup had before is not theirs.
+        OutputMesh mesh = strip(1.0, 0.5);
+        test::addUprightNeedle(mesh, 4.5, -0.93, 3);
+        EditableSoup soup(mesh);
+        QCOMPARE(soupIntersections(soup).size(), std::size_t(1));
+        const int before = shapeOf(soup).flat.small;
+        const int removed = spaceLineVertices(soup);
+        qInfo("  %d line vertices removed beside a crossing, triangles under 30°: %d → %d", removed,
+              before, shapeOf(soup).flat.small);
+        QVERIFY(removed >= 8);
+        QVERIFY(shapeOf(soup).flat.small <= before / 4);
+        QCOMPARE(soupIntersections(soup).size(), std::size_t(1));
+    }
+
+    void collapsesThatWouldCrossAreLeftOut()
+    {
+        // A needle through a strip triangle, 0.1 from its edges, where the thinned strip has the
+        // edge from (4.5, 0) to (3.5, 1): left there it would cross the two triangles of that edge.
+        OutputMesh mesh = strip(1.0, 0.5);
+        test::addUprightNeedle(mesh, 4.25, 0.25, 3);
+        EditableSoup soup(mesh);
+        QCOMPARE(soupIntersections(soup).size(), std::size_t(1));
+        const int removed = spaceLineVertices(soup);
+        qInfo("  %d line vertices removed, the others kept off the needle", removed);
+        QCOMPARE(soupIntersections(soup).size(), std::size_t(1));
     }
 
     void linesAsSparseAsTheSurfacesStay()

@@ -5,6 +5,7 @@
 
 #include "flat_soup_shape.h"
 #include "model/model.h"
+#include "remesh/intersection_repair.h"
 
 #include <QtTest>
 
@@ -66,7 +67,12 @@ Surface rectangle(double y0, double y1)
 Model input(double width)
 {
     Model m;
-    m.surfaces = {rectangle(0.0, width), rectangle(-0.5, 0.0), rectangle(width, width + 0.5)};
+    // Surface 3 is for a needle planted through surface 1 (test::addUprightNeedle).
+    Surface needle;
+    needle.vertices = {{4.0, -0.4, -0.1}, {4.5, -0.4, -0.1}, {4.25, -0.4, 0.1}};
+    needle.triangles = {{0, 1, 2}};
+    m.surfaces = {rectangle(0.0, width), rectangle(-0.5, 0.0), rectangle(width, width + 0.5),
+                  needle};
     m.vertices = {{0.0, 0.0, 0.0}, {8.0, 0.0, 0.0}, {0.0, width, 0.0}, {8.0, width, 0.0}};
     Line low, high;
     low.vertices = {0, 1};
@@ -117,6 +123,24 @@ private slots:
         for (const auto &[surface, area] : before.flat.area)
             QVERIFY(std::abs(after.flat.area.at(surface) - area) < 1e-9);
         QCOMPARE(after.featureEdges, before.featureEdges);
+    }
+
+    void aCrossingAlreadyThereDoesNotUndoTheRows()
+    {
+        // The rows are undone when they add crossings; one the soup had before is not theirs.
+        const Model model = input(1.0);
+        InputProjector projector(model);
+        OutputMesh mesh = strip(1.0);
+        test::addUprightNeedle(mesh, 4.25, -0.4, 3);
+        EditableSoup soup(mesh);
+        QCOMPARE(soupIntersections(soup).size(), std::size_t(1));
+        const int before = shapeOf(soup).flat.small;
+        const int added = addStripRows(soup, projector);
+        qInfo("  %d vertices added beside a crossing, triangles under 30°: %d → %d", added, before,
+              shapeOf(soup).flat.small);
+        QVERIFY(added >= 8);
+        QVERIFY(shapeOf(soup).flat.small <= before / 4);
+        QCOMPARE(soupIntersections(soup).size(), std::size_t(1));
     }
 
     void aStripWideEnoughStays()

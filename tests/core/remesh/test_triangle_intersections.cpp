@@ -71,6 +71,26 @@ private slots:
         QVERIFY(trianglesIntersect(f, {0, 1, 2}, {0, 1, 2}));
     }
 
+    void crossingsAtStartComparesCounts()
+    {
+        OutputMesh m = grid(4, 0.0, 0);
+        append(m, grid(4, 0.1, 1));
+        m.points[12].position.z() = 0.3; // through the upper grid
+        const EditableSoup start(m);
+        const std::size_t pairs = soupIntersections(start).size();
+        QVERIFY(pairs >= 6);
+        CrossingsAtStart atStart(start);
+        QVERIFY(!atStart.exceededBy(0));
+        QVERIFY(!atStart.exceededBy(pairs));
+        QVERIFY(atStart.exceededBy(pairs + 1));
+        QVERIFY(!atStart.exceededBy(pairs - 1));
+        // A start without crossings: any crossing is one more.
+        const EditableSoup clean(grid(4, 0.0, 0));
+        CrossingsAtStart none(clean);
+        QVERIFY(!none.exceededBy(0));
+        QVERIFY(none.exceededBy(1));
+    }
+
     void twoGridsCrossedAndRepaired()
     {
         OutputMesh m = grid(4, 0.0, 0);
