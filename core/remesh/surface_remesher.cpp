@@ -473,6 +473,13 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
             Progress step = roundSteps.step(1, "Mesh building");
             again = meshFromSites(fine ? fineCollapse : collapsed, sites, params, ledger, step);
         }
+        const bool keepsQuality = computeMeshStatistics(again.model).pctTrianglesAngleBelow30
+                                  <= baseSlivers + params.refinementMaxQualityLoss;
+        // A round over the quality allowance is kept only when it mends validity, and a valid
+        // best leaves nothing to mend; the rounds after it add sites and go further over (below).
+        // So the search stops before checking it (modelA5 at 5000 sites: 0.3 s of 5.7).
+        if (!keepsQuality && !params.refinementPinsFeatures && best.validity.problems.empty())
+            break;
         {
             Progress step = roundSteps.step(2, "Validity");
             checkAndOpenPockets(again, step);
@@ -480,8 +487,6 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
         // A round is kept only when it improves (validity first, then topology edits): the next
         // round still starts from its sites, but the result never gets worse by refining.
         const bool fixesValidity = again.validity.problems.size() < best.validity.problems.size();
-        const bool keepsQuality = computeMeshStatistics(again.model).pctTrianglesAngleBelow30
-                                  <= baseSlivers + params.refinementMaxQualityLoss;
         const bool improved = score(again) < score(best)
                               && (fixesValidity || keepsQuality || params.refinementPinsFeatures);
         if (improved) {
