@@ -67,12 +67,7 @@ Surface rectangle(double y0, double y1)
 Model input(double width)
 {
     Model m;
-    // Surface 3 is for a needle planted through surface 1 (test::addUprightNeedle).
-    Surface needle;
-    needle.vertices = {{4.0, -0.4, -0.1}, {4.5, -0.4, -0.1}, {4.25, -0.4, 0.1}};
-    needle.triangles = {{0, 1, 2}};
-    m.surfaces = {rectangle(0.0, width), rectangle(-0.5, 0.0), rectangle(width, width + 0.5),
-                  needle};
+    m.surfaces = {rectangle(0.0, width), rectangle(-0.5, 0.0), rectangle(width, width + 0.5)};
     m.vertices = {{0.0, 0.0, 0.0}, {8.0, 0.0, 0.0}, {0.0, width, 0.0}, {8.0, width, 0.0}};
     Line low, high;
     low.vertices = {0, 1};

@@ -363,15 +363,29 @@ private slots:
     // Rounds only add sites: after a valid round over the quality allowance no other round runs,
     // and that round is not kept; with room in the allowance the rounds go on. At 500 sites the
     // first round is valid (at 300 it folds a contact, and the second one is the first valid).
+    // A valid start leaves a round over the allowance nothing to mend, so its validity is not
+    // even checked.
     void refinementStopsOverTheQualityAllowance()
     {
         const Model input = recoverTopology(faultNetworkBox(1, 20, 2, 20, 60));
         RemeshParams params;
         params.sites = 500;
         params.refinementMaxQualityLoss = 100.0; // no round is over it
-        const RemeshResult within = remeshModel(input, params);
+        std::set<std::string> stagesWithin, stagesOver;
+        auto recorder = [](std::set<std::string> &stages) {
+            return Progress([&stages](double, const std::string &stage) {
+                stages.insert(stage.substr(0, stage.find(": ", stage.find(": ") + 2)));
+            });
+        };
+        Progress progressWithin = recorder(stagesWithin);
+        const RemeshResult within = remeshModel(input, params, progressWithin);
         params.refinementMaxQualityLoss = -100.0; // every round is
-        const RemeshResult over = remeshModel(input, params);
+        Progress progressOver = recorder(stagesOver);
+        const RemeshResult over = remeshModel(input, params, progressOver);
+        const std::string roundCheck = "Refinement round 1: Validity (3/3)";
+        QVERIFY(stagesWithin.count(roundCheck) == 1);
+        QVERIFY2(stagesOver.count(roundCheck) == 0, "the unkept round was checked");
+        QVERIFY(stagesOver.count("Refinement round 1: Mesh building (2/3)") == 1);
         qInfo("one fault, 500 sites: %d rounds run (%d kept) within the allowance, %d "
               "(%d kept) over it",
               within.refinementRoundsRun, within.refinementRounds, over.refinementRoundsRun,
