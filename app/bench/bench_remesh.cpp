@@ -2,6 +2,7 @@
 
 #include "bench_cases.h"
 
+#include "common/progress.h"
 #include "io/model_reader.h"
 #include "model/topology.h"
 #include "model/validity.h"
@@ -17,6 +18,7 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -118,6 +120,48 @@ Row measure(const std::string &name, const Model &input, const Model &output, do
     return r;
 }
 
+// Wall time per stage of a run, from its progress reports: the time up to a report is the
+// stage's that made it (stages report when a unit of work is done), named down to two levels
+// ("Refinement round 2: Mesh building (2/3)"), CVT iterations as one.
+class StageClock {
+public:
+    Progress::Callback callback()
+    {
+        m_last = std::chrono::steady_clock::now();
+        return [this](double, const std::string &stage) {
+            std::string name;
+            std::size_t from = 0;
+            for (int level = 0; level < kDepth && from != std::string::npos; ++level) {
+                const std::size_t end = stage.find(": ", from);
+                name = stage.substr(0, end);
+                from = end == std::string::npos ? end : end + 2;
+            }
+            name = name.substr(0, name.find(" iteration ")); // CVT iterations: one stage
+            auto found = std::find_if(m_stages.begin(), m_stages.end(),
+                                      [&](const auto &s) { return s.first == name; });
+            if (found == m_stages.end())
+                found = m_stages.insert(m_stages.end(), {name, 0.0});
+            found->second += since(m_last);
+            m_last = std::chrono::steady_clock::now();
+        };
+    }
+    // `total`: the run's own time, whose part after the last report no stage holds.
+    void print(double total) const
+    {
+        double sum = 0.0;
+        for (const auto &[name, seconds] : m_stages) {
+            std::printf("      %-44s %6.2f s\n", name.c_str(), seconds);
+            sum += seconds;
+        }
+        std::printf("      %-44s %6.2f s\n", "(after the last report)", total - sum);
+    }
+
+private:
+    static constexpr int kDepth = 2;
+    std::chrono::steady_clock::time_point m_last;
+    std::vector<std::pair<std::string, double>> m_stages; // in order of first report
+};
+
 void print(const Row &r)
 {
     std::printf("  %-34s %7.2f s %7zu V %7zu T  Q %.3f  <30° %5.2f %%  min %5.2f°  H %.3f %%  %s "
@@ -145,11 +189,14 @@ int runRemeshBench(const std::string &dataDir, int threads, int iterations, int 
         RemeshParams params;
         params.sites = 5000;
         params.iterations = iterations;
-        const RemeshResult ours = remeshModel(input, params);
+        StageClock clock;
+        Progress progress(clock.callback());
+        const RemeshResult ours = remeshModel(input, params, progress);
         Row row = measure("ours (CVT + dual mesh)", input, ours.model, ours.timings.totalSeconds);
         print(row);
         std::printf("    sampling %.2f s, mesh building %.2f s, %zu ledger records\n",
                     ours.timings.samplingSeconds, ours.timings.meshSeconds, ours.ledger.size());
+        clock.print(ours.timings.totalSeconds);
         std::vector<double> totals{ours.timings.totalSeconds};
         for (int r = 1; r < repeat; ++r) {
             const RemeshResult again = remeshModel(input, params);
