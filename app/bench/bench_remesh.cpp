@@ -129,13 +129,7 @@ public:
     {
         m_last = std::chrono::steady_clock::now();
         return [this](double, const std::string &stage) {
-            std::string name;
-            std::size_t from = 0;
-            for (int level = 0; level < kDepth && from != std::string::npos; ++level) {
-                const std::size_t end = stage.find(": ", from);
-                name = stage.substr(0, end);
-                from = end == std::string::npos ? end : end + 2;
-            }
+            std::string name = stagePrefix(stage, kDepth);
             name = name.substr(0, name.find(" iteration ")); // CVT iterations: one stage
             auto found = std::find_if(m_stages.begin(), m_stages.end(),
                                       [&](const auto &s) { return s.first == name; });

@@ -109,6 +109,19 @@ private:
     double m_last = 0.0;
 };
 
+// The first `levels` names of a stage chain ("Refinement round 2: CVT: iteration 3" at 2 levels is
+// "Refinement round 2: CVT"), for grouping reports by stage.
+inline std::string stagePrefix(const std::string &stage, int levels)
+{
+    std::size_t end = 0;
+    for (int level = 0; level < levels; ++level) {
+        end = stage.find(": ", level == 0 ? 0 : end + 2);
+        if (end == std::string::npos)
+            return stage;
+    }
+    return stage.substr(0, end);
+}
+
 // A part of a caller's progress bar: fractions [0, 1] reported here land in [from, to] of the
 // parent, and the parent's cancel stops the part at its next tick.
 inline Progress progressRange(Progress &parent, double from, double to)

@@ -60,6 +60,7 @@ class TestRemeshProgress : public QObject {
 private slots:
     void ticksOften();
     void cancelDuringMeshBuilding();
+    void stagePrefixCutsAtLevels();
 };
 
 void TestRemeshProgress::ticksOften()
@@ -146,6 +147,28 @@ void TestRemeshProgress::cancelDuringMeshBuilding()
     QVERIFY(threw);
     qInfo("stopped %.3f s after the cancel", late);
     QVERIFY2(late < 0.5 * test::kTimeScale, qPrintable(QString::number(late)));
+}
+
+// Stage names group reports in the bench and the tests: cut after the asked level, whole when
+// shorter, and never at a ": " inside a later name.
+void TestRemeshProgress::stagePrefixCutsAtLevels()
+{
+    const std::string stage = "Refinement round 2: CVT (1/3): iteration 4";
+    QCOMPARE(stagePrefix(stage, 1), std::string("Refinement round 2"));
+    QCOMPARE(stagePrefix(stage, 2), std::string("Refinement round 2: CVT (1/3)"));
+    QCOMPARE(stagePrefix(stage, 3), stage);
+    QCOMPARE(stagePrefix(stage, 9), stage);
+    QCOMPARE(stagePrefix("CVT", 2), std::string("CVT"));
+    QCOMPARE(stagePrefix("", 1), std::string());
+    // Reached through real sub-tasks, as the remesher names them.
+    std::string seen;
+    Progress root([&seen](double, const std::string &s) { seen = s; });
+    Progress round(root, 0.0, 1.0, "Refinement round 1");
+    ProgressSteps steps(round, {1, 1});
+    Progress step = steps.step(1, "Validity");
+    Progress inner(step, 0.0, 1.0, "Pockets");
+    inner.tick(0.5, "try 3");
+    QCOMPARE(stagePrefix(seen, 2), std::string("Refinement round 1: Validity (2/2)"));
 }
 
 QTEST_GUILESS_MAIN(TestRemeshProgress)

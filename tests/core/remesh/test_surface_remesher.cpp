@@ -374,7 +374,7 @@ private slots:
         std::set<std::string> stagesWithin, stagesOver;
         auto recorder = [](std::set<std::string> &stages) {
             return Progress([&stages](double, const std::string &stage) {
-                stages.insert(stage.substr(0, stage.find(": ", stage.find(": ") + 2)));
+                stages.insert(stagePrefix(stage, 2));
             });
         };
         Progress progressWithin = recorder(stagesWithin);
