@@ -32,6 +32,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace stratamesh {
@@ -259,7 +260,12 @@ RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &s
     return result;
 }
 
-RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Progress &progress)
+namespace {
+
+// One remesh; `restartWhenCapped` lets a search that the site cap stops on an invalid result
+// start again from its best (below), which the rerun with the thin strips kept does not do.
+RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Progress &progress,
+                       bool restartWhenCapped)
 {
     const auto start = std::chrono::steady_clock::now();
     const Model input = withTopology(inputModel);
@@ -342,6 +348,10 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     result.refinementRounds = 0;
     RemeshResult best = result;
     const double baseSlivers = computeMeshStatistics(result.model).pctTrianglesAngleBelow30;
+    auto withinAllowance = [&](const Model &m) {
+        return computeMeshStatistics(m).pctTrianglesAngleBelow30
+               <= baseSlivers + params.refinementMaxQualityLoss;
+    };
     // Sites pinned on the features near wrong places (featureSitesNearTargets), and the split
     // model with the size field they follow, made again each round for all places so far.
     std::vector<char> pinned(sites.size(), 0);
@@ -349,166 +359,210 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     SizedModel sized_;
     std::vector<double> fineDensity;
     StripCollapse fineCollapse;
-    for (;;) {
-        const double spacing =
-            edgeLengthForSites(area, static_cast<int>(sites.size())) * std::sqrt(sized / double(n));
-        // Validity comes first: its places are refined while rounds are left, whatever the
-        // growth cap; topology places only while the cap leaves room.
-        const ValidityReport none;
-        const std::vector<Vec3> topology =
-            refinementTargets(simplified, result.model, result.ledger, stripRecords, none,
-                              params.dResolution, 0.5 * spacing);
-        std::vector<Vec3> invalid;
-        for (const ValidityProblem &p : result.validity.problems)
-            invalid.push_back(p.position);
-        result.remainingTargets = static_cast<int>(topology.size() + invalid.size());
-        if (result.remainingTargets == 0 || params.refinementRounds == 0
-            || rounds >= params.refinementRounds + (invalid.empty() ? 0 : 4))
-            break;
-        // Pinning the features may take the sites up to sizingMaxGrowth times those asked.
-        const int room = params.refinementPinsFeatures
-                             ? static_cast<int>(std::lround(params.sizingMaxGrowth * n))
-                                   - static_cast<int>(sites.size())
-                             : static_cast<int>(std::lround(params.refinementMaxGrowth * n))
-                                   - (static_cast<int>(sites.size()) - sized);
-        std::vector<Vec3> targets = invalid;
-        if (room > 0 && rounds < params.refinementRounds)
-            targets.insert(targets.end(), topology.begin(), topology.end());
-        if (targets.empty())
-            break;
-        const double radius = 1.5 * spacing;
-        std::vector<Vec3> pins, graded;
-        const double pinRadius = 0.6 * spacing; // about the cell of the place
-        if (params.refinementPinsFeatures) {
-            // The model is split finer than the feature size around every place so far (so
-            // that the domain carries the size field), pins go on its features near this
-            // round's places and graded free sites around them.
-            allTargets.insert(allTargets.end(), targets.begin(), targets.end());
-            FeatureSizingParams sp;
-            sp.edgeLength = h0;
-            sp.lfsFactor = 1.0;
-            sp.gradation = params.sizingGradation;
-            sp.minEdgeLength = h0 / 64.0;
-            sp.dResolution = params.dResolution;
-            sized_ = refineToSize(simplified, sp, allTargets, radius, 6);
-            const double coarse = 0.9 * spacing;
-            for (const Vec3 &p :
-                 featureSitesNearTargets(sized_.model, sized_.size, targets, pinRadius, coarse)) {
-                bool known = false;
-                for (std::size_t i = 0; i < sites.size() && !known; ++i)
-                    known = pinned[i] && (sites[i] - p).squaredNorm() <= 1e-12 * h0 * h0;
-                if (!known)
-                    pins.push_back(p);
+    // When the site cap stops the search on an invalid best, it may start again from the best's
+    // sites and density and refine only where that best is not valid: the places of a later
+    // round, topology ones included, had used the sites up (a 10-fault network at 1000 sites
+    // ended with 1 problem and 934 edits; started again, valid with 586 edits).
+    std::vector<double> bestDensity = density;
+    bool validityOnly = false;
+    bool cappedInvalid = false;
+    auto refine = [&]() {
+        for (;;) {
+            const double spacing = edgeLengthForSites(area, static_cast<int>(sites.size()))
+                                   * std::sqrt(sized / double(n));
+            // Validity comes first: its places are refined while rounds are left, whatever the
+            // growth cap; topology places only while the cap leaves room.
+            const ValidityReport none;
+            const std::vector<Vec3> topology =
+                refinementTargets(simplified, result.model, result.ledger, stripRecords, none,
+                                  params.dResolution, 0.5 * spacing);
+            std::vector<Vec3> invalid;
+            for (const ValidityProblem &p : result.validity.problems)
+                invalid.push_back(p.position);
+            result.remainingTargets = static_cast<int>(topology.size() + invalid.size());
+            if (result.remainingTargets == 0 || params.refinementRounds == 0
+                || rounds >= params.refinementRounds + (invalid.empty() ? 0 : 4))
+                break;
+            // Pinning the features may take the sites up to sizingMaxGrowth times those asked.
+            const int room = params.refinementPinsFeatures
+                                 ? static_cast<int>(std::lround(params.sizingMaxGrowth * n))
+                                       - static_cast<int>(sites.size())
+                                 : static_cast<int>(std::lround(params.refinementMaxGrowth * n))
+                                       - (static_cast<int>(sites.size()) - sized);
+            std::vector<Vec3> targets = invalid;
+            if (room > 0 && rounds < params.refinementRounds && !validityOnly)
+                targets.insert(targets.end(), topology.begin(), topology.end());
+            if (targets.empty())
+                break;
+            const double radius = 1.5 * spacing;
+            std::vector<Vec3> pins, graded;
+            const double pinRadius = 0.6 * spacing; // about the cell of the place
+            if (params.refinementPinsFeatures) {
+                // The model is split finer than the feature size around every place so far (so
+                // that the domain carries the size field), pins go on its features near this
+                // round's places and graded free sites around them.
+                allTargets.insert(allTargets.end(), targets.begin(), targets.end());
+                FeatureSizingParams sp;
+                sp.edgeLength = h0;
+                sp.lfsFactor = 1.0;
+                sp.gradation = params.sizingGradation;
+                sp.minEdgeLength = h0 / 64.0;
+                sp.dResolution = params.dResolution;
+                sized_ = refineToSize(simplified, sp, allTargets, radius, 6);
+                const double coarse = 0.9 * spacing;
+                for (const Vec3 &p : featureSitesNearTargets(sized_.model, sized_.size, targets,
+                                                             pinRadius, coarse)) {
+                    bool known = false;
+                    for (std::size_t i = 0; i < sites.size() && !known; ++i)
+                        known = pinned[i] && (sites[i] - p).squaredNorm() <= 1e-12 * h0 * h0;
+                    if (!known)
+                        pins.push_back(p);
+                }
+                fineDensity.clear();
+                if (!pins.empty()) {
+                    std::vector<double> base = density;
+                    if (base.empty())
+                        base.assign(simplified.vertices.size(), 1.0);
+                    fineDensity = extendToAdded(sized_, base);
+                    const RestrictionDomain fine = makeRestrictionDomain(sized_.model);
+                    graded =
+                        gradedSitesNearTargets(fine, sized_.size, targets, radius, coarse,
+                                               params.seed + 104729u * (rounds + 1), fineDensity);
+                }
             }
-            fineDensity.clear();
-            if (!pins.empty()) {
-                std::vector<double> base = density;
-                if (base.empty())
-                    base.assign(simplified.vertices.size(), 1.0);
-                fineDensity = extendToAdded(sized_, base);
-                const RestrictionDomain fine = makeRestrictionDomain(sized_.model);
-                graded = gradedSitesNearTargets(fine, sized_.size, targets, radius, coarse,
-                                                params.seed + 104729u * (rounds + 1), fineDensity);
+            raiseDensity(domain, targets, radius, params.refinementDensityFactor, density);
+            const int near = std::max(4, sitesNearTargets(sites, targets, radius));
+            int extra =
+                static_cast<int>(std::lround((params.refinementDensityFactor - 1.0) * near));
+            // Topology places share the growth cap; places that are not valid get at most as many
+            // sites again (an 8-fault network doubled its sites every round to 15 GB without it).
+            extra = std::min(extra, std::max(room, 0) + (invalid.empty() ? 0 : n));
+            extra = std::min(extra, sized + 2 * n - static_cast<int>(sites.size()));
+            if (params.refinementPinsFeatures) {
+                extra = std::min(extra, std::max(room, 0));
+                const int left = std::max(0, room - extra - static_cast<int>(pins.size()));
+                if (static_cast<int>(graded.size()) > left)
+                    graded.resize(left); // random order: a uniform thinning
             }
+            if (extra <= 0 && pins.empty()) {
+                cappedInvalid = !validityOnly && !params.refinementPinsFeatures
+                                && !best.validity.problems.empty();
+                break;
+            }
+            const std::vector<Vec3> added = sampleNearTargets(
+                domain, targets, radius, std::max(extra, 0), params.seed + 7919u * (rounds + 1));
+            if (added.empty() && pins.empty())
+                break;
+            sites.insert(sites.end(), added.begin(), added.end());
+            sites.insert(sites.end(), graded.begin(), graded.end());
+            sites.insert(sites.end(), pins.begin(), pins.end());
+            pinned.resize(sites.size() - pins.size(), 0);
+            pinned.resize(sites.size(), 1);
+            ++rounds;
+            Progress round(progress, at, at + 0.5 * (1.0 - at),
+                           "Refinement round " + std::to_string(rounds)
+                               + (validityOnly ? " on invalid places" : ""));
+            at += 0.5 * (1.0 - at);
+            ProgressSteps roundSteps(round, {4, 5, 1});
+            const bool fine = !fineDensity.empty();
+            if (fine) {
+                fineCollapse = collapsed;
+                fineCollapse.model = sized_.model;
+            }
+            RestrictionDomain refined =
+                fine ? makeRestrictionDomain(sized_.model, fineDensity) : domain;
+            if (!fine)
+                refined.density = density;
+            CvtParams local = cvt;
+            local.iterations = params.refinementIterations;
+            local.fixedSites = pinned;
+            if (fine) {
+                // Graded random sites need many more iterations than a few added ones, and Lloyd
+                // spaces them where L-BFGS, facing densities 64⁴ times apart, leaves them random
+                // (modelA5 at 5000 sites: 5.1 % of triangles under 30° instead of 6.8 %, in 0.7
+                // times the time).
+                local.lloyd = true;
+                local.alpha = 0.0;
+                local.iterations *= 5;
+            }
+            if (local.iterations > 0) {
+                Progress step = roundSteps.step(0, "CVT");
+                std::vector<Vec3> moved = optimizeCvt(refined, sites, local, step).sites;
+                for (std::size_t i = 0; i < sites.size(); ++i)
+                    if (!pinned[i]) // a pinned site whose cell emptied may have been relocated
+                        sites[i] = moved[i];
+            }
+            RemeshResult again;
+            {
+                Progress step = roundSteps.step(1, "Mesh building");
+                again = meshFromSites(fine ? fineCollapse : collapsed, sites, params, ledger, step);
+            }
+            bool keepsQuality = withinAllowance(again.model);
+            // A round over the quality allowance is kept only when it mends validity, and a valid
+            // best leaves nothing to mend; the rounds after it add sites and go further over
+            // (below). So the search stops before checking it (bench, modelA5 at 5000 sites: 5.11 s
+            // instead of 5.37).
+            if (!keepsQuality && !params.refinementPinsFeatures && best.validity.problems.empty())
+                break;
+            {
+                Progress step = roundSteps.step(2, "Validity");
+                checkAndOpenPockets(again, step);
+            }
+            // Opened pockets change triangles, so the round is judged on what it would keep.
+            if (again.pocketsOpened > 0)
+                keepsQuality = withinAllowance(again.model);
+            // A round is kept only when it improves (validity first, then topology edits): the next
+            // round still starts from its sites, but the result never gets worse by refining.
+            const bool fixesValidity =
+                again.validity.problems.size() < best.validity.problems.size();
+            const bool improved =
+                score(again) < score(best)
+                && (fixesValidity || keepsQuality || params.refinementPinsFeatures);
+            if (improved) {
+                best = again;
+                bestDensity = density;
+                best.siteCount = static_cast<int>(sites.size());
+                best.refinementRounds = rounds;
+            }
+            // Rounds only add sites: once one is valid and over the quality allowance, the next
+            // ones go further over it and are not kept either (modelA5 at 5000 sites: rounds 3 and
+            // 4 at 1.9 and 2.7 % of triangles under 30°, against 1.8 % allowed, cost 2.4 of 7.5 s).
+            const bool overAllowance =
+                again.validity.problems.empty() && !keepsQuality && !params.refinementPinsFeatures;
+            result = std::move(again);
+            if (overAllowance)
+                break;
         }
-        raiseDensity(domain, targets, radius, params.refinementDensityFactor, density);
-        const int near = std::max(4, sitesNearTargets(sites, targets, radius));
-        int extra = static_cast<int>(std::lround((params.refinementDensityFactor - 1.0) * near));
-        // Topology places share the growth cap; places that are not valid get at most as many
-        // sites again (an 8-fault network doubled its sites every round to 15 GB without it).
-        extra = std::min(extra, std::max(room, 0) + (invalid.empty() ? 0 : n));
-        extra = std::min(extra, sized + 2 * n - static_cast<int>(sites.size()));
-        if (params.refinementPinsFeatures) {
-            extra = std::min(extra, std::max(room, 0));
-            const int left = std::max(0, room - extra - static_cast<int>(pins.size()));
-            if (static_cast<int>(graded.size()) > left)
-                graded.resize(left); // random order: a uniform thinning
-        }
-        if (extra <= 0 && pins.empty())
-            break;
-        const std::vector<Vec3> added = sampleNearTargets(
-            domain, targets, radius, std::max(extra, 0), params.seed + 7919u * (rounds + 1));
-        if (added.empty() && pins.empty())
-            break;
-        sites.insert(sites.end(), added.begin(), added.end());
-        sites.insert(sites.end(), graded.begin(), graded.end());
-        sites.insert(sites.end(), pins.begin(), pins.end());
-        pinned.resize(sites.size() - pins.size(), 0);
-        pinned.resize(sites.size(), 1);
-        ++rounds;
-        Progress round(progress, at, at + 0.5 * (1.0 - at),
-                       "Refinement round " + std::to_string(rounds));
+    };
+    refine();
+    // Whole-strip removal moves lines before the remesh; when refinement cannot make its
+    // result valid, the strips are kept and the run done again (their slivers beat an invalid
+    // model). It comes before starting again from the best, which takes more edits (a 6-fault
+    // network at 1000 sites: valid with 230 edits with its strips, with 482 started again).
+    std::optional<RemeshResult> stripsKept;
+    if (!best.validity.valid && params.stripWidthFactor > 0.0 && !best.strips.empty()
+        && params.refinementRounds > 0) {
+        RemeshParams keepStrips = params;
+        keepStrips.stripWidthFactor = 0.0;
+        Progress rerun(progress, at, at + 0.5 * (1.0 - at), "Keeping the thin strips");
         at += 0.5 * (1.0 - at);
-        ProgressSteps roundSteps(round, {4, 5, 1});
-        const bool fine = !fineDensity.empty();
-        if (fine) {
-            fineCollapse = collapsed;
-            fineCollapse.model = sized_.model;
+        RemeshResult again = remeshRun(input, keepStrips, rerun, false);
+        again.timings.samplingSeconds += sampling;
+        again.timings.meshSeconds += best.timings.meshSeconds;
+        if (again.validity.valid) {
+            again.timings.totalSeconds = secondsSince(start);
+            return again;
         }
-        RestrictionDomain refined =
-            fine ? makeRestrictionDomain(sized_.model, fineDensity) : domain;
-        if (!fine)
-            refined.density = density;
-        CvtParams local = cvt;
-        local.iterations = params.refinementIterations;
-        local.fixedSites = pinned;
-        if (fine) {
-            // Graded random sites need many more iterations than a few added ones, and Lloyd
-            // spaces them where L-BFGS, facing densities 64⁴ times apart, leaves them random
-            // (modelA5 at 5000 sites: 5.1 % of triangles under 30° instead of 6.8 %, in 0.7 times
-            // the time).
-            local.lloyd = true;
-            local.alpha = 0.0;
-            local.iterations *= 5;
-        }
-        if (local.iterations > 0) {
-            Progress step = roundSteps.step(0, "CVT");
-            std::vector<Vec3> moved = optimizeCvt(refined, sites, local, step).sites;
-            for (std::size_t i = 0; i < sites.size(); ++i)
-                if (!pinned[i]) // a pinned site whose cell emptied may have been relocated
-                    sites[i] = moved[i];
-        }
-        RemeshResult again;
-        {
-            Progress step = roundSteps.step(1, "Mesh building");
-            again = meshFromSites(fine ? fineCollapse : collapsed, sites, params, ledger, step);
-        }
-        auto withinAllowance = [&](const Model &m) {
-            return computeMeshStatistics(m).pctTrianglesAngleBelow30
-                   <= baseSlivers + params.refinementMaxQualityLoss;
-        };
-        bool keepsQuality = withinAllowance(again.model);
-        // A round over the quality allowance is kept only when it mends validity, and a valid
-        // best leaves nothing to mend; the rounds after it add sites and go further over (below).
-        // So the search stops before checking it (bench, modelA5 at 5000 sites: 5.11 s instead
-        // of 5.37).
-        if (!keepsQuality && !params.refinementPinsFeatures && best.validity.problems.empty())
-            break;
-        {
-            Progress step = roundSteps.step(2, "Validity");
-            checkAndOpenPockets(again, step);
-        }
-        // Opened pockets change triangles, so the round is judged on what it would keep.
-        if (again.pocketsOpened > 0)
-            keepsQuality = withinAllowance(again.model);
-        // A round is kept only when it improves (validity first, then topology edits): the next
-        // round still starts from its sites, but the result never gets worse by refining.
-        const bool fixesValidity = again.validity.problems.size() < best.validity.problems.size();
-        const bool improved = score(again) < score(best)
-                              && (fixesValidity || keepsQuality || params.refinementPinsFeatures);
-        if (improved) {
-            best = again;
-            best.siteCount = static_cast<int>(sites.size());
-            best.refinementRounds = rounds;
-        }
-        // Rounds only add sites: once one is valid and over the quality allowance, the next ones
-        // go further over it and are not kept either (modelA5 at 5000 sites: rounds 3 and 4 at
-        // 1.9 and 2.7 % of triangles under 30°, against 1.8 % allowed, cost 2.4 of 7.5 s).
-        const bool overAllowance =
-            again.validity.problems.empty() && !keepsQuality && !params.refinementPinsFeatures;
-        result = std::move(again);
-        if (overAllowance)
-            break;
+        if (again.validity.problems.size() < best.validity.problems.size())
+            stripsKept = std::move(again);
+    }
+    if (cappedInvalid && restartWhenCapped) {
+        validityOnly = true;
+        sites = best.sites;
+        density = bestDensity;
+        pinned.assign(sites.size(), 0);
+        result = best;
+        refine();
     }
     result = std::move(best);
     const int roundsRun = rounds;
@@ -526,23 +580,18 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
     result.refinementRoundsRun = roundsRun;
     result.timings.samplingSeconds = sampling;
     result.timings.totalSeconds = secondsSince(start);
-    // Whole-strip removal moves lines before the remesh; when refinement cannot make its
-    // result valid, the strips are kept and the run done again (their slivers beat an invalid
-    // model).
-    if (!result.validity.valid && params.stripWidthFactor > 0.0 && !result.strips.empty()
-        && params.refinementRounds > 0) {
-        RemeshParams keepStrips = params;
-        keepStrips.stripWidthFactor = 0.0;
-        Progress rerun(progress, at, 1.0, "Keeping the thin strips");
-        RemeshResult again = remeshModel(input, keepStrips, rerun);
-        if (again.validity.problems.size() < result.validity.problems.size()) {
-            again.timings.samplingSeconds += result.timings.samplingSeconds;
-            again.timings.meshSeconds += result.timings.meshSeconds;
-            again.timings.totalSeconds = secondsSince(start);
-            return again;
-        }
+    if (stripsKept && stripsKept->validity.problems.size() < result.validity.problems.size()) {
+        stripsKept->timings.totalSeconds = secondsSince(start);
+        return std::move(*stripsKept);
     }
     return result;
+}
+
+} // namespace
+
+RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Progress &progress)
+{
+    return remeshRun(inputModel, params, progress, true);
 }
 
 TopologyEdits countTopologyEdits(const SimplificationLedger &ledger)
