@@ -364,9 +364,9 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
     // round, topology ones included, had used the sites up (a 10-fault network at 1000 sites
     // ended with 1 problem and 934 edits; started again, valid with 586 edits).
     std::vector<double> bestDensity = density;
-    bool validityOnly = false;
-    bool cappedInvalid = false;
-    auto refine = [&]() {
+    // Refines until no place is left, the rounds run out or a round makes things worse; true when
+    // the site cap stopped it on an invalid best, the case a new start from that best may mend.
+    auto refine = [&](bool validityOnly) {
         for (;;) {
             const double spacing = edgeLengthForSites(area, static_cast<int>(sites.size()))
                                    * std::sqrt(sized / double(n));
@@ -444,11 +444,9 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
                 if (static_cast<int>(graded.size()) > left)
                     graded.resize(left); // random order: a uniform thinning
             }
-            if (extra <= 0 && pins.empty()) {
-                cappedInvalid = !validityOnly && !params.refinementPinsFeatures
-                                && !best.validity.problems.empty();
-                break;
-            }
+            if (extra <= 0 && pins.empty())
+                return !validityOnly && !params.refinementPinsFeatures
+                       && !best.validity.problems.empty();
             const std::vector<Vec3> added = sampleNearTargets(
                 domain, targets, radius, std::max(extra, 0), params.seed + 7919u * (rounds + 1));
             if (added.empty() && pins.empty())
@@ -533,8 +531,9 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
             if (overAllowance)
                 break;
         }
+        return false;
     };
-    refine();
+    const bool cappedInvalid = refine(false);
     // Whole-strip removal moves lines before the remesh; when refinement cannot make its
     // result valid, the strips are kept and the run done again (their slivers beat an invalid
     // model). It comes before starting again from the best, which takes more edits (a 6-fault
@@ -557,12 +556,11 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
             stripsKept = std::move(again);
     }
     if (cappedInvalid && restartWhenCapped) {
-        validityOnly = true;
         sites = best.sites;
         density = bestDensity;
         pinned.assign(sites.size(), 0);
         result = best;
-        refine();
+        refine(true);
     }
     result = std::move(best);
     const int roundsRun = rounds;
