@@ -3,6 +3,7 @@
 #include "model/region_shells.h"
 #include "model/surface_edges.h"
 #include "model/topology.h"
+#include "model/unused_vertices.h"
 #include "model/validity.h"
 
 #include <algorithm>
@@ -260,6 +261,15 @@ PocketRepair repairPockets(Model &model, ValidityReport &validity, Progress &pro
         shells = analyseRegionShells(model);
     }
     repair.opened = repair.pockets - static_cast<int>(shells.pockets.size());
+    // A fan replaced without its centre leaves the centre in its surface, used by no triangle.
+    int dropped = 0;
+    for (Surface &surface : model.surfaces)
+        dropped += dropUnusedVertices(surface);
+    if (dropped > 0) {
+        model = recoverTopology(std::move(model));
+        if (!validity.valid) // its problems may name the old vertex ids
+            validity = checkValidity(model);
+    }
     return repair;
 }
 

@@ -156,7 +156,18 @@ Plc buildPlc(const Model &input)
     const Model model = input.hasTopology() ? input : recoverTopology(input);
 
     Plc plc;
-    plc.points = model.vertices;
+    // Only the points of some triangle, in their order: TetGen crashes on a free point lying on
+    // a facet.
+    std::vector<int> pointOf(model.vertices.size(), -1);
+    for (int s = 0; s < static_cast<int>(model.surfaces.size()); ++s)
+        for (const Triangle &t : model.surfaces[s].triangles)
+            for (int v : t)
+                pointOf[model.surfaceVertexToGlobal[s][v]] = 0;
+    for (std::size_t v = 0; v < pointOf.size(); ++v)
+        if (pointOf[v] == 0) {
+            pointOf[v] = static_cast<int>(plc.points.size());
+            plc.points.push_back(model.vertices[v]);
+        }
     plc.facets.reserve(model.triangleCount());
     plc.facetMarkers.reserve(model.triangleCount());
     for (int s = 0; s < static_cast<int>(model.surfaces.size()); ++s) {
@@ -171,7 +182,7 @@ Plc buildPlc(const Model &input)
                     QT_TRANSLATE_NOOP("stratamesh::Core",
                                       "surface %1: triangle %2 has two corners at the same point"),
                     {surface.name, std::to_string(t)}});
-            plc.facets.push_back(g);
+            plc.facets.push_back({pointOf[g[0]], pointOf[g[1]], pointOf[g[2]]});
             plc.facetMarkers.push_back(s + 1);
         }
     }

@@ -19,7 +19,7 @@ struct PlcRegion {
 };
 
 struct Plc {
-    std::vector<Vec3> points;       // the model's global vertices (recoverTopology)
+    std::vector<Vec3> points;       // the model's global vertices of some triangle, in order
     std::vector<Triangle> facets;   // every surface triangle, on global point ids
     std::vector<int> facetMarkers;  // surface index + 1, one per facet
     std::vector<PlcRegion> regions; // in the order of Model::regions

@@ -6,6 +6,7 @@
 #include "model/surface_edges.h"
 #include "model/synthetic_models.h"
 #include "model/topology.h"
+#include "model/unused_vertices.h"
 
 #include <QtTest>
 
@@ -112,6 +113,25 @@ private slots:
         QCOMPARE(m.surfaces[0].lines, std::vector<int>{0});
         QCOMPARE(m.lines[0].name, std::string("line_0"));
         checkConsistency(m);
+    }
+
+    // A vertex left by a re-triangulation goes; the others keep their order and positions.
+    void unusedVerticesAreDropped()
+    {
+        Surface s = makeSurface("s", {{0, 0, 0}, {1, 0, 0}, {0.5, 0.5, 0}, {1, 1, 0}, {0, 1, 0}},
+                                {{0, 1, 3}, {0, 3, 4}});
+        const Model before = recoverTopology(modelOf({s}));
+        QCOMPARE(before.vertices.size(), std::size_t(5)); // the free centre is a global point
+        QCOMPARE(dropUnusedVertices(s), 1);
+        QCOMPARE(s.vertices.size(), std::size_t(4));
+        QCOMPARE(s.vertices[2], Vec3(1, 1, 0));
+        QCOMPARE(s.triangles[0], (Triangle{0, 1, 2}));
+        QCOMPARE(s.triangles[1], (Triangle{0, 2, 3}));
+        QCOMPARE(dropUnusedVertices(s), 0);
+        const Model after = recoverTopology(modelOf({s}));
+        QCOMPARE(after.vertices.size(), std::size_t(4));
+        QCOMPARE(after.lines.size(), std::size_t(1));
+        checkConsistency(after);
     }
 
     // Two local vertices at one position share a global id but never connect the triangles:

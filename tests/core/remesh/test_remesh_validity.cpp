@@ -26,6 +26,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
 #include <set>
 
 using namespace stratamesh;
@@ -245,6 +246,13 @@ private slots:
                                        : (r.validity.problems.front().check + ": "
                                           + r.validity.problems.front().message)
                                              .c_str());
+        // No free point (a pocket's fan centre left behind): TetGen throws on one lying on a facet.
+        std::vector<char> used(r.model.vertices.size(), 0);
+        for (std::size_t k = 0; k < r.model.surfaces.size(); ++k)
+            for (const Triangle &t : r.model.surfaces[k].triangles)
+                for (int v : t)
+                    used[r.model.surfaceVertexToGlobal[k][v]] = 1;
+        QCOMPARE(std::count(used.begin(), used.end(), 0), std::ptrdiff_t(0));
         QCOMPARE(r.initialSiteCount, sites);
         QVERIFY(r.siteCount >= sites);
         QVERIFY(r.siteCount <= 2 * sites + 4 * sites); // growth cap plus the validity rounds

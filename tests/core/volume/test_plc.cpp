@@ -86,6 +86,24 @@ private slots:
         QCOMPARE(buildPlc(raw).facets, plc.facets);
     }
 
+    // A point no triangle uses (the centre a re-triangulation dropped), lying on a facet: TetGen
+    // throws on it, so the PLC leaves it out and keeps the other points in their order.
+    void freePointsAreLeftOut()
+    {
+        Model m = twoRegionBox();
+        const int h = horizonOf(m);
+        Surface &horizon = m.surfaces[h];
+        const Triangle &t = horizon.triangles.front();
+        horizon.vertices.push_back(
+            (horizon.vertices[t[0]] + horizon.vertices[t[1]] + horizon.vertices[t[2]]) / 3.0);
+        m = recoverTopology(m);
+        const Plc plc = buildPlc(m);
+        QCOMPARE(plc.points.size() + 1, m.vertices.size());
+        const Plc clean = buildPlc(twoRegionBox());
+        QCOMPARE(plc.points, clean.points);
+        QCOMPARE(plc.facets, clean.facets);
+    }
+
     void badModelsAreInputErrors()
     {
         QVERIFY_THROWS_EXCEPTION(InputError, buildPlc(Model{}));
