@@ -364,8 +364,10 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
     // round, topology ones included, had used the sites up (a 10-fault network at 1000 sites
     // ended with 1 problem and 934 edits; started again, valid with 586 edits).
     std::vector<double> bestDensity = density;
-    // Refines until no place is left, the rounds run out or a round makes things worse; true when
-    // the site cap stopped it on an invalid best, the case a new start from that best may mend.
+    // Refines until no place is left, the rounds run out, no site can be added, or a round over
+    // the quality allowance follows a valid best; a round is kept only when better than the best.
+    // True when the site cap stopped it on an invalid best, the case a new start from that best
+    // may mend.
     auto refine = [&](bool validityOnly) {
         for (;;) {
             const double spacing = edgeLengthForSites(area, static_cast<int>(sites.size()))
