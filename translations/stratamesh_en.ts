@@ -669,6 +669,10 @@ per cell</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>strip %1 (%2 m wide, limit %3 m) removed: its two lines merged onto one of them (Fig 4.7 per strip)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>strip %1 (%2 m wide, limit %3 m) removed before remeshing</source>
         <translation type="unfinished"></translation>
     </message>

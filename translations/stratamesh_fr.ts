@@ -670,6 +670,10 @@ par cellule</translation>
         <translation>bande %1 (%2 m de large, limite %3 m) supprimée : ses deux lignes fusionnées à mi-chemin (fig. 4.7 par bande)</translation>
     </message>
     <message>
+        <source>strip %1 (%2 m wide, limit %3 m) removed: its two lines merged onto one of them (Fig 4.7 per strip)</source>
+        <translation>bande %1 (%2 m de large, limite %3 m) supprimée : ses deux lignes fusionnées sur l&apos;une d&apos;elles (fig. 4.7 par bande)</translation>
+    </message>
+    <message>
         <source>strip %1 (%2 m wide, limit %3 m) removed before remeshing</source>
         <translation>bande %1 (%2 m de large, limite %3 m) supprimée avant le remaillage</translation>
     </message>

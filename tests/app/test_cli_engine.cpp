@@ -141,11 +141,12 @@ private slots:
                  rep[QStringLiteral("output")][QStringLiteral("counts")]);
     }
 
-    // Without refinement the modelA2 remesh at 1000 sites (seed 1) holds two points 1e-12 apart,
-    // which TetGen merges into duplicated facets: the CLI must not write it unless asked to.
+    // Without refinement the modelA5 remesh at 1000 sites (seed 1) folds two surfaces over each
+    // other at a low-angle contact, so TetGen would fill the space between them with the wrong
+    // region: the CLI must not write it unless asked to.
     void remeshRefusesToWriteAnInvalidResult()
     {
-        STRATAMESH_REQUIRE_DATA(path, "modelA2.ml");
+        STRATAMESH_REQUIRE_DATA(path, "modelA5.ml");
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("remeshed.ml"));
         const QString report = dir.filePath(QStringLiteral("report.json"));
@@ -167,7 +168,7 @@ private slots:
         QVERIFY(!QFile::exists(out));
         QVERIFY(!QFile::exists(report));
         QVERIFY2(refused.err.contains(QStringLiteral("not valid"))
-                     && refused.err.contains(QStringLiteral("close_vertices")),
+                     && refused.err.contains(QStringLiteral("folded_contact")),
                  qPrintable(refused.err));
 
         const CliRun allowed = runCli(base + QStringList{QStringLiteral("--allow-invalid")});

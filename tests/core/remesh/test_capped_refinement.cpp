@@ -1,8 +1,11 @@
 // Refinement stopped by the site cap on a result that is not valid (issue 13): a ten-fault
 // network at 1000 sites fills the cap (the sites asked plus twice as many) in its second round,
 // whose places include topology ones, and ended with a close-vertices problem between a fault and
-// a horizon. The rerun with the thin strips kept does not mend it; the search then starts again
-// from its best result and refines only where that one is not valid.
+// a horizon. The run is made again with the thin strips kept; when that is not valid either, the
+// search starts again from its best result and refines only where that one is not valid. Since
+// strips too close to merge half-way go onto one of their lines, the rerun here is valid (934
+// edits, 3000 sites) and no generated network tried (5 to 10 faults, 300 to 1200 sites) reaches
+// the new start: it is checked for its order only.
 #include "remesh/surface_remesher.h"
 
 #include "model/synthetic_models.h"
@@ -57,7 +60,7 @@ void TestCappedRefinement::cappedInvalidSearchStartsAgainFromItsBest()
           result.siteCount, result.refinementRounds, edits, result.validity.problems.size());
     QVERIFY(again >= 0);
     QVERIFY2(rerun > again, "the thin strips were not tried first");
-    QVERIFY2(restarted > rerun, "the search did not start again after the rerun");
+    QVERIFY2(restarted < 0 || restarted > rerun, "the search started again before the rerun");
     QVERIFY2(result.validity.valid, result.validity.problems.empty()
                                         ? "not valid"
                                         : result.validity.problems.front().check.c_str());

@@ -162,7 +162,7 @@ private slots:
 
     // Low-dip fault networks close pockets at corners (modelA5 at 10000 sites kept 3, network8
     // at 1000 sites 17, before pockets were checked and opened). The remesher opens them all
-    // here (32; 31 before failed tries were tried again after each opening), and TetGen floods
+    // here (24; 32 before strips were merged onto a line where half-way folds), and TetGen floods
     // no region without a seed.
     void pocketsAreOpened()
     {

@@ -1,5 +1,6 @@
 // Thin strips found and removed whole before remeshing (thin_strips.h, strip_collapse.h).
 #include "common/error.h"
+#include "io/model_reader.h"
 #include "model/model_counts.h"
 #include "model/region_volume.h"
 #include "model/synthetic_models.h"
@@ -8,6 +9,7 @@
 #include "remesh/strip_collapse.h"
 #include "remesh/surface_remesher.h"
 #include "support/model_lines.h"
+#include "support/test_data.h"
 
 #include <QtTest>
 
@@ -135,6 +137,36 @@ private slots:
         QCOMPARE(countEntities(result.model).all.surfaces, countEntities(input).all.surfaces - 1);
         params.stripWidthFactor = 0.1; // 9 m: kept
         QVERIFY(remeshModel(input, params).strips.empty());
+    }
+
+    // modelA5's fault piece f3_1 runs 3.8 km between the cutoffs of h1 and h2, at most 18.5 m
+    // from both, and f1_3 94 m wide. Both stayed, with every one of f3_1's 62 output triangles
+    // under 30° at 5000 sites: half-way folds or crosses a neighbour, and an h1 triangle away
+    // from the lines, whose own normal disagrees with its corners', was taken for a fold.
+    void stripsWithSliverNeighboursGoOntoOneOfTheirLines()
+    {
+        STRATAMESH_REQUIRE_DATA(path, "modelA5.ml");
+        const Model input = recoverTopology(readModel(path.toStdString()));
+        // 0.4 × the edge length of 5000 sites, the default strip factor there.
+        const double limit = 0.4 * edgeLengthForSites(modelArea(input), 5000);
+        std::vector<std::string> found;
+        for (const ThinStrip &s : findThinStrips(input, limit))
+            found.push_back(input.surfaces[s.surface].name);
+        QVERIFY(std::find(found.begin(), found.end(), "f3_1") != found.end());
+        SimplificationLedger ledger;
+        const StripCollapse collapsed = removeThinStrips(input, limit, ledger);
+        std::vector<std::string> removed;
+        for (const ThinStrip &s : collapsed.removed)
+            removed.push_back(input.surfaces[s.surface].name);
+        QVERIFY2(std::find(removed.begin(), removed.end(), "f3_1") != removed.end(), "f3_1 kept");
+        QVERIFY2(std::find(removed.begin(), removed.end(), "f1_3") != removed.end(), "f1_3 kept");
+        QCOMPARE(countKind(ledger, LedgerKind::SurfaceLost), static_cast<int>(removed.size()));
+        // Removal never adds a problem (the input has none).
+        QVERIFY(checkValidity(input).valid);
+        const ValidityReport validity = checkValidity(collapsed.model);
+        QVERIFY2(validity.valid,
+                 validity.problems.empty() ? "" : validity.problems.front().message.c_str());
+        QCOMPARE(collapsed.model.regions.size(), input.regions.size());
     }
 };
 
