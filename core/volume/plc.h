@@ -20,7 +20,7 @@ struct PlcRegion {
 
 struct Plc {
     std::vector<Vec3> points;       // the model's global vertices of some triangle, in order
-    std::vector<Triangle> facets;   // every surface triangle, on global point ids
+    std::vector<Triangle> facets;   // every surface triangle, on ids into `points`
     std::vector<int> facetMarkers;  // surface index + 1, one per facet
     std::vector<PlcRegion> regions; // in the order of Model::regions
     // TetGen's hole list: the subdomain holding each point is left empty (the zones of a hybrid
