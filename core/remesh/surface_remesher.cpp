@@ -12,6 +12,7 @@
 #include "remesh/duplicate_separation.h"
 #include "remesh/editable_soup.h"
 #include "remesh/feature_sizing.h"
+#include "remesh/flat_triangles.h"
 #include "remesh/input_projector.h"
 #include "remesh/ledger_reconciliation.h"
 #include "remesh/line_fins.h"
@@ -255,6 +256,7 @@ RemeshResult remeshWithSites(const Model &inputModel, const std::vector<Vec3> &s
     RemeshResult result = meshFromSites(collapsed, sites, params, std::move(ledger), progress);
     // Opening pockets changes the output, so the ledger is reconciled with the opened model.
     checkAndOpenPockets(result, Progress::none());
+    result.cleanup.lineFins += mendFlatTriangles(result.model, result.validity).mended;
     reconcileLedger(input, result.model, result.ledger,
                     2.0 * edgeLengthForSites(modelArea(input), result.siteCount), stripRecords);
     return result;
@@ -565,6 +567,11 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
         refine(true);
     }
     result = std::move(best);
+    {
+        Progress flat(progress, at, at + 0.5 * (1.0 - at), "Flat triangles");
+        result.cleanup.lineFins +=
+            mendFlatTriangles(result.model, result.validity, 170.0, 16, flat).mended;
+    }
     const int roundsRun = rounds;
     rounds = result.refinementRounds;
     result.remainingTargets =
