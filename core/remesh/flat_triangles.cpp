@@ -127,6 +127,19 @@ bool holdsTriangleAt(const Model &model, const Vec3 &a, const Vec3 &b, const Vec
     return false;
 }
 
+// No check finds more than before (a split that mends one problem of an invalid model and makes
+// another is a trade, not a repair: modelA5 at 1000 sites without refinement had a folded
+// contact turned into a duplicate triangle).
+bool noWorse(const ValidityReport &before, const ValidityReport &after)
+{
+    if (before.valid && !after.valid)
+        return false;
+    for (const auto &[check, count] : after.counts)
+        if (count > before.count(check))
+            return false;
+    return true;
+}
+
 } // namespace
 
 FlatTriangleRepair mendFlatTriangles(Model &model, ValidityReport &validity, double apexDeg,
@@ -171,7 +184,7 @@ FlatTriangleRepair mendFlatTriangles(Model &model, ValidityReport &validity, dou
         if (holdsTriangleAt(candidate, model.vertices[f.apex], model.vertices[f.p],
                             model.vertices[f.q]))
             continue;
-        if (after.problems.size() > validity.problems.size() || (validity.valid && !after.valid))
+        if (!noWorse(validity, after))
             continue;
         model = std::move(candidate);
         validity = std::move(after);

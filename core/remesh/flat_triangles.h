@@ -21,7 +21,7 @@ struct FlatTriangleRepair {
 // Tries the triangles whose widest angle is at least `apexDeg`, flattest first, at most
 // `maxTries` of them. A split is kept only when the worst smallest angle of the triangles it
 // makes beats that of the triangles it replaces, no new triangle meets another surface, and
-// the model's validity problems do not increase. `model` needs topology and keeps it;
+// no validity check finds more problems than before. `model` needs topology and keeps it;
 // `validity` is its report, kept up to date. Throws Cancelled.
 FlatTriangleRepair mendFlatTriangles(Model &model, ValidityReport &validity, double apexDeg = 170.0,
                                      int maxTries = 16, Progress &progress = Progress::none());
