@@ -71,6 +71,17 @@ int removeLineFins(EditableSoup &soup)
         };
         if (!turnsSame(n0) || !turnsSame(n1) || !soup.edgeTriangles(m, x).empty())
             continue;
+        // Only a flip that narrows the widest angle: it ends. Four points of one line holding a
+        // surface between them are a fin either way, flipped back and forth forever (a fault
+        // piece of an 8-fault network at 2000 sites with its strips kept ran out of memory).
+        auto widest = [&](const std::array<int, 3> &v) {
+            const auto a =
+                triangleShape(soup.position(v[0]), soup.position(v[1]), soup.position(v[2]))
+                    .anglesDeg;
+            return *std::max_element(a.begin(), a.end());
+        };
+        if (std::max(widest(n0), widest(n1)) >= angles[k])
+            continue;
         soup.removeTriangle(t);
         soup.removeTriangle(other);
         soup.addTriangle(n0, fin.surface);

@@ -191,6 +191,7 @@ PocketRepair repairPockets(Model &model, ValidityReport &validity, Progress &pro
     // One pocket at a time, from a fresh analysis: each kept change moves triangle ids.
     std::set<std::pair<int, std::vector<int>>> tried;
     int tries = 0;
+    bool changedSinceRetry = false;
     for (int guard = 0; guard < 4 * repair.pockets && !shells.pockets.empty(); ++guard) {
         bool changed = false;
         const std::vector<int> holders = vertexSurfaceCounts(model);
@@ -254,11 +255,19 @@ PocketRepair repairPockets(Model &model, ValidityReport &validity, Progress &pro
             if (changed)
                 break;
         }
-        if (!changed)
+        if (changed) {
+            changedSinceRetry = true;
+            shells = analyseRegionShells(model);
+            continue;
+        }
+        // Tries that failed before the changes may succeed on the changed model: once more,
+        // when no untried edit is left. Not after each change: a few pockets that cannot be
+        // opened would be tried again after each of the others (an 8-fault network at 2000
+        // sites with its strips kept: 23,000 tries for 101 pockets, 5 minutes).
+        if (!changedSinceRetry)
             break;
-        // Tries that failed on the model before this change may succeed on the changed one.
+        changedSinceRetry = false;
         tried.clear();
-        shells = analyseRegionShells(model);
     }
     repair.opened = repair.pockets - static_cast<int>(shells.pockets.size());
     // A fan replaced without its centre leaves the centre in its surface, used by no triangle.
