@@ -3382,10 +3382,6 @@ Click to show it in the views</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Parts of features closer than this distance are merged; 0 keeps them apart. At most a tenth of the bounding-box diagonal.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>× edge length</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3559,6 +3555,14 @@ Click to show it in the views</source>
     </message>
     <message>
         <source>Where the four Voronoi cells of a vertex meet a surface, TetGen&apos;s tets fill the place instead of the tet linking their points on the surfaces and their sites (Fig. 5.4).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Features smaller than this may be simplified: parts closer than it are merged, thin strips narrower than it and the strip factor are removed; 0 simplifies nothing. -1 (Auto): nothing merged, thin strips removed by the strip factor alone. At most a tenth of the bounding-box diagonal.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -3385,10 +3385,6 @@ Cliquer pour le montrer dans les vues</translation>
         <translation>&amp;d_resolution :</translation>
     </message>
     <message>
-        <source>Parts of features closer than this distance are merged; 0 keeps them apart. At most a tenth of the bounding-box diagonal.</source>
-        <translation>Les parties d&apos;éléments plus proches que cette distance sont fusionnées ; 0 les garde séparées. Au plus un dixième de la diagonale de la boîte englobante.</translation>
-    </message>
-    <message>
         <source>× edge length</source>
         <translation>× longueur d&apos;arête</translation>
     </message>
@@ -3563,6 +3559,14 @@ Cliquer pour le montrer dans les vues</translation>
     <message>
         <source>Where the four Voronoi cells of a vertex meet a surface, TetGen&apos;s tets fill the place instead of the tet linking their points on the surfaces and their sites (Fig. 5.4).</source>
         <translation>Là où les quatre cellules de Voronoï d&apos;un sommet rencontrent une surface, les tétraèdres de TetGen remplissent la place au lieu du tétraèdre reliant leurs points sur les surfaces et leurs sites (Fig. 5.4).</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Features smaller than this may be simplified: parts closer than it are merged, thin strips narrower than it and the strip factor are removed; 0 simplifies nothing. -1 (Auto): nothing merged, thin strips removed by the strip factor alone. At most a tenth of the bounding-box diagonal.</source>
+        <translation>Les éléments plus petits que cette valeur peuvent être simplifiés : les parties plus proches sont fusionnées, les bandes minces plus étroites qu&apos;elle et que le facteur de bande sont retirées ; 0 ne simplifie rien. -1 (Auto) : rien n&apos;est fusionné, les bandes minces sont retirées selon le seul facteur de bande. Au plus un dixième de la diagonale de la boîte englobante.</translation>
     </message>
 </context>
 <context>

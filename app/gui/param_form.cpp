@@ -80,7 +80,9 @@ QWidget *createParamField(const ParamInfo &info, double diagonal, QWidget *paren
         else if (info.decimals == 3 && info.maximum > 1.0 && info.minimum < 1.0)
             box->setSingleStep(0.1);
         box->setSuffix(suffixFor(info));
-        if (info.minimum == 0.0 && !info.offText.empty())
+        // At its minimum (0, or −1 for an automatic value that 0 cannot stand for) the box
+        // names what the value means.
+        if (info.minimum <= 0.0 && !info.offText.empty())
             box->setSpecialValueText(translated(info.offText));
         field = box;
     } else {

@@ -124,6 +124,9 @@ ProjectFile projectFromJson(const QJsonObject &json, const QString &projectPath)
         run.params.sites = 0; // the file says which of sites and edge_length was asked
         paramsFromJson(remeshParamTable(), o.value(QLatin1String("parameters")).toObject(),
                        run.params, projectPath);
+        // Schema 1 wrote the default d_resolution as 0, which now asks for no simplification.
+        if (schema.toInt() < 2 && run.params.dResolution == 0.0)
+            run.params.dResolution = kAutoDResolution;
         run.figures = figuresFromJson(o.value(QLatin1String("figures")).toObject());
         run.review = o.value(QLatin1String("review")).toObject();
         project.runs.push_back(std::move(run));

@@ -13,7 +13,8 @@
 
 namespace stratamesh {
 
-inline constexpr int kProjectSchema = 1;
+// 2: d_resolution's default is −1 (automatic) and 0 asks for no simplification.
+inline constexpr int kProjectSchema = 2;
 
 // The figures the Runs list and `stratamesh-cli project` show without opening the run folder.
 struct ProjectRunFigures {

@@ -35,13 +35,16 @@ ParamTable<RemeshParams> makeTable()
 
     i = {};
     i.key = "d_resolution", i.flag = "--d-resolution", i.jsonKey = "d_resolution";
-    i.minimum = 0.0, i.maximum = 1e300, i.unit = "m", i.valueName = "D";
+    i.minimum = kAutoDResolution, i.maximum = 1e300, i.unit = "m", i.valueName = "D";
     i.scale = ParamScale::Length, i.thesis = "Alg. 4.2, step 4";
-    i.offText = QT_TRANSLATE_NOOP("stratamesh::Params", "Off");
+    i.offText = QT_TRANSLATE_NOOP("stratamesh::Params", "Auto");
     i.label = QT_TRANSLATE_NOOP("stratamesh::Params", "&d_resolution:");
-    i.help = QT_TRANSLATE_NOOP("stratamesh::Params",
-                               "Parts of features closer than this distance are merged; 0 keeps "
-                               "them apart. At most a tenth of the bounding-box diagonal.");
+    i.help = QT_TRANSLATE_NOOP(
+        "stratamesh::Params",
+        "Features smaller than this may be simplified: parts closer than it are merged, thin "
+        "strips narrower than it and the strip factor are removed; 0 simplifies nothing. -1 "
+        "(Auto): nothing merged, thin strips removed by the strip factor alone. At most a tenth "
+        "of the bounding-box diagonal.");
     t.add(memberParam(&P::dResolution, i));
 
     i = {};

@@ -90,8 +90,9 @@ std::string number(double v)
 StripCollapse stripsRemoved(const Model &input, double edgeLength, const RemeshParams &params,
                             SimplificationLedger &ledger, Progress &progress)
 {
-    if (params.stripWidthFactor > 0.0 && edgeLength > 0.0)
-        return removeThinStrips(input, params.stripWidthFactor * edgeLength, ledger, progress);
+    const double width = stripWidthLimit(params, edgeLength);
+    if (width > 0.0)
+        return removeThinStrips(input, width, ledger, progress);
     StripCollapse none;
     none.model = input;
     return none;
@@ -123,7 +124,7 @@ RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec
         components = computeCellComponents(domain, rvd);
     }
     CellPointsParams pointParams;
-    pointParams.dResolution = params.dResolution;
+    pointParams.dResolution = mergeDistance(params);
     pointParams.mergeAllExtraPoints = params.mergeAllExtraPoints;
     CellPoints points;
     {
@@ -202,7 +203,7 @@ FeatureSizing fittedSizing(const Model &model, double h0, const RemeshParams &pa
     sp.lfsFactor = params.lfsFactor;
     sp.gradation = params.sizingGradation;
     sp.minEdgeLength = params.sizingMinFraction * h0;
-    sp.dResolution = params.dResolution;
+    sp.dResolution = mergeDistance(params);
     std::vector<double> lfs =
         localFeatureSizes(model, h0 / params.lfsFactor, sp.wedgeSine, progress);
     FeatureSizing sizing = sizingFromLfs(model, lfs, sp);
@@ -379,7 +380,7 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
             const ValidityReport none;
             const std::vector<Vec3> topology =
                 refinementTargets(simplified, result.model, result.ledger, stripRecords, none,
-                                  params.dResolution, 0.5 * spacing);
+                                  mergeDistance(params), 0.5 * spacing);
             std::vector<Vec3> invalid;
             for (const ValidityProblem &p : result.validity.problems)
                 invalid.push_back(p.position);
@@ -411,7 +412,7 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
                 sp.lfsFactor = 1.0;
                 sp.gradation = params.sizingGradation;
                 sp.minEdgeLength = h0 / 64.0;
-                sp.dResolution = params.dResolution;
+                sp.dResolution = mergeDistance(params);
                 sized_ = refineToSize(simplified, sp, allTargets, radius, 6);
                 const double coarse = 0.9 * spacing;
                 for (const Vec3 &p : featureSitesNearTargets(sized_.model, sized_.size, targets,
@@ -576,7 +577,7 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
     rounds = result.refinementRounds;
     result.remainingTargets =
         static_cast<int>(refinementTargets(simplified, result.model, result.ledger, stripRecords,
-                                           result.validity, params.dResolution, 0.5 * h0)
+                                           result.validity, mergeDistance(params), 0.5 * h0)
                              .size());
     reconcileLedger(input, result.model, result.ledger, 2.0 * h0, stripRecords);
     result.energy = optimised.energy;
@@ -599,6 +600,19 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
 RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Progress &progress)
 {
     return remeshRun(inputModel, params, progress, true);
+}
+
+double mergeDistance(const RemeshParams &params)
+{
+    return std::max(0.0, params.dResolution);
+}
+
+double stripWidthLimit(const RemeshParams &params, double edgeLength)
+{
+    if (!(params.stripWidthFactor > 0.0 && edgeLength > 0.0))
+        return 0.0;
+    const double width = params.stripWidthFactor * edgeLength;
+    return params.dResolution < 0.0 ? width : std::min(width, params.dResolution);
 }
 
 TopologyEdits countTopologyEdits(const SimplificationLedger &ledger)

@@ -24,11 +24,16 @@
 
 namespace stratamesh {
 
+// d_resolution's default: no close features are merged, and thin strips are removed as the strip
+// factor says. An explicit d_resolution ≥ 0 also bounds the width of the strips removed, so 0
+// asks for no simplification at all (issue 13). Any negative value means the default.
+inline constexpr double kAutoDResolution = -1.0;
+
 struct RemeshParams {
     int sites = 0;           // number of sites; when 0, derived from edgeLength
     double edgeLength = 0.0; // target edge length: sites = area / (√3/2 · L²), a hexagonal packing
-    double dResolution = 0.0;         // Alg 4.2 step 4; 0 disables the merge of close features
-    bool mergeAllExtraPoints = false; // Alg 4.2 step 3 as in the thesis (see output_points.h)
+    double dResolution = kAutoDResolution; // Alg 4.2 step 4; 0: nothing merged nor removed
+    bool mergeAllExtraPoints = false;      // Alg 4.2 step 3 as in the thesis (see output_points.h)
     // Strips narrower than this fraction of the resolution edge length are removed whole before
     // remeshing (strip_collapse.h); 0 keeps them. A strip of width w holds one row of triangles of
     // base e with base angles atan(2w/e): 39° at 0.4, so narrower strips would only give slivers.
@@ -119,6 +124,13 @@ struct TopologyEdits {
     }
 };
 TopologyEdits countTopologyEdits(const SimplificationLedger &ledger);
+
+// The distance below which parts of features are merged (Alg 4.2 step 4): d_resolution, 0 when
+// it is the default.
+double mergeDistance(const RemeshParams &params);
+// The widest thin strip removed before remeshing at this edge length: the strip factor times it,
+// bounded by an explicit d_resolution.
+double stripWidthLimit(const RemeshParams &params, double edgeLength);
 
 // The fewest and most sites a remesh takes: the range of the `sites` entry of
 // remeshParamTable() (params/param_tables.h), which every front end and check reads.

@@ -68,7 +68,7 @@ private slots:
         const auto result = runCli({QStringLiteral("project"), path});
         QVERIFY2(result.finished && result.exitCode == 0, qPrintable(result.err));
         const QJsonObject out = QJsonDocument::fromJson(result.out.toUtf8()).object();
-        QCOMPARE(out.value("schema").toInt(), 1);
+        QCOMPARE(out.value("schema").toInt(), 2); // what this version reads the file as
         QCOMPARE(out.value("shown_run").toInt(), 2);
         QVERIFY(out.value("input").toObject().value("found").toBool());
         const QJsonArray runs = out.value("runs").toArray();
@@ -102,7 +102,7 @@ private slots:
         QCOMPARE(result.exitCode, 1);
         QVERIFY2(result.err.contains(QStringLiteral("future.smproj")), qPrintable(result.err));
         QVERIFY2(result.err.contains(QStringLiteral("schema 99")), qPrintable(result.err));
-        QVERIFY2(result.err.contains(QStringLiteral("schema 1")), qPrintable(result.err));
+        QVERIFY2(result.err.contains(QStringLiteral("schema 2")), qPrintable(result.err));
     }
 
     void refusesMalformedJson()

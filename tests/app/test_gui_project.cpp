@@ -532,7 +532,7 @@ private slots:
         QVERIFY(!window->projectWorkflow()->openProject(path));
         const QString messages = allMessages(*window);
         QVERIFY2(messages.contains(QStringLiteral("schema 99")), qPrintable(messages));
-        QVERIFY2(messages.contains(QStringLiteral("schema 1")), qPrintable(messages));
+        QVERIFY2(messages.contains(QStringLiteral("schema 2")), qPrintable(messages));
         QVERIFY(!window->workbench()->model());
     }
 

@@ -30,6 +30,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QProgressBar>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
@@ -100,7 +101,11 @@ private slots:
         const RemeshParams p = dialog.params();
         QCOMPARE(p.sites, RemeshDialog::kDefaultSites);
         QCOMPARE(p.edgeLength, 0.0);
-        QCOMPARE(p.dResolution, 0.0);
+        QCOMPARE(p.dResolution, kAutoDResolution);
+        // The box names the automatic default rather than showing −1 m.
+        auto *dBox = dialog.findChild<QDoubleSpinBox *>(QStringLiteral("d_resolution"));
+        QVERIFY(dBox);
+        QCOMPARE(dBox->text(), QStringLiteral("Auto"));
         QCOMPARE(p.iterations, 100);
         QVERIFY(!p.adaptive);
         QCOMPARE(p.stripWidthFactor, RemeshParams{}.stripWidthFactor);

@@ -79,13 +79,38 @@ private slots:
         QCOMPARE(projectRunsFolder(path), dir.filePath(QStringLiteral("a/study_runs")));
     }
 
+    // Schema 1 wrote the default d_resolution as 0; from schema 2, 0 asks for no simplification
+    // and the default is automatic.
+    void oldDefaultDResolutionReadAsAutomatic()
+    {
+        const QString path = QStringLiteral("/tmp/x.smproj");
+        auto dResolutionRead = [&](int schema, double written) {
+            const QJsonObject run{{QStringLiteral("id"), 1},
+                                  {QStringLiteral("folder"), runFolderName(1)},
+                                  {QStringLiteral("parameters"),
+                                   QJsonObject{{QStringLiteral("sites"), 500},
+                                               {QStringLiteral("d_resolution"), written}}}};
+            const QJsonObject json{
+                {QStringLiteral("schema"), schema},
+                {QStringLiteral("input"), QJsonObject{{QStringLiteral("path"), "m.ml"}}},
+                {QStringLiteral("runs"), QJsonArray{run}}};
+            return projectFromJson(json, path).runs.at(0).params.dResolution;
+        };
+        QCOMPARE(dResolutionRead(1, 0.0), kAutoDResolution);
+        QCOMPARE(dResolutionRead(1, 2.5), 2.5);
+        QCOMPARE(dResolutionRead(kProjectSchema, 0.0), 0.0);
+        QCOMPARE(dResolutionRead(kProjectSchema, kAutoDResolution), kAutoDResolution);
+        QCOMPARE(RemeshParams{}.dResolution, kAutoDResolution);
+    }
+
     void refusals()
     {
         const QString path = QStringLiteral("/tmp/x.smproj");
         QString e = errorOf([&] {
             projectFromJson(QJsonObject{{QStringLiteral("schema"), 7}}, path);
         });
-        QVERIFY2(e.contains("x.smproj") && e.contains("schema 7") && e.contains("schema 1"),
+        QVERIFY2(e.contains("x.smproj") && e.contains("schema 7")
+                     && e.contains(QStringLiteral("schema %1").arg(kProjectSchema)),
                  qPrintable(e));
         e = errorOf([&] { projectFromJson(QJsonObject{}, path); });
         QVERIFY2(e.contains("no schema"), qPrintable(e));

@@ -139,6 +139,33 @@ private slots:
         QVERIFY(remeshModel(input, params).strips.empty());
     }
 
+    // An explicit d_resolution also bounds the strips removed: 0 asks for no simplification,
+    // so the strip stays whatever the strip factor; the default removes it by the factor alone.
+    void dResolutionBoundsTheStripsRemoved()
+    {
+        const Model input = faultedBox(15);
+        RemeshParams params;
+        params.edgeLength = 90;
+        params.iterations = 40;
+        params.stripWidthFactor = 0.3; // 27 m
+        QCOMPARE(params.dResolution, kAutoDResolution);
+        QCOMPARE(stripWidthLimit(params, 90.0), 27.0);
+        params.dResolution = 0.0;
+        QCOMPARE(stripWidthLimit(params, 90.0), 0.0);
+        const RemeshResult kept = remeshModel(input, params);
+        QVERIFY(kept.strips.empty());
+        QCOMPARE(countKind(kept.ledger, LedgerKind::SurfaceLost), 0);
+        QCOMPARE(countEntities(kept.model).all.surfaces, countEntities(input).all.surfaces);
+        params.dResolution = 10.0; // below the 15 m strip: kept
+        QCOMPARE(stripWidthLimit(params, 90.0), 10.0);
+        QVERIFY(remeshModel(input, params).strips.empty());
+        params.dResolution = 20.0; // above it: removed, though no close parts are left to merge
+        QCOMPARE(remeshModel(input, params).strips.size(), std::size_t(1));
+        QCOMPARE(mergeDistance(params), 20.0);
+        params.dResolution = kAutoDResolution;
+        QCOMPARE(mergeDistance(params), 0.0);
+    }
+
     // modelA5's fault piece f3_1 runs 3.8 km between the cutoffs of h1 and h2, at most 18.5 m
     // from both, and f1_3 94 m wide. Both stayed, with every one of f3_1's 62 output triangles
     // under 30° at 5000 sites: half-way folds or crosses a neighbour, and an h1 triangle away
