@@ -39,6 +39,15 @@ QJsonObject remeshReportJson(const RemeshReportParts &parts)
     QJsonObject parameters = paramsToJson(remeshParamTable(), *parts.params);
     parameters.insert(QStringLiteral("sites"), facts.initialSiteCount);
     parameters.insert(QStringLiteral("final_sites"), facts.siteCount);
+    // What d_resolution let the run simplify, in metres at its resolution edge length.
+    const RemeshParams &params = *parts.params;
+    const double edgeLength = edgeLengthForSites(modelArea(input), facts.initialSiteCount);
+    const QJsonObject simplification{
+        {QStringLiteral("d_resolution"), params.dResolution},
+        {QStringLiteral("automatic"), params.dResolution < 0.0},
+        {QStringLiteral("edge_length"), edgeLength},
+        {QStringLiteral("merge_distance"), mergeDistance(params)},
+        {QStringLiteral("strip_width_limit"), stripWidthLimit(params, edgeLength)}};
     return QJsonObject{
         {QStringLiteral("file"), parts.file},
         {QStringLiteral("output_file"), parts.outputFile},
@@ -54,6 +63,7 @@ QJsonObject remeshReportJson(const RemeshReportParts &parts)
                      {QStringLiteral("remaining_places"), facts.remainingTargets},
                      {QStringLiteral("pockets_opened"), facts.pocketsOpened}}},
         {QStringLiteral("parameters"), parameters},
+        {QStringLiteral("simplification"), simplification},
         {QStringLiteral("input"), sideJson(input, comparison.input.mesh, parts.inputValidity)},
         {QStringLiteral("output"), sideJson(output, comparison.output.mesh, parts.outputValidity)},
         {QStringLiteral("hausdorff_pct_bbox"), comparison.hausdorff.symmetricPctBbox},

@@ -243,6 +243,7 @@ IntersectionRepairResult repairIntersections(EditableSoup &soup, const Model &in
             changed = tryCollapses(soup, input, soup.triangle(t).v, soup.triangle(u).v, ledger)
                       || changed;
         }
+        progress.tick(0.5 + 0.5 * (round + 1.5) / (4 * params.maxRounds + 1), "search");
         pairs = soupIntersections(soup);
         if (!changed)
             break;

@@ -53,7 +53,8 @@ std::set<std::pair<int, int>> stripRungs(const EditableSoup &soup, double minAng
 
 } // namespace
 
-int addStripRows(EditableSoup &soup, InputProjector &projector, const StripRowParams &params)
+int addStripRows(EditableSoup &soup, InputProjector &projector, const StripRowParams &params,
+                 Progress &progress)
 {
     const std::set<std::pair<int, int>> rungs = stripRungs(soup, params.minAngleDeg);
     if (rungs.empty())
@@ -95,12 +96,23 @@ int addStripRows(EditableSoup &soup, InputProjector &projector, const StripRowPa
             }
         }
     }
+    // Each of these is a pass over the whole soup (0.2 s on modelA5 at 5000 sites): ticks between.
     SmoothingParams smoothing;
     smoothing.passes = params.relaxPasses;
-    relaxVertices(soup, projector, smoothing);
+    {
+        Progress relaxing(progress, 0.0, 0.5, "relaxing");
+        relaxVertices(soup, projector, smoothing, relaxing);
+    }
+    progress.tick(0.5, "flips");
     improveByFlips(soup);
-    if (trianglesBelow(soup, params.minAngleDeg) >= below
-        || CrossingsAtStart(start).exceededBy(soupIntersections(soup).size())) {
+    if (trianglesBelow(soup, params.minAngleDeg) >= below) {
+        soup = start;
+        return 0;
+    }
+    progress.tick(0.7, "crossings");
+    const std::size_t crossings = soupIntersections(soup).size();
+    progress.tick(0.85, "crossings before");
+    if (CrossingsAtStart(start).exceededBy(crossings)) {
         soup = start;
         return 0;
     }

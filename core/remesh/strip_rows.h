@@ -8,6 +8,7 @@
 // triangles under 30° that stand on a line edge).
 #pragma once
 
+#include "common/progress.h"
 #include "remesh/editable_soup.h"
 #include "remesh/input_projector.h"
 
@@ -21,6 +22,7 @@ struct StripRowParams {
 // Splits the rungs of the strip triangles under the angle at the middle, on the input surface,
 // then relaxes and flips; keeps the result only when it has fewer triangles under the angle and
 // no more crossings of two triangles. Returns the number of vertices added.
-int addStripRows(EditableSoup &soup, InputProjector &projector, const StripRowParams &params = {});
+int addStripRows(EditableSoup &soup, InputProjector &projector, const StripRowParams &params = {},
+                 Progress &progress = Progress::none());
 
 } // namespace stratamesh

@@ -163,8 +163,8 @@ RemeshResult meshFromSites(const StripCollapse &collapsed, const std::vector<Vec
             step.tick(0.9, "flips");
             if (params.flips)
                 result.cleanup.flips += improveByFlips(soup);
-            step.tick(0.95, "strip rows");
-            result.cleanup.stripRows = addStripRows(soup, projector);
+            Progress rows(step, 0.95, 1.0, "strip rows");
+            result.cleanup.stripRows = addStripRows(soup, projector, {}, rows);
         }
     }
     {

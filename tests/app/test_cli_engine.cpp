@@ -196,6 +196,14 @@ private slots:
         QCOMPARE(refinement[QStringLiteral("initial_sites")].toInt(), 1000);
         QVERIFY(refinement[QStringLiteral("final_sites")].toInt() > 1000);
         QVERIFY(refinement[QStringLiteral("pockets_opened")].toInt(-1) >= 0);
+        // The default d_resolution is automatic: nothing merged, strips under 0.4 edge lengths.
+        const QJsonObject simplified = again[QStringLiteral("simplification")].toObject();
+        QVERIFY(simplified[QStringLiteral("automatic")].toBool());
+        QCOMPARE(simplified[QStringLiteral("merge_distance")].toDouble(-1), 0.0);
+        const double edge = simplified[QStringLiteral("edge_length")].toDouble();
+        QVERIFY(edge > 0.0);
+        QVERIFY(qAbs(simplified[QStringLiteral("strip_width_limit")].toDouble() - 0.4 * edge)
+                < 1e-9 * edge);
         // Sites were added, so a round ran; the kept one is among those run.
         const int run = refinement[QStringLiteral("rounds_run")].toInt(-1);
         QVERIFY(run >= 1);
