@@ -75,10 +75,8 @@ int removeLineFins(EditableSoup &soup)
         // surface between them are a fin either way, flipped back and forth forever (a fault
         // piece of an 8-fault network at 2000 sites with its strips kept ran out of memory).
         auto widest = [&](const std::array<int, 3> &v) {
-            const auto a =
-                triangleShape(soup.position(v[0]), soup.position(v[1]), soup.position(v[2]))
-                    .anglesDeg;
-            return *std::max_element(a.begin(), a.end());
+            return triangleShape(soup.position(v[0]), soup.position(v[1]), soup.position(v[2]))
+                .maxAngleDeg;
         };
         if (std::max(widest(n0), widest(n1)) >= angles[k])
             continue;

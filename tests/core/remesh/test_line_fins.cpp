@@ -25,10 +25,10 @@ double widestAngle(const EditableSoup &soup)
     for (int t = 0; t < soup.triangleCapacity(); ++t)
         if (soup.alive(t)) {
             const OutputTriangle &tri = soup.triangle(t);
-            const auto a = triangleShape(soup.position(tri.v[0]), soup.position(tri.v[1]),
-                                         soup.position(tri.v[2]))
-                               .anglesDeg;
-            widest = std::max(widest, *std::max_element(a.begin(), a.end()));
+            widest =
+                std::max(widest, triangleShape(soup.position(tri.v[0]), soup.position(tri.v[1]),
+                                               soup.position(tri.v[2]))
+                                     .maxAngleDeg);
         }
     return widest;
 }
