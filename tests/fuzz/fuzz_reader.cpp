@@ -22,10 +22,20 @@ std::string inputPath()
     return path;
 }
 
+void removeInput();
+
 const std::string &path()
 {
     static const std::string p = inputPath();
+    // Each fuzz run left one file per harness in /tmp (120 after a few CI runs).
+    static const bool registered = std::atexit(removeInput) == 0;
+    (void)registered;
     return p;
+}
+
+void removeInput()
+{
+    std::remove(path().c_str());
 }
 
 } // namespace
