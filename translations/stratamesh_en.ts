@@ -3538,10 +3538,6 @@ Click to show it in the views</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Refinement rounds put sites on the corners and lines around each topology change, as close as the nearest other feature, and grade the surfaces around them: more features are kept, with up to 4 times the sites asked plus the sites pinned on the features (9 times in all on an 8-fault network at 1000 sites), and more triangles under 30°.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&amp;Vertex-dual tets, smallest angle:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3562,7 +3558,11 @@ Click to show it in the views</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Features smaller than this may be simplified: parts closer than it are merged, thin strips narrower than it and the strip factor are removed; 0 simplifies nothing. -1 (Auto): nothing merged, thin strips removed by the strip factor alone. At most a tenth of the bounding-box diagonal.</source>
+        <source>Features smaller than this may be simplified: parts closer than it are merged, thin strips narrower than it and the strip factor are removed; 0 simplifies nothing and pins sites on close features. -1 (Auto): nothing merged, thin strips removed by the strip factor alone. At most a tenth of the bounding-box diagonal.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refinement rounds put sites on the corners and lines around each topology change, as close as the nearest other feature, and grade the surfaces around them: more features are kept, with up to 4 times the sites asked plus the sites pinned on the features (9 times in all on an 8-fault network at 1000 sites), and more triangles under 30°. Always on when d_resolution is 0.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

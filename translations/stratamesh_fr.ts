@@ -3541,10 +3541,6 @@ Cliquer pour le montrer dans les vues</translation>
         <translation>&amp;Fixer des sites sur les éléments proches</translation>
     </message>
     <message>
-        <source>Refinement rounds put sites on the corners and lines around each topology change, as close as the nearest other feature, and grade the surfaces around them: more features are kept, with up to 4 times the sites asked plus the sites pinned on the features (9 times in all on an 8-fault network at 1000 sites), and more triangles under 30°.</source>
-        <translation>Les passes de raffinement placent des sites sur les coins et les lignes autour de chaque changement de topologie, aussi près que l&apos;élément voisin le plus proche, et graduent les surfaces autour : plus d&apos;éléments sont gardés, avec jusqu&apos;à 4 fois les sites demandés plus les sites fixés sur les éléments (9 fois en tout sur un réseau de 8 failles à 1000 sites), et plus de triangles sous 30°.</translation>
-    </message>
-    <message>
         <source>&amp;Vertex-dual tets, smallest angle:</source>
         <translation>Plus petit angle des tétraèdres duaux des sommets de &amp;Voronoï :</translation>
     </message>
@@ -3565,8 +3561,12 @@ Cliquer pour le montrer dans les vues</translation>
         <translation>Auto</translation>
     </message>
     <message>
-        <source>Features smaller than this may be simplified: parts closer than it are merged, thin strips narrower than it and the strip factor are removed; 0 simplifies nothing. -1 (Auto): nothing merged, thin strips removed by the strip factor alone. At most a tenth of the bounding-box diagonal.</source>
-        <translation>Les éléments plus petits que cette valeur peuvent être simplifiés : les parties plus proches sont fusionnées, les bandes minces plus étroites qu&apos;elle et que le facteur de bande sont retirées ; 0 ne simplifie rien. -1 (Auto) : rien n&apos;est fusionné, les bandes minces sont retirées selon le seul facteur de bande. Au plus un dixième de la diagonale de la boîte englobante.</translation>
+        <source>Features smaller than this may be simplified: parts closer than it are merged, thin strips narrower than it and the strip factor are removed; 0 simplifies nothing and pins sites on close features. -1 (Auto): nothing merged, thin strips removed by the strip factor alone. At most a tenth of the bounding-box diagonal.</source>
+        <translation>Les éléments plus petits que cette valeur peuvent être simplifiés : les parties plus proches sont fusionnées, les bandes minces plus étroites qu&apos;elle et que le facteur de bande sont retirées ; 0 ne simplifie rien et fixe des sites sur les éléments proches. -1 (Auto) : rien n&apos;est fusionné, les bandes minces sont retirées selon le seul facteur de bande. Au plus un dixième de la diagonale de la boîte englobante.</translation>
+    </message>
+    <message>
+        <source>Refinement rounds put sites on the corners and lines around each topology change, as close as the nearest other feature, and grade the surfaces around them: more features are kept, with up to 4 times the sites asked plus the sites pinned on the features (9 times in all on an 8-fault network at 1000 sites), and more triangles under 30°. Always on when d_resolution is 0.</source>
+        <translation>Les passes de raffinement placent des sites sur les coins et les lignes autour de chaque changement de topologie, aussi près que l&apos;élément voisin le plus proche, et graduent les surfaces autour : plus d&apos;éléments sont gardés, avec jusqu&apos;à 4 fois les sites demandés plus les sites fixés sur les éléments (9 fois en tout sur un réseau de 8 failles à 1000 sites), et plus de triangles sous 30°. Toujours actif quand d_resolution vaut 0.</translation>
     </message>
 </context>
 <context>

@@ -47,7 +47,8 @@ QJsonObject remeshReportJson(const RemeshReportParts &parts)
         {QStringLiteral("automatic"), params.dResolution < 0.0},
         {QStringLiteral("edge_length"), edgeLength},
         {QStringLiteral("merge_distance"), mergeDistance(params)},
-        {QStringLiteral("strip_width_limit"), stripWidthLimit(params, edgeLength)}};
+        {QStringLiteral("strip_width_limit"), stripWidthLimit(params, edgeLength)},
+        {QStringLiteral("pin_features"), pinsFeatures(params)}};
     return QJsonObject{
         {QStringLiteral("file"), parts.file},
         {QStringLiteral("output_file"), parts.outputFile},

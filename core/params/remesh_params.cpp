@@ -42,8 +42,9 @@ ParamTable<RemeshParams> makeTable()
     i.help = QT_TRANSLATE_NOOP(
         "stratamesh::Params",
         "Features smaller than this may be simplified: parts closer than it are merged, thin "
-        "strips narrower than it and the strip factor are removed; 0 simplifies nothing. -1 "
-        "(Auto): nothing merged, thin strips removed by the strip factor alone. At most a tenth "
+        "strips narrower than it and the strip factor are removed; 0 simplifies nothing and "
+        "pins sites on close features. -1 (Auto): nothing merged, thin strips removed by the strip "
+        "factor alone. At most a tenth "
         "of the bounding-box diagonal.");
     t.add(memberParam(&P::dResolution, i));
 
@@ -111,7 +112,8 @@ ParamTable<RemeshParams> makeTable()
         "Refinement rounds put sites on the corners and lines around each topology change, as "
         "close as the nearest other feature, and grade the surfaces around them: more features "
         "are kept, with up to 4 times the sites asked plus the sites pinned on the features (9 "
-        "times in all on an 8-fault network at 1000 sites), and more triangles under 30°.");
+        "times in all on an 8-fault network at 1000 sites), and more triangles under 30°. Always "
+        "on when d_resolution is 0.");
     t.add(memberParam(&P::refinementPinsFeatures, i));
 
     i = {};

@@ -357,6 +357,7 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
     };
     // Sites pinned on the features near wrong places (featureSitesNearTargets), and the split
     // model with the size field they follow, made again each round for all places so far.
+    const bool pinFeatures = pinsFeatures(params);
     std::vector<char> pinned(sites.size(), 0);
     std::vector<Vec3> allTargets;
     SizedModel sized_;
@@ -389,7 +390,7 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
                 || rounds >= params.refinementRounds + (invalid.empty() ? 0 : 4))
                 break;
             // Pinning the features may take the sites up to sizingMaxGrowth times those asked.
-            const int room = params.refinementPinsFeatures
+            const int room = pinFeatures
                                  ? static_cast<int>(std::lround(params.sizingMaxGrowth * n))
                                        - static_cast<int>(sites.size())
                                  : static_cast<int>(std::lround(params.refinementMaxGrowth * n))
@@ -402,7 +403,7 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
             const double radius = 1.5 * spacing;
             std::vector<Vec3> pins, graded;
             const double pinRadius = 0.6 * spacing; // about the cell of the place
-            if (params.refinementPinsFeatures) {
+            if (pinFeatures) {
                 // The model is split finer than the feature size around every place so far (so
                 // that the domain carries the size field), pins go on its features near this
                 // round's places and graded free sites around them.
@@ -443,15 +444,14 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
             // sites again (an 8-fault network doubled its sites every round to 15 GB without it).
             extra = std::min(extra, std::max(room, 0) + (invalid.empty() ? 0 : n));
             extra = std::min(extra, sized + 2 * n - static_cast<int>(sites.size()));
-            if (params.refinementPinsFeatures) {
+            if (pinFeatures) {
                 extra = std::min(extra, std::max(room, 0));
                 const int left = std::max(0, room - extra - static_cast<int>(pins.size()));
                 if (static_cast<int>(graded.size()) > left)
                     graded.resize(left); // random order: a uniform thinning
             }
             if (extra <= 0 && pins.empty())
-                return !validityOnly && !params.refinementPinsFeatures
-                       && !best.validity.problems.empty();
+                return !validityOnly && !pinFeatures && !best.validity.problems.empty();
             const std::vector<Vec3> added = sampleNearTargets(
                 domain, targets, radius, std::max(extra, 0), params.seed + 7919u * (rounds + 1));
             if (added.empty() && pins.empty())
@@ -505,7 +505,7 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
             // best leaves nothing to mend; the rounds after it add sites and go further over
             // (below). So the search stops before checking it (bench, modelA5 at 5000 sites: 5.11 s
             // instead of 5.37).
-            if (!keepsQuality && !params.refinementPinsFeatures && best.validity.problems.empty())
+            if (!keepsQuality && !pinFeatures && best.validity.problems.empty())
                 break;
             {
                 Progress step = roundSteps.step(2, "Validity");
@@ -519,8 +519,7 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
             const bool fixesValidity =
                 again.validity.problems.size() < best.validity.problems.size();
             const bool improved =
-                score(again) < score(best)
-                && (fixesValidity || keepsQuality || params.refinementPinsFeatures);
+                score(again) < score(best) && (fixesValidity || keepsQuality || pinFeatures);
             if (improved) {
                 best = again;
                 bestDensity = density;
@@ -531,7 +530,7 @@ RemeshResult remeshRun(const Model &inputModel, const RemeshParams &params, Prog
             // ones go further over it and are not kept either (modelA5 at 5000 sites: rounds 3 and
             // 4 at 1.9 and 2.7 % of triangles under 30°, against 1.8 % allowed, cost 2.4 of 7.5 s).
             const bool overAllowance =
-                again.validity.problems.empty() && !keepsQuality && !params.refinementPinsFeatures;
+                again.validity.problems.empty() && !keepsQuality && !pinFeatures;
             result = std::move(again);
             if (overAllowance)
                 break;
@@ -605,6 +604,11 @@ RemeshResult remeshModel(const Model &inputModel, const RemeshParams &params, Pr
 double mergeDistance(const RemeshParams &params)
 {
     return std::max(0.0, params.dResolution);
+}
+
+bool pinsFeatures(const RemeshParams &params)
+{
+    return params.refinementPinsFeatures || params.dResolution == 0.0;
 }
 
 double stripWidthLimit(const RemeshParams &params, double edgeLength)

@@ -204,6 +204,8 @@ private slots:
         QVERIFY(edge > 0.0);
         QVERIFY(qAbs(simplified[QStringLiteral("strip_width_limit")].toDouble() - 0.4 * edge)
                 < 1e-9 * edge);
+        QVERIFY(simplified.contains(QStringLiteral("pin_features")));
+        QVERIFY(!simplified[QStringLiteral("pin_features")].toBool(true)); // only with D = 0
         // Sites were added, so a round ran; the kept one is among those run.
         const int run = refinement[QStringLiteral("rounds_run")].toInt(-1);
         QVERIFY(run >= 1);

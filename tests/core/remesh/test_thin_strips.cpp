@@ -150,14 +150,19 @@ private slots:
         params.stripWidthFactor = 0.3; // 27 m
         QCOMPARE(params.dResolution, kAutoDResolution);
         QCOMPARE(stripWidthLimit(params, 90.0), 27.0);
+        QVERIFY(!pinsFeatures(params));
         params.dResolution = 0.0;
         QCOMPARE(stripWidthLimit(params, 90.0), 0.0);
+        QVERIFY(pinsFeatures(params)); // keeping everything pins sites on the close features
         const RemeshResult kept = remeshModel(input, params);
         QVERIFY(kept.strips.empty());
         QCOMPARE(countKind(kept.ledger, LedgerKind::SurfaceLost), 0);
         QCOMPARE(countEntities(kept.model).all.surfaces, countEntities(input).all.surfaces);
+        qInfo("d_resolution 0: %d sites", kept.siteCount);
+        QCOMPARE(countTopologyEdits(kept.ledger).total(), 0);
         params.dResolution = 10.0; // below the 15 m strip: kept
         QCOMPARE(stripWidthLimit(params, 90.0), 10.0);
+        QVERIFY(!pinsFeatures(params));
         QVERIFY(remeshModel(input, params).strips.empty());
         params.dResolution = 20.0; // above it: removed, though no close parts are left to merge
         QCOMPARE(remeshModel(input, params).strips.size(), std::size_t(1));
