@@ -44,8 +44,7 @@ ParamTable<RemeshParams> makeTable()
         "Features smaller than this may be simplified: parts closer than it are merged, thin "
         "strips narrower than it and the strip factor are removed; 0 simplifies nothing and "
         "pins sites on close features. -1 (Auto): nothing merged, thin strips removed by the strip "
-        "factor alone. At most a tenth "
-        "of the bounding-box diagonal.");
+        "factor alone. At most a tenth of the bounding-box diagonal.");
     t.add(memberParam(&P::dResolution, i));
 
     i = {};
